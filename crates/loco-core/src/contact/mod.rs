@@ -1,0 +1,1 @@
+//! Wheel-rail contact: profiles, contact geometry, equivalent conicity, Hertz and creep forces.

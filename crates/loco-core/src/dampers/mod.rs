@@ -1,0 +1,1 @@
+//! Dampers: Maxwell elements, the frequency-selective (FSD) yaw damper, hydraulic model, bench.

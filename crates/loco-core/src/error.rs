@@ -1,0 +1,142 @@
+//! The one error type of `loco-core`.
+//!
+//! Every fallible function of the crate returns [`Result<T>`]. The Python bindings map each variant
+//! to one exception class of the `loco.LocoError` hierarchy (see `crates/loco-py/src/errors.rs`), so
+//! a new failure mode needs a variant here and nothing else.
+
+use thiserror::Error;
+
+/// Every error `loco-core` can report. Messages name the offending field, file or time.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LocoError {
+    /// A scalar parameter is not physical: NaN, infinite, non-positive, out of range,
+    /// or inconsistent with another one (`c1 < c2`, ...). `name` is the parameter's name.
+    #[error("invalid parameter `{name}`: {reason}")]
+    InvalidParameter { name: String, reason: String },
+
+    /// An array or record is unusable: wrong shape or length, too short, NaN inside,
+    /// not monotonic. `name` names the argument (and the row or column where it helps).
+    #[error("invalid input `{name}`: {reason}")]
+    InvalidInput { name: String, reason: String },
+
+    /// A file was read but its content is malformed. `line` is 1-based (0: the whole file).
+    #[error("{path}:{line}: {reason}")]
+    Parse {
+        path: String,
+        line: usize,
+        reason: String,
+    },
+
+    /// A file could not be read or written.
+    #[error("cannot access `{path}`: {reason}")]
+    Io { path: String, reason: String },
+
+    /// The wheel-rail contact search failed (no contact, profiles do not overlap, ...).
+    #[error("contact: {0}")]
+    Contact(String),
+
+    /// A time integration produced non-finite states or runaway amplitudes.
+    /// `time` is the simulated time in s, `location` the body or coordinate concerned.
+    #[error("simulation diverged at t = {time:.4} s ({location}): {reason}")]
+    Diverged {
+        time: f64,
+        location: String,
+        reason: String,
+    },
+
+    /// A wheel climbed past its flange (or lost contact for good).
+    #[error("derailment at t = {time:.4} s ({location}): {reason}")]
+    Derailed {
+        time: f64,
+        location: String,
+        reason: String,
+    },
+
+    /// The caller asked the computation to stop (Ctrl-C from Python, ...).
+    #[error("interrupted")]
+    Interrupted,
+}
+
+/// Shorthand used throughout the crate.
+pub type Result<T> = std::result::Result<T, LocoError>;
+
+impl LocoError {
+    /// An [`LocoError::InvalidParameter`] with the given name and reason.
+    pub fn param(name: impl Into<String>, reason: impl Into<String>) -> Self {
+        Self::InvalidParameter {
+            name: name.into(),
+            reason: reason.into(),
+        }
+    }
+
+    /// An [`LocoError::InvalidInput`] with the given name and reason.
+    pub fn input(name: impl Into<String>, reason: impl Into<String>) -> Self {
+        Self::InvalidInput {
+            name: name.into(),
+            reason: reason.into(),
+        }
+    }
+}
+
+/// Checks that `value` is finite and strictly positive; the error names `name`.
+pub fn check_positive(name: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(LocoError::param(
+            name,
+            format!("must be finite and > 0, got {value}"),
+        ))
+    }
+}
+
+/// Checks that `value` is finite and not negative; the error names `name`.
+pub fn check_non_negative(name: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(LocoError::param(
+            name,
+            format!("must be finite and >= 0, got {value}"),
+        ))
+    }
+}
+
+/// Checks that `value` is finite; the error names `name`.
+pub fn check_finite(name: &str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(LocoError::param(
+            name,
+            format!("must be finite, got {value}"),
+        ))
+    }
+}
+
+/// Checks that every element of `values` is finite; the error names `name` and the index.
+pub fn check_all_finite(name: &str, values: &[f64]) -> Result<()> {
+    match values.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(i) => Err(LocoError::input(
+            name,
+            format!("element {i} is not finite ({})", values[i]),
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checks_name_the_field() {
+        let err = check_positive("wheel_radius", -1.0).unwrap_err();
+        assert!(err.to_string().contains("wheel_radius"));
+        assert!(check_positive("x", f64::NAN).is_err());
+        assert!(check_non_negative("x", 0.0).is_ok());
+        assert!(check_finite("x", f64::INFINITY).is_err());
+        let err = check_all_finite("acc", &[1.0, f64::NAN]).unwrap_err();
+        assert!(err.to_string().contains("element 1"));
+    }
+}

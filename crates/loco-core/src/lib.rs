@@ -1,0 +1,19 @@
+//! `loco-core`: the physics of the `loco` railway vehicle dynamics toolkit, in pure Rust.
+//!
+//! Units are SI throughout (m, kg, s, N, rad) unless a doc comment says otherwise.
+//! Modules, one concept each:
+//!
+//! - [`error`]: the crate's one error enum, [`LocoError`].
+//! - [`contact`]: wheel and rail profiles, contact geometry and tables, equivalent conicity
+//!   (EN 15302), Hertz ellipses, creepages, Kalker's linear theory and FASTSIM.
+//! - [`track`]: track irregularity spectra, synthesis and measured irregularity files.
+//! - [`metrics`]: PSD, Sperling ride index, bogie frame stability criteria, comfort.
+//! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
+
+pub mod contact;
+pub mod dampers;
+pub mod error;
+pub mod metrics;
+pub mod track;
+
+pub use error::{LocoError, Result};

@@ -1,0 +1,1 @@
+//! Ride and stability metrics: PSD, Sperling index, bogie frame stability, comfort.

@@ -1,0 +1,1 @@
+//! Track irregularities: spectra, synthesis, measured files.

@@ -1,0 +1,25 @@
+//! `loco._loco`: the private native module of the `loco` Python package.
+//!
+//! Bindings only: each file converts and checks Python inputs into owned Rust values, calls
+//! `loco-core` through [`errors::run_detached`] (GIL released, errors mapped, panics caught) and
+//! returns numpy arrays by moving their buffers. No physics lives here.
+
+mod contact;
+mod dampers;
+mod errors;
+mod metrics;
+mod track;
+
+use pyo3::prelude::*;
+
+/// The native module. The public API is the `loco` package that wraps it.
+#[pymodule]
+fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    errors::register(m)?;
+    contact::register(m)?;
+    track::register(m)?;
+    metrics::register(m)?;
+    dampers::register(m)?;
+    Ok(())
+}

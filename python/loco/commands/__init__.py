@@ -1,0 +1,9 @@
+"""Subcommands of the ``loco`` CLI.
+
+Each module listed here defines ``NAME`` (the subcommand), ``HELP`` (one line),
+``add_arguments(parser)`` and ``run(args) -> int`` (the exit code).
+"""
+
+COMMAND_MODULES: list[str] = [
+    "info",
+]

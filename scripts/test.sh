@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs loco with its development tools and runs every check: formatting, lints, the Rust tests,
+# the type stubs against the native module, and pytest. This is the README's test command and what
+# CI runs (.ci/run).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+step() { printf '\n=== %s ===\n' "$*"; }
+
+step "install (pip, editable, release build of the native module)"
+python3 -m pip install --quiet --disable-pip-version-check -e '.[dev]'
+
+step "rustfmt"
+cargo fmt --all --check
+
+step "clippy"
+cargo clippy --workspace --all-targets --release -- -D warnings
+
+step "cargo test"
+cargo test --workspace --release
+
+step "ruff"
+python3 -m ruff check python tests scripts
+python3 -m ruff format --check python tests scripts
+
+step "mypy"
+python3 -m mypy
+python3 -m mypy.stubtest loco._loco
+
+step "pytest"
+python3 -m pytest tests
