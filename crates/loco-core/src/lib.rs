@@ -9,11 +9,13 @@
 //! - [`track`]: track irregularity spectra, synthesis and measured irregularity files.
 //! - [`metrics`]: PSD, Sperling ride index, bogie frame stability criteria, comfort.
 //! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
+//! - [`vehicle`]: the 90-DOF locomotive: parameters, bodies, suspension, equations of motion.
 
 pub mod contact;
 pub mod dampers;
 pub mod error;
 pub mod metrics;
 pub mod track;
+pub mod vehicle;
 
 pub use error::{LocoError, Result};

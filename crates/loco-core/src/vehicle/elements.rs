@@ -1,0 +1,156 @@
+//! Linear elastic suspension elements between two bodies and the lateral bump stop.
+//!
+//! Each element joins a point on body A to a point on body B (points in m from each body's centre
+//! of gravity, vehicle axes). Forces are in N, moments in N·m, stiffnesses in N/m and N·m/rad,
+//! damping in N·s/m. Springs are unstressed in the nominal configuration; runs start from the
+//! static equilibrium under gravity, where they carry the vehicle's weight. The moment of every
+//! force uses the rotated lever arm `r + θ × r`, which gives the geometric (gravity) stiffness of
+//! loaded springs, e.g. the `m·g·h` roll moment of a carbody whose centre of gravity sits above
+//! its springs.
+
+use super::kinematics::{add, cross, point_motion, sub};
+use super::layout::N_BODIES;
+
+/// Motion (m, rad) and velocity (m/s, rad/s) of every body's centre of gravity.
+#[derive(Debug, Clone)]
+pub struct BodyStates {
+    pub position: [[f64; 6]; N_BODIES],
+    pub velocity: [[f64; 6]; N_BODIES],
+}
+
+impl Default for BodyStates {
+    fn default() -> Self {
+        Self {
+            position: [[0.0; 6]; N_BODIES],
+            velocity: [[0.0; 6]; N_BODIES],
+        }
+    }
+}
+
+/// Forces and moments on every body's centre of gravity (N, N·m).
+pub type Wrenches = [[f64; 6]; N_BODIES];
+
+/// Adds force `f` (N) acting at `r` (m from the centre of gravity) of `body` with motion `u`.
+#[inline]
+pub fn add_force(wrenches: &mut Wrenches, body: usize, u: &[f64; 6], r: [f64; 3], f: [f64; 3]) {
+    let arm = add(r, cross([u[3], u[4], u[5]], r));
+    let m = cross(arm, f);
+    let w = &mut wrenches[body];
+    w[0] += f[0];
+    w[1] += f[1];
+    w[2] += f[2];
+    w[3] += m[0];
+    w[4] += m[1];
+    w[5] += m[2];
+}
+
+/// Two attachment points: which bodies and where.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Attachment {
+    pub body_a: usize,
+    /// Point on A, m from A's centre of gravity.
+    pub point_a: [f64; 3],
+    pub body_b: usize,
+    /// Point on B, m from B's centre of gravity.
+    pub point_b: [f64; 3],
+}
+
+impl Attachment {
+    /// Displacement and velocity of the point on B relative to the point on A (m, m/s).
+    #[inline]
+    pub fn relative_motion(&self, s: &BodyStates) -> ([f64; 3], [f64; 3]) {
+        let da = point_motion(&s.position[self.body_a], self.point_a);
+        let db = point_motion(&s.position[self.body_b], self.point_b);
+        let va = point_motion(&s.velocity[self.body_a], self.point_a);
+        let vb = point_motion(&s.velocity[self.body_b], self.point_b);
+        (sub(db, da), sub(vb, va))
+    }
+
+    /// Applies `f` (N) on B and `−f` on A.
+    #[inline]
+    pub fn apply_pair(&self, s: &BodyStates, f: [f64; 3], wrenches: &mut Wrenches) {
+        add_force(
+            wrenches,
+            self.body_b,
+            &s.position[self.body_b],
+            self.point_b,
+            f,
+        );
+        add_force(
+            wrenches,
+            self.body_a,
+            &s.position[self.body_a],
+            self.point_a,
+            [-f[0], -f[1], -f[2]],
+        );
+    }
+}
+
+/// A three-axis spring-damper with rotational stiffness (rubber bushing, coil spring, flexicoil,
+/// coupling), stiffness and damping along the vehicle axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bushing {
+    pub name: String,
+    pub at: Attachment,
+    /// Translational stiffness along x, y, z, N/m.
+    pub stiffness: [f64; 3],
+    /// Translational damping along x, y, z, N·s/m (rubber hysteresis as viscous; 0 for coils).
+    pub damping: [f64; 3],
+    /// Rotational stiffness about x, y, z for the relative rotation of B to A, N·m/rad.
+    pub rotational_stiffness: [f64; 3],
+}
+
+impl Bushing {
+    /// Adds the element's forces; returns the force on B (N).
+    #[inline]
+    pub fn apply(&self, s: &BodyStates, wrenches: &mut Wrenches) -> [f64; 3] {
+        let (d, v) = self.at.relative_motion(s);
+        let mut f = [0.0; 3];
+        for k in 0..3 {
+            f[k] = -self.stiffness[k] * d[k] - self.damping[k] * v[k];
+        }
+        self.at.apply_pair(s, f, wrenches);
+        if self.rotational_stiffness.iter().any(|k| *k != 0.0) {
+            let (ua, ub) = (&s.position[self.at.body_a], &s.position[self.at.body_b]);
+            for k in 0..3 {
+                let m = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
+                wrenches[self.at.body_b][3 + k] += m;
+                wrenches[self.at.body_a][3 + k] -= m;
+            }
+        }
+        f
+    }
+}
+
+/// A lateral bump stop: free over ±`clearance`, then a piecewise-linear progressive rubber
+/// characteristic (`stiffness` up to `hardening_deflection`, `hardening_stiffness` beyond), along y.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BumpStop {
+    pub name: String,
+    pub at: Attachment,
+    /// Free lateral clearance, m.
+    pub clearance: f64,
+    /// Contact stiffness once the clearance is used up, N/m.
+    pub stiffness: f64,
+    /// Rubber compression beyond which the stop stiffens, m.
+    pub hardening_deflection: f64,
+    /// Stiffness beyond `hardening_deflection`, N/m.
+    pub hardening_stiffness: f64,
+}
+
+impl BumpStop {
+    /// Adds the stop's force; returns the lateral force on B (N).
+    #[inline]
+    pub fn apply(&self, s: &BodyStates, wrenches: &mut Wrenches) -> f64 {
+        let (d, _) = self.at.relative_motion(s);
+        let excess = d[1].abs() - self.clearance;
+        if excess <= 0.0 {
+            return 0.0;
+        }
+        let soft = excess.min(self.hardening_deflection);
+        let hard = (excess - self.hardening_deflection).max(0.0);
+        let fy = -(self.stiffness * soft + self.hardening_stiffness * hard) * d[1].signum();
+        self.at.apply_pair(s, [0.0, fy, 0.0], wrenches);
+        fy
+    }
+}

@@ -1,0 +1,198 @@
+//! Small-motion kinematics of the bodies: each body's absolute motion as a sparse linear map of
+//! the generalized coordinates.
+//!
+//! A body's motion is the 6-vector (x, y, z, roll, pitch, yaw) of its centre of gravity: m and rad,
+//! small perturbations about the nominal configuration. For a free body the map selects six
+//! coordinates; for a body defined relative to a parent (hollow shaft, traction rod, rotary arm)
+//! it adds the parent's motion carried to the joint (`u_joint = u_parent + θ_parent × r_joint`) to
+//! the relative coordinates. Velocities use the same map (it is constant).
+
+use super::layout::N_DOF;
+
+/// One row of a sparse map: (coordinate index, coefficient) pairs.
+pub type SparseRow = Vec<(usize, f64)>;
+
+/// The motion map of one body: `u = T q`, six sparse rows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionMap {
+    /// Rows for x, y, z (m) and roll, pitch, yaw (rad).
+    pub rows: [SparseRow; 6],
+}
+
+/// A dense 6×N_DOF map used while building (compressed to [`MotionMap`] afterwards).
+#[derive(Debug, Clone)]
+pub struct DenseMap(pub Vec<[f64; N_DOF]>);
+
+impl DenseMap {
+    /// A free body whose six coordinates start at `first`.
+    pub fn free(first: usize) -> Self {
+        let mut m = DenseMap(vec![[0.0; N_DOF]; 6]);
+        for k in 0..6 {
+            m.0[k][first + k] = 1.0;
+        }
+        m
+    }
+
+    /// A body attached to `parent` at the joint `r_joint` (m, from the parent's centre of gravity,
+    /// vehicle axes), with its centre of gravity at `r_cg` (m, from the joint). `inherit[k]` says
+    /// whether rotation k (roll, pitch, yaw) follows the parent; `relative` lists
+    /// (motion component 0..6, coordinate index) of the body's own coordinates.
+    pub fn attached(
+        parent: &DenseMap,
+        r_joint: [f64; 3],
+        r_cg: [f64; 3],
+        inherit: [bool; 3],
+        relative: &[(usize, usize)],
+    ) -> Self {
+        let p = &parent.0;
+        let mut m = DenseMap(vec![[0.0; N_DOF]; 6]);
+        for j in 0..N_DOF {
+            let parent_rot = [p[3][j], p[4][j], p[5][j]];
+            let joint = add([p[0][j], p[1][j], p[2][j]], cross(parent_rot, r_joint));
+            for k in 0..3 {
+                m.0[k][j] = joint[k];
+                if inherit[k] {
+                    m.0[3 + k][j] = parent_rot[k];
+                }
+            }
+        }
+        for &(component, index) in relative {
+            m.0[component][index] += 1.0;
+        }
+        // Carry the joint motion to the centre of gravity with the body's own rotation.
+        for j in 0..N_DOF {
+            let rot = [m.0[3][j], m.0[4][j], m.0[5][j]];
+            let arm = cross(rot, r_cg);
+            for k in 0..3 {
+                m.0[k][j] += arm[k];
+            }
+        }
+        m
+    }
+
+    /// Compresses to sparse rows, dropping exact zeros.
+    pub fn compress(&self) -> MotionMap {
+        let row = |k: usize| -> SparseRow {
+            self.0[k]
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| **c != 0.0)
+                .map(|(j, c)| (j, *c))
+                .collect()
+        };
+        MotionMap {
+            rows: [row(0), row(1), row(2), row(3), row(4), row(5)],
+        }
+    }
+}
+
+impl MotionMap {
+    /// The body motion `T q` for coordinates (or velocities) `q`.
+    #[inline]
+    pub fn apply(&self, q: &[f64]) -> [f64; 6] {
+        let mut u = [0.0; 6];
+        for (k, row) in self.rows.iter().enumerate() {
+            u[k] = row.iter().map(|&(j, c)| c * q[j]).sum();
+        }
+        u
+    }
+
+    /// Adds the generalized force `Tᵀ w` of the body wrench `w` (N, N·m) to `gen_force`.
+    #[inline]
+    pub fn add_transpose(&self, wrench: &[f64; 6], gen_force: &mut [f64]) {
+        for (k, row) in self.rows.iter().enumerate() {
+            if wrench[k] != 0.0 {
+                for &(j, c) in row {
+                    gen_force[j] += c * wrench[k];
+                }
+            }
+        }
+    }
+}
+
+/// Cross product a × b.
+#[inline]
+pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Sum a + b.
+#[inline]
+pub fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// Difference a − b.
+#[inline]
+pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// Dot product.
+#[inline]
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Displacement (m) of a material point at `r` (m, from the centre of gravity) of a body with
+/// motion `u`: `u_trans + θ × r`. The same formula gives the velocity from the body velocity.
+#[inline]
+pub fn point_motion(u: &[f64; 6], r: [f64; 3]) -> [f64; 3] {
+    add([u[0], u[1], u[2]], cross([u[3], u[4], u[5]], r))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn attached_body_follows_parent_rigidly() {
+        let parent = DenseMap::free(0);
+        // Child joint 1 m ahead of the parent, centre of gravity 0.5 m above the joint, no own DOF.
+        let child = DenseMap::attached(
+            &parent,
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.5],
+            [true, true, true],
+            &[],
+        )
+        .compress();
+        let parent = parent.compress();
+        let mut q = [0.0; N_DOF];
+        q[5] = 1e-3; // parent yaw
+        q[3] = 2e-3; // parent roll
+        let up = parent.apply(&q);
+        let uc = child.apply(&q);
+        // Same material point seen from both bodies.
+        let from_parent = point_motion(&up, [1.0, 0.0, 0.5]);
+        let from_child = point_motion(&uc, [0.0, 0.0, 0.0]);
+        for k in 0..3 {
+            assert!((from_parent[k] - from_child[k]).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn transpose_is_the_adjoint() {
+        let parent = DenseMap::free(6);
+        let child = DenseMap::attached(
+            &parent,
+            [0.3, -0.2, 0.1],
+            [0.1, 0.0, 0.0],
+            [true, false, true],
+            &[(4, 40), (1, 41)],
+        )
+        .compress();
+        let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
+        let w = [1.0, -2.0, 0.5, 0.3, -0.7, 0.9];
+        let u = child.apply(&q);
+        let mut g = vec![0.0; N_DOF];
+        child.add_transpose(&w, &mut g);
+        let lhs: f64 = u.iter().zip(w).map(|(a, b)| a * b).sum();
+        let rhs: f64 = g.iter().zip(&q).map(|(a, b)| a * b).sum();
+        assert!((lhs - rhs).abs() < 1e-12);
+    }
+}

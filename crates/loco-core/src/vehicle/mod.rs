@@ -1,0 +1,21 @@
+//! The 90-DOF B0-B0 locomotive (SPEC §1): parameters, bodies, suspension, equations of motion.
+//!
+//! - [`parameters`]: the parameter file (embedded default vehicle, overrides by name).
+//! - [`layout`]: the 90 coordinates and 25 bodies, `dof_names()`.
+//! - [`kinematics`]: small-motion maps from coordinates to body motions.
+//! - [`bodies`]: mass properties and positions of the bodies.
+//! - [`mass`]: the constant mass matrix and its block factorisation.
+//! - [`elements`]: bushings, springs, bump stops.
+//! - [`suspension`]: every suspension element placed on the vehicle.
+//! - [`structure`]: the assembled vehicle and its gravity, gyroscopic and spring forces.
+//! - [`integrator`]: fixed-step RK4.
+
+pub mod bodies;
+pub mod elements;
+pub mod integrator;
+pub mod kinematics;
+pub mod layout;
+pub mod mass;
+pub mod parameters;
+pub mod structure;
+pub mod suspension;

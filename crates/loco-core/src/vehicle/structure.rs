@@ -1,0 +1,189 @@
+//! The locomotive's structure: bodies, mass matrix and suspension built from a parameter set, and
+//! the forces that do not involve the wheel-rail contact or the dampers' internal states (gravity,
+//! gyroscopic moments, springs, bushings, bump stops).
+
+use super::bodies::{build_bodies, Body, Layout};
+use super::elements::{BodyStates, Wrenches};
+use super::layout::{N_BODIES, N_DOF};
+use super::mass::MassMatrix;
+use super::parameters::ParameterSet;
+use super::suspension::{build_suspension, Suspension};
+use crate::error::{check_positive, Result};
+
+/// Everything about the vehicle that does not change during a run.
+#[derive(Debug, Clone)]
+pub struct VehicleStructure {
+    /// The parameters it was built from.
+    pub parameters: ParameterSet,
+    pub layout: Layout,
+    pub bodies: Vec<Body>,
+    pub mass: MassMatrix,
+    pub suspension: Suspension,
+    /// Gravitational acceleration, m/s².
+    pub gravity: f64,
+}
+
+impl VehicleStructure {
+    /// Builds and checks the structure; a non-physical parameter is refused by name.
+    pub fn new(parameters: ParameterSet) -> Result<Self> {
+        let layout = Layout::from_parameters(&parameters)?;
+        let bodies = build_bodies(&parameters, &layout)?;
+        let mass = MassMatrix::assemble(
+            &bodies
+                .iter()
+                .map(|b| (&b.map, b.mass, b.inertia))
+                .collect::<Vec<_>>(),
+        )?;
+        let suspension = build_suspension(&parameters, &layout, &bodies)?;
+        let gravity = check_positive("track.gravity", parameters.get("track.gravity")?)?;
+        Ok(Self {
+            parameters,
+            layout,
+            bodies,
+            mass,
+            suspension,
+            gravity,
+        })
+    }
+
+    /// Total mass of the 25 bodies, kg.
+    pub fn total_mass(&self) -> f64 {
+        self.bodies.iter().map(|b| b.mass).sum()
+    }
+
+    /// Body motions and velocities from coordinates `q` (m, rad) and velocities `qd`.
+    pub fn body_states(&self, q: &[f64], qd: &[f64], out: &mut BodyStates) {
+        for (i, body) in self.bodies.iter().enumerate() {
+            out.position[i] = body.map.apply(q);
+            out.velocity[i] = body.map.apply(qd);
+        }
+    }
+
+    /// Adds gravity, gyroscopic moments of the spinning parts at running speed `speed` (m/s) and
+    /// the forces of all springs, bushings and bump stops to `wrenches`.
+    pub fn add_structural_forces(&self, states: &BodyStates, speed: f64, wrenches: &mut Wrenches) {
+        for (i, body) in self.bodies.iter().enumerate() {
+            wrenches[i][2] -= body.mass * self.gravity;
+            if body.spin_momentum_per_speed != 0.0 {
+                // A rotor with angular momentum H about y: the yaw rate tips H and needs a roll
+                // moment, the roll rate a yaw moment (dH/dt = H·(−ψ̇, 0, φ̇)).
+                let h = body.spin_momentum_per_speed * speed;
+                let v = &states.velocity[i];
+                wrenches[i][3] += h * v[5];
+                wrenches[i][5] -= h * v[3];
+            }
+        }
+        for bushing in &self.suspension.bushings {
+            bushing.apply(states, wrenches);
+        }
+        for stop in &self.suspension.bump_stops {
+            stop.apply(states, wrenches);
+        }
+    }
+
+    /// Generalized forces `Q = Σ Tᵀ w` from body wrenches (overwrites `gen_force`).
+    pub fn generalized_forces(&self, wrenches: &Wrenches, gen_force: &mut [f64]) {
+        gen_force[..N_DOF].fill(0.0);
+        for (i, body) in self.bodies.iter().enumerate().take(N_BODIES) {
+            body.map.add_transpose(&wrenches[i], gen_force);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::kinematics::cross;
+    use super::super::layout::*;
+    use super::*;
+
+    fn structure() -> VehicleStructure {
+        VehicleStructure::new(ParameterSet::default_vehicle()).unwrap()
+    }
+
+    /// Coordinates of a small rigid motion of the whole vehicle: translation t, rotation θ about
+    /// the vehicle origin.
+    fn rigid_motion(s: &VehicleStructure, t: [f64; 3], theta: [f64; 3]) -> Vec<f64> {
+        let mut q = vec![0.0; N_DOF];
+        let set_free = |q: &mut Vec<f64>, first: usize, body: usize| {
+            let p = s.bodies[body].position;
+            let d = cross(theta, p);
+            for k in 0..3 {
+                q[first + k] = t[k] + d[k];
+                q[first + 3 + k] = theta[k];
+            }
+        };
+        set_free(&mut q, CARBODY, BODY_CARBODY);
+        for b in 0..N_BOGIES {
+            set_free(&mut q, frame(b), body_frame(b));
+        }
+        for w in 0..N_WHEELSETS {
+            set_free(&mut q, wheelset(w), body_wheelset(w));
+            set_free(&mut q, motor(w), body_motor(w));
+            for side in 0..2 {
+                q[rotary_arm(w, side)] = theta[1];
+            }
+        }
+        q
+    }
+
+    #[test]
+    fn builds_with_twenty_five_bodies_and_total_mass() {
+        let s = structure();
+        assert_eq!(s.bodies.len(), N_BODIES);
+        // Generalized mass of a rigid translation is the total mass, in all three directions.
+        for axis in 0..3 {
+            let mut t = [0.0; 3];
+            t[axis] = 1.0;
+            let q = rigid_motion(&s, t, [0.0; 3]);
+            let mut mq = 0.0;
+            for i in 0..N_DOF {
+                for j in 0..N_DOF {
+                    mq += q[i] * s.mass.get(i, j) * q[j];
+                }
+            }
+            assert!(
+                (mq - s.total_mass()).abs() < 1e-6 * s.total_mass(),
+                "axis {axis}: {mq}"
+            );
+        }
+        assert!((s.total_mass() - 75_418.0).abs() < 1.0);
+    }
+
+    #[test]
+    fn rigid_motion_strains_no_element() {
+        let s = structure();
+        let q = rigid_motion(&s, [0.01, -0.02, 0.005], [1e-3, -2e-3, 3e-3]);
+        let mut states = BodyStates::default();
+        s.body_states(&q, &vec![0.0; N_DOF], &mut states);
+        for bushing in &s.suspension.bushings {
+            let (d, _) = bushing.at.relative_motion(&states);
+            for k in 0..3 {
+                assert!(d[k].abs() < 1e-12, "{} strained: {d:?}", bushing.name);
+            }
+        }
+        for damper in &s.suspension.dampers {
+            let (d, _) = damper.at.relative_motion(&states);
+            let elongation: f64 = (0..3).map(|k| d[k] * damper.direction[k]).sum();
+            assert!(elongation.abs() < 1e-12, "{} strained: {d:?}", damper.name);
+        }
+    }
+
+    #[test]
+    fn mass_matrix_blocks_follow_the_body_families() {
+        let s = structure();
+        let mut sizes = s.mass.block_sizes();
+        sizes.sort_unstable();
+        // 4 wheelset families of 6 + 3 + 2 = 11 coordinates, carbody + 2 rods = 10, frames and
+        // motors 6 each (the free bodies decouple further into single coordinates or small blocks).
+        assert_eq!(sizes.iter().sum::<usize>(), N_DOF);
+        assert!(*sizes.last().unwrap() <= 11, "{sizes:?}");
+    }
+
+    #[test]
+    fn a_non_physical_parameter_is_named() {
+        let mut p = ParameterSet::default_vehicle();
+        p.set("bogie_frame.mass", -1.0).unwrap();
+        let e = VehicleStructure::new(p).unwrap_err();
+        assert!(e.to_string().contains("bogie_frame.mass"), "{e}");
+    }
+}
