@@ -1,1 +1,3 @@
 //! Wheel-rail contact: profiles, contact geometry, equivalent conicity, Hertz and creep forces.
+
+pub mod hertz;
