@@ -34,6 +34,20 @@ use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
 use std::f64::consts::PI;
 
+/// Strips integrated together in the hot loop.
+const LANES: usize = 4;
+
+/// Geometry of [`LANES`] strips in units of (a, b).
+#[derive(Debug, Clone, Copy, Default)]
+struct StripLanes {
+    /// Strip centre y_j / b.
+    eta: [f64; LANES],
+    /// Strip half-length a_j / a.
+    half_length: [f64; LANES],
+    /// Pressure shape factor of the strip.
+    shape: [f64; LANES],
+}
+
 /// Normal pressure distribution that bounds the tangential traction.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum TractionBound {
@@ -80,8 +94,9 @@ impl Default for FastsimParams {
 pub struct Fastsim {
     params: FastsimParams,
     table: KalkerTable,
-    /// Per strip j: `(y_j/b, a_j/a, p_n shape factor of the strip)`.
-    strips: Vec<(f64, f64, f64)>,
+    /// Strips in groups of [`LANES`]: `y_j/b`, `a_j/a` and the strip's p_n shape factor; the
+    /// last group is padded with empty strips (a_j = 0), which contribute nothing.
+    strips: Vec<StripLanes>,
     /// Per element k of a strip: `(x_k/a_j, p_n shape factor of the element)`.
     elements: Vec<(f64, f64)>,
     /// Pressure at shape factor 1 per N/(ab) (–): 1 / Σ shape·dA/(ab), so that the discrete
@@ -107,11 +122,21 @@ impl Fastsim {
         // 1 − x²/a² − y²/b² = s_j² (1 − u_k²) with s_j = a_j/a, u_k = x/a_j: the pressure shape
         // separates into a strip factor and an element factor.
         let (nx, ny) = (params.nx, params.ny);
-        let strips: Vec<(f64, f64, f64)> = (0..ny)
-            .map(|j| {
-                let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;
-                let s = (1.0 - eta * eta).sqrt();
-                (eta, s, if elliptic { s } else { s * s })
+        let strip = |j: usize| {
+            let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;
+            let s = (1.0 - eta * eta).sqrt();
+            (eta, s, if elliptic { s } else { s * s })
+        };
+        let strips: Vec<StripLanes> = (0..ny.div_ceil(LANES))
+            .map(|group| {
+                let mut lanes = StripLanes::default();
+                for lane in 0..LANES {
+                    let j = group * LANES + lane;
+                    if j < ny {
+                        (lanes.eta[lane], lanes.half_length[lane], lanes.shape[lane]) = strip(j);
+                    }
+                }
+                lanes
             })
             .collect();
         let elements: Vec<(f64, f64)> = (0..nx)
@@ -124,7 +149,8 @@ impl Fastsim {
         // Discrete ∫∫ shape dA in units of ab: Σ_j Σ_k shape · (2 s_j/nx)(2/ny).
         let element_sum: f64 = elements.iter().map(|e| e.1).sum();
         let discrete: f64 =
-            strips.iter().map(|s| s.1 * s.2).sum::<f64>() * element_sum * 4.0 / (nx * ny) as f64;
+            (0..ny).map(|j| strip(j).1 * strip(j).2).sum::<f64>() * element_sum * 4.0
+                / (nx * ny) as f64;
         // (The exact integral is 2π/3 elliptic, π/2 parabolic; the discrete one converges to it.)
         let pressure_scale = 1.0 / discrete;
         Ok(Self {
@@ -170,38 +196,52 @@ impl Fastsim {
         let nx = self.params.nx as f64;
         let dy = 2.0 * b / self.params.ny as f64;
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
-        for &(eta_j, s_j, shape_j) in &self.strips {
-            let y = eta_j * b;
-            let a_j = s_j * a;
-            let dx = 2.0 * a_j / nx;
-            // Slope of p_x is constant along the strip; p_y's slope grows linearly with x.
-            let slope_x = xi * inv_l1 - phi * y * inv_l3;
-            let bound_j = bound_peak * shape_j;
-            let (mut px, mut py) = (0.0, 0.0);
-            let (mut sx, mut sy, mut sxpy) = (0.0, 0.0, 0.0);
+        // Strips are independent: integrating LANES of them in lockstep lets the CPU overlap the
+        // latency of the serial chain (step, bound check, square root, division) along a strip.
+        for group in &self.strips {
+            let mut y = [0.0; LANES];
+            let mut a_j = [0.0; LANES];
+            let mut slope_x = [0.0; LANES];
+            let mut bound_j = [0.0; LANES];
+            for l in 0..LANES {
+                y[l] = group.eta[l] * b;
+                a_j[l] = group.half_length[l] * a;
+                // The slope of p_x is constant along a strip; p_y's grows linearly with x.
+                slope_x[l] = xi * inv_l1 - phi * y[l] * inv_l3;
+                bound_j[l] = bound_peak * group.shape[l];
+            }
+            let mut px = [0.0; LANES];
+            let mut py = [0.0; LANES];
+            let mut sx = [0.0; LANES];
+            let mut sy = [0.0; LANES];
+            let mut sxpy = [0.0; LANES];
             let mut x_prev = a_j;
             for &(u_k, shape_k) in &self.elements {
-                let x = u_k * a_j;
-                let h = x_prev - x;
-                let x_mid = 0.5 * (x_prev + x);
-                px -= h * slope_x;
-                py -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
-                let bound = bound_j * shape_k;
-                let norm2 = px * px + py * py;
-                if norm2 > bound * bound {
-                    let scale = bound / norm2.sqrt();
-                    px *= scale;
-                    py *= scale;
+                for l in 0..LANES {
+                    let x = u_k * a_j[l];
+                    let h = x_prev[l] - x;
+                    let x_mid = 0.5 * (x_prev[l] + x);
+                    px[l] -= h * slope_x[l];
+                    py[l] -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
+                    let bound = bound_j[l] * shape_k;
+                    let norm2 = px[l] * px[l] + py[l] * py[l];
+                    if norm2 > bound * bound {
+                        let scale = bound / norm2.sqrt();
+                        px[l] *= scale;
+                        py[l] *= scale;
+                    }
+                    sx[l] += px[l];
+                    sy[l] += py[l];
+                    sxpy[l] += x * py[l];
+                    x_prev[l] = x;
                 }
-                sx += px;
-                sy += py;
-                sxpy += x * py;
-                x_prev = x;
             }
-            let area = dx * dy;
-            fx += sx * area;
-            fy += sy * area;
-            mz += (sxpy - y * sx) * area;
+            for l in 0..LANES {
+                let area = 2.0 * a_j[l] / nx * dy;
+                fx += sx[l] * area;
+                fy += sy[l] * area;
+                mz += (sxpy[l] - y[l] * sx[l]) * area;
+            }
         }
         CreepForces { fx, fy, mz }
     }
