@@ -1,1 +1,6 @@
 //! Wheel-rail contact: profiles, contact geometry, equivalent conicity, Hertz and creep forces.
+
+pub mod creepage;
+pub mod fastsim;
+pub mod hertz;
+pub mod kalker;
