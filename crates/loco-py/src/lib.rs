@@ -9,6 +9,7 @@ mod dampers;
 mod errors;
 mod metrics;
 mod track;
+mod vehicle;
 
 use pyo3::prelude::*;
 
@@ -21,5 +22,6 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     track::register(m)?;
     metrics::register(m)?;
     dampers::register(m)?;
+    vehicle::register(m)?;
     Ok(())
 }

@@ -12,6 +12,25 @@ use std::collections::BTreeMap;
 /// The embedded default vehicle (an SS8-like B0-B0 locomotive), shipped inside the crate.
 pub const DEFAULT_VEHICLE_TOML: &str = include_str!("default_vehicle.toml");
 
+/// The six parameters of the study (SPEC §6) by their names there, and the parameters of the
+/// file they stand for (per axle box / per damper, SI units).
+pub const STUDY_PARAMETERS: [(&str, &str); 6] = [
+    ("K_px", "rotary_arm.node_stiffness_longitudinal"),
+    ("K_py", "rotary_arm.node_stiffness_lateral"),
+    ("C_sx", "secondary.yaw_damper_damping"),
+    ("C_sy", "secondary.lateral_damper_damping"),
+    ("K_ncsx", "secondary.yaw_damper_series_stiffness"),
+    ("K_ncsy", "secondary.lateral_damper_series_stiffness"),
+];
+
+/// The file key for `name`: a study alias (`K_px`, ...) or the key itself.
+pub fn resolve_name(name: &str) -> &str {
+    STUDY_PARAMETERS
+        .iter()
+        .find(|(alias, _)| *alias == name)
+        .map_or(name, |(_, key)| key)
+}
+
 /// One parameter: its value (SI), unit and where the value comes from.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 pub struct Parameter {
@@ -82,9 +101,11 @@ impl ParameterSet {
         self.entries.get(key)
     }
 
-    /// Overrides the value of an existing parameter; unknown names and non-finite values are
-    /// refused (a typo must not silently leave the default in place).
-    pub fn set(&mut self, key: &str, value: f64) -> Result<()> {
+    /// Overrides the value of an existing parameter, by file key or study alias (`K_px`, ...);
+    /// unknown names and non-finite values are refused (a typo must not silently leave the
+    /// default in place).
+    pub fn set(&mut self, name: &str, value: f64) -> Result<()> {
+        let key = resolve_name(name);
         if !value.is_finite() {
             return Err(LocoError::param(
                 key,
@@ -97,7 +118,7 @@ impl ParameterSet {
                 p.source = "override".to_string();
                 Ok(())
             }
-            None => Err(LocoError::param(key, "unknown vehicle parameter")),
+            None => Err(LocoError::param(name, "unknown vehicle parameter")),
         }
     }
 
@@ -142,6 +163,11 @@ mod tests {
         let mut set = ParameterSet::default_vehicle();
         set.set("secondary.yaw_damper_damping", 2e5).unwrap();
         assert_eq!(set.get("secondary.yaw_damper_damping").unwrap(), 2e5);
+        set.set("K_py", 5e6).unwrap();
+        assert_eq!(set.get("rotary_arm.node_stiffness_lateral").unwrap(), 5e6);
+        for (_, key) in STUDY_PARAMETERS {
+            assert!(set.parameter(key).is_some(), "{key}");
+        }
         let e = set.set("secondary.yaw_dampr", 1.0).unwrap_err();
         assert!(e.to_string().contains("secondary.yaw_dampr"));
         assert!(set.set("carbody.mass", f64::NAN).is_err());

@@ -1,0 +1,221 @@
+//! Time integration of one run and the output channels it records.
+//!
+//! Channels (SI): carbody floor lateral acceleration at the two Sperling points (floor above each
+//! bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
+//! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
+//! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the forces of the yaw and secondary
+//! lateral dampers and the frequency-valve scale factor of each yaw damper (0 open, 1 closed).
+
+use super::integrator::{OdeSystem, Rk4Workspace};
+use super::kinematics::point_motion;
+use super::layout::*;
+use super::simulation::VehicleSystem;
+use super::suspension::DamperRole;
+use crate::error::{check_positive, LocoError, Result};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Settings of the time integration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunSettings {
+    /// Integration step, s (RK4, fixed; see the convergence study in the README).
+    pub step: f64,
+    /// Output sampling rate, Hz (a whole number of steps per sample).
+    pub output_rate: f64,
+    /// Simulated time, s.
+    pub duration: f64,
+}
+
+impl Default for RunSettings {
+    fn default() -> Self {
+        Self {
+            step: 5e-4,
+            output_rate: 500.0,
+            duration: 9.0,
+        }
+    }
+}
+
+/// Recorded channels of a run.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RunOutput {
+    /// Output sampling rate, Hz.
+    pub sampling_rate: f64,
+    /// Sample times, s.
+    pub time: Vec<f64>,
+    /// Channel names, in the order of `channels`.
+    pub names: Vec<String>,
+    /// One vector per channel, same length as `time`.
+    pub channels: Vec<Vec<f64>>,
+}
+
+impl RunOutput {
+    /// The channel called `name`.
+    pub fn channel(&self, name: &str) -> Option<&[f64]> {
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| self.channels[i].as_slice())
+    }
+}
+
+/// Where the acceleration channels are measured.
+struct Probes {
+    /// (name, body, point from the body's centre of gravity, m).
+    lateral_acceleration: Vec<(String, usize, [f64; 3])>,
+    yaw_dampers: Vec<usize>,
+    lateral_dampers: Vec<usize>,
+}
+
+fn probes(system: &VehicleSystem) -> Result<Probes> {
+    let s = &system.structure;
+    let p = &s.parameters;
+    let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
+    let side = p.get("carbody.sperling_point_lateral_offset")?;
+    let mut lateral_acceleration = Vec::new();
+    for (b, tag) in ["front", "rear"].iter().enumerate() {
+        let x = s.layout.bogie_x[b];
+        lateral_acceleration.push((
+            format!("carbody_floor_ay_{tag}"),
+            BODY_CARBODY,
+            [x, side, floor],
+        ));
+    }
+    for b in 0..N_BOGIES {
+        let body = body_frame(b);
+        lateral_acceleration.push((format!("frame{}_ay_centre", b + 1), body, [0.0; 3]));
+        for w in 2 * b..2 * b + 2 {
+            let dx = s.layout.wheelset_x[w] - s.layout.bogie_x[b];
+            lateral_acceleration.push((
+                format!("frame{}_ay_wheelset{}", b + 1, w + 1),
+                body,
+                [dx, 0.0, 0.0],
+            ));
+        }
+    }
+    let by_role = |role| {
+        system
+            .dampers
+            .iter()
+            .enumerate()
+            .filter(|(_, d)| d.placement.role == role)
+            .map(|(i, _)| i)
+            .collect::<Vec<_>>()
+    };
+    Ok(Probes {
+        lateral_acceleration,
+        yaw_dampers: by_role(DamperRole::Yaw),
+        lateral_dampers: by_role(DamperRole::SecondaryLateral),
+    })
+}
+
+/// Integrates `system` from the initial state `y` for `settings.duration` and records the
+/// channels. `cancel`, when set from another thread, stops the run with `Interrupted`.
+pub fn run(
+    system: &mut VehicleSystem,
+    y: &mut [f64],
+    settings: &RunSettings,
+    cancel: Option<&AtomicBool>,
+) -> Result<RunOutput> {
+    check_positive("step", settings.step)?;
+    check_positive("output_rate", settings.output_rate)?;
+    check_positive("duration", settings.duration)?;
+    let steps_per_sample = (1.0 / (settings.output_rate * settings.step)).round().max(1.0) as usize;
+    let dt = 1.0 / (settings.output_rate * steps_per_sample as f64);
+    let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
+    let probes = probes(system)?;
+
+    let mut names: Vec<String> = probes
+        .lateral_acceleration
+        .iter()
+        .map(|p| p.0.clone())
+        .collect();
+    for w in 0..N_WHEELSETS {
+        names.push(format!("wheelset{}_y", w + 1));
+        names.push(format!("wheelset{}_yaw", w + 1));
+    }
+    for w in 0..N_WHEELSETS {
+        for side in ["left", "right"] {
+            for q in ["Q", "Y", "YQ"] {
+                names.push(format!("wheel{}_{side}_{q}", w + 1));
+            }
+        }
+    }
+    for &i in probes.yaw_dampers.iter().chain(&probes.lateral_dampers) {
+        names.push(format!("{}_force", system.dampers[i].placement.name));
+    }
+    for &i in &probes.yaw_dampers {
+        names.push(format!("{}_valve", system.dampers[i].placement.name));
+    }
+    let mut channels: Vec<Vec<f64>> = vec![Vec::with_capacity(n_samples); names.len()];
+    let mut time = Vec::with_capacity(n_samples);
+
+    let mut workspace = Rk4Workspace::new(system.len());
+    let mut dy = vec![0.0; system.len()];
+    let mut t = 0.0;
+    let total_steps = (n_samples - 1) * steps_per_sample;
+    for step in 0..=total_steps {
+        if step % steps_per_sample == 0 {
+            // Accelerations at the sample time: one evaluation of the right-hand side.
+            system.derivatives(t, y, &mut dy);
+            record(system, &probes, y, &dy, &mut channels);
+            time.push(t);
+        }
+        if step == total_steps {
+            break;
+        }
+        if let Some(flag) = cancel {
+            if flag.load(Ordering::Relaxed) {
+                return Err(LocoError::Interrupted);
+            }
+        }
+        workspace.step(system, t, dt, y);
+        t = (step + 1) as f64 * dt;
+        if let Some(e) = system.error.take() {
+            return Err(e);
+        }
+        system.check_state(t, y)?;
+    }
+    Ok(RunOutput {
+        sampling_rate: settings.output_rate,
+        time,
+        names,
+        channels,
+    })
+}
+
+fn record(
+    system: &VehicleSystem,
+    probes: &Probes,
+    y: &[f64],
+    dy: &[f64],
+    channels: &mut [Vec<f64>],
+) {
+    let s = &system.structure;
+    let acc = &dy[N_DOF..2 * N_DOF];
+    let mut c = 0;
+    let mut push = |v: f64| {
+        channels[c].push(v);
+        c += 1;
+    };
+    for (_, body, point) in &probes.lateral_acceleration {
+        let a = s.bodies[*body].map.apply(acc);
+        push(point_motion(&a, *point)[1]);
+    }
+    for w in 0..N_WHEELSETS {
+        push(y[wheelset(w) + Y]);
+        push(y[wheelset(w) + YAW]);
+    }
+    for w in 0..N_WHEELSETS {
+        for f in &system.wheel_forces[w] {
+            push(f.vertical);
+            push(f.lateral);
+            push(if f.vertical > 0.0 { f.lateral / f.vertical } else { 0.0 });
+        }
+    }
+    for &i in probes.yaw_dampers.iter().chain(&probes.lateral_dampers) {
+        push(system.damper_forces[i]);
+    }
+    for &i in &probes.yaw_dampers {
+        push(system.discrete[i].scale_factor);
+    }
+}

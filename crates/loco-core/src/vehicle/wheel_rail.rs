@@ -1,0 +1,205 @@
+//! Wheel-rail forces on the four wheelsets: elastic normal contact, creepages and FASTSIM.
+//!
+//! For each wheel the contact table of the scenario's wheel/rail pair is read at the wheelset's
+//! lateral position relative to that wheel's rail (so gauge irregularities move each contact on
+//! its own). The table gives the rigid pose at which both wheels just touch (rise, roll) and up to
+//! two contact points per wheel (tread and flange) with their geometry. The normal contact is
+//! elastic: the vertical interference of a point is how far the wheel sits below its rigid pose at
+//! that point (`rise + roll·l + z_rail − z − φ·l − gap`), its normal part `δ = interference·cos γ`
+//! gives the Hertz force `N = K_H δ^{3/2}` (K_H from the curvatures at the point) plus a small
+//! normal damping `c_n δ̇` that keeps the unsprung masses from ringing on the stiff contact.
+//! Creepages follow the general definition of `contact::creepage` with the wheel's angular
+//! velocity about its rolled and yawed axle; the vertical velocity of a wheel following a vertical
+//! irregularity is along the rail's longitudinal slope, not a slip, so the rail surface's vertical
+//! rate `V·dz/ds` is subtracted. FASTSIM gives the tangential forces in the contact plane.
+
+use super::elements::{add_force, BodyStates, Wrenches};
+use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
+use crate::contact::creepage::{creepages, BodyVelocity, ContactFrame, Side};
+use crate::contact::fastsim::Fastsim;
+use crate::contact::geometry::WheelsetContact;
+use crate::contact::hertz::HertzCoefficients;
+use crate::contact::kalker::CreepForces;
+use crate::contact::table::ContactTable;
+use crate::error::{LocoError, Result};
+use crate::track::RailIrregularity;
+
+/// Settings of the wheel-rail contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelRailSettings {
+    /// Wheel-rail friction coefficient μ (–).
+    pub friction: f64,
+    /// Contact modulus E* = E / (2(1 − ν²)) of steel on steel, Pa.
+    pub contact_modulus: f64,
+    /// Viscous damping of the normal contact, N·s/m per contact.
+    pub normal_damping: f64,
+    /// Nominal rolling radius r0, m.
+    pub nominal_radius: f64,
+}
+
+/// Forces at one wheel, for outputs (track frame, on the wheel).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WheelForces {
+    /// Vertical wheel-rail force Q, N (positive: rail pushes the wheel up).
+    pub vertical: f64,
+    /// Lateral wheel-rail force Y, N (+ left).
+    pub lateral: f64,
+    /// Longitudinal force, N (+ forward).
+    pub longitudinal: f64,
+    /// Number of points in contact (0, 1, 2).
+    pub points_in_contact: u8,
+}
+
+/// The contact of all wheels with a given table, FASTSIM solver and settings.
+#[derive(Debug, Clone)]
+pub struct WheelRail {
+    table: ContactTable,
+    fastsim: Fastsim,
+    settings: WheelRailSettings,
+}
+
+const SIDES: [Side; 2] = [Side::Left, Side::Right];
+
+impl WheelRail {
+    /// Wraps a contact table and a FASTSIM solver.
+    pub fn new(table: ContactTable, fastsim: Fastsim, settings: WheelRailSettings) -> Self {
+        Self {
+            table,
+            fastsim,
+            settings,
+        }
+    }
+
+    /// The contact table.
+    pub fn table(&self) -> &ContactTable {
+        &self.table
+    }
+
+    /// Adds the wheel-rail forces on wheelset `w` at time `t` (s, for error messages) to
+    /// `wrenches`; `rails` are the irregularities at the wheelset's position, `speed` is V (m/s).
+    /// `static_stiffness` > 0 replaces the creep forces by a tangential spring (N/m) at each
+    /// contact, holding the wheels in the static equilibrium search where nothing rolls.
+    #[allow(clippy::too_many_arguments)]
+    pub fn apply(
+        &self,
+        w: usize,
+        t: f64,
+        states: &BodyStates,
+        rails: &RailIrregularity,
+        speed: f64,
+        static_stiffness: f64,
+        wrenches: &mut Wrenches,
+        out: &mut [WheelForces; 2],
+    ) -> Result<()> {
+        let body = body_wheelset(w);
+        let u = states.position[body];
+        let v = states.velocity[body];
+        let spin = speed / self.settings.nominal_radius + v[PITCH];
+        // Wheel angular velocity: spin about the rolled and yawed axle, plus roll and yaw rates.
+        let angular = [
+            v[ROLL] - spin * u[YAW],
+            spin,
+            v[YAW] + spin * u[ROLL],
+        ];
+        let velocity = BodyVelocity {
+            velocity: [speed + v[0], v[1], v[2]],
+            angular_velocity: angular,
+        };
+        let rail_y = [rails.y_left, rails.y_right];
+        let rail_z = [rails.z_left, rails.z_right];
+        let rail_dz = [rails.dz_left_ds, rails.dz_right_ds];
+        for (side_index, side) in SIDES.iter().enumerate() {
+            let y_rel = u[1] - rail_y[side_index];
+            let (lo, hi) = self.table.y_range();
+            if !(lo..=hi).contains(&y_rel) {
+                return Err(LocoError::Derailed {
+                    time: t,
+                    location: format!("wheelset{} {}", w + 1, side_name(*side)),
+                    reason: format!(
+                        "lateral position {y_rel:.4} m relative to the rail is beyond the contact \
+                         table ({lo:.4} … {hi:.4} m): the flange has climbed or the state diverged"
+                    ),
+                });
+            }
+            let pose: WheelsetContact = self.table.lookup(y_rel);
+            let mut forces = WheelForces::default();
+            for point in pose.wheels[side_index].points.iter().flatten() {
+                let l = point.lateral;
+                let interference = pose.rise + pose.roll * l + rail_z[side_index]
+                    - u[2]
+                    - u[ROLL] * l
+                    - point.gap;
+                if interference <= 0.0 {
+                    continue;
+                }
+                let cg = point.contact_angle.cos();
+                let approach = interference * cg;
+                let approach_rate =
+                    (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
+                let hertz = HertzCoefficients::from_curvatures(
+                    0.5 / point.rolling_radius,
+                    // A conformal point (flange root on the gauge corner) has a lateral relative
+                    // curvature near zero; a floor of 1/(20 m) keeps the ellipse finite there.
+                    (0.5 * (point.wheel_curvature + point.rail_curvature)).max(0.025),
+                    self.settings.contact_modulus,
+                )?;
+                let normal = (hertz.load_from_approach(approach)
+                    + self.settings.normal_damping * approach_rate)
+                    .max(0.0);
+                if normal == 0.0 {
+                    continue;
+                }
+                let frame = ContactFrame::new(*side, point.contact_angle, u[YAW]);
+                let offset = [-u[YAW] * l, l, point.vertical];
+                let tangential = if static_stiffness > 0.0 {
+                    // Static search: contact patches do not slide; displacement of the wheel
+                    // surface at the contact (x − r·β, y + r·φ_el) against a tangential spring.
+                    let dx = u[0] - point.rolling_radius * u[PITCH];
+                    let dy = u[1] + point.rolling_radius * (u[ROLL] - pose.roll);
+                    CreepForces {
+                        fx: -static_stiffness * dx,
+                        fy: -static_stiffness * dy * cg,
+                        mz: 0.0,
+                    }
+                } else {
+                    let rail_surface = [0.0, 0.0, speed * rail_dz[side_index]];
+                    let creep = creepages(&velocity, &offset, &rail_surface, &frame, speed);
+                    let ellipse = hertz.contact(normal);
+                    self.fastsim.creep_forces(
+                        ellipse.semi_axis_long,
+                        ellipse.semi_axis_lat,
+                        normal,
+                        self.settings.friction,
+                        &creep,
+                    )
+                };
+                let mut f = [0.0; 3];
+                for k in 0..3 {
+                    f[k] = normal * frame.normal[k]
+                        + tangential.fx * frame.longitudinal[k]
+                        + tangential.fy * frame.lateral[k];
+                }
+                add_force(wrenches, body, &u, offset, f);
+                for k in 0..3 {
+                    wrenches[body][3 + k] += tangential.mz * frame.normal[k];
+                }
+                forces.vertical += f[2];
+                forces.lateral += f[1];
+                forces.longitudinal += f[0];
+                forces.points_in_contact += 1;
+            }
+            out[side_index] = forces;
+        }
+        Ok(())
+    }
+}
+
+fn side_name(side: Side) -> &'static str {
+    match side {
+        Side::Left => "left wheel",
+        Side::Right => "right wheel",
+    }
+}
+
+/// Number of wheels.
+pub const N_WHEELS: usize = 2 * N_WHEELSETS;
