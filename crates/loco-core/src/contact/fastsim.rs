@@ -167,6 +167,11 @@ impl Fastsim {
         &self.params
     }
 
+    /// Kalker's coefficients for this solver's Poisson's ratio.
+    pub fn kalker_table(&self) -> &KalkerTable {
+        &self.table
+    }
+
     /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
     /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
     /// (hot path; use [`fastsim`] for checked input); a non-positive a, b or N gives zero forces.

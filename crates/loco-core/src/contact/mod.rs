@@ -2,5 +2,6 @@
 
 pub mod creepage;
 pub mod fastsim;
+pub mod fastsim_table;
 pub mod hertz;
 pub mod kalker;
