@@ -5,6 +5,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::contact::fastsim::{Fastsim, FastsimParams, TractionBound};
 use loco_core::contact::fastsim_table::{FastsimTable, FastsimTableParams};
 use loco_core::contact::hertz::{ContactRadii, ElasticMaterial, HertzCoefficients};
+use loco_core::contact::hertz_table::HertzShapeTable;
 use loco_core::contact::kalker::Creepages;
 use std::hint::black_box;
 
@@ -71,6 +72,10 @@ fn bench_hertz(c: &mut Criterion) {
     let material = ElasticMaterial::default();
     c.bench_function("hertz coefficients (per geometry)", |bench| {
         bench.iter(|| HertzCoefficients::new(black_box(&radii), black_box(&material)))
+    });
+    let table = HertzShapeTable::new();
+    c.bench_function("hertz coefficients (tabulated shape)", |bench| {
+        bench.iter(|| table.coefficients(black_box(0.8), black_box(2.4), black_box(1.15e11)))
     });
     let coef = HertzCoefficients::new(&radii, &material).expect("elliptic contact");
     c.bench_function("hertz load from approach + ellipse", |bench| {

@@ -158,6 +158,19 @@ impl HertzCoefficients {
         let (c_min, c_max) = (a_curv.min(b_curv), a_curv.max(b_curv));
         let g = axis_ratio(c_min / c_max);
         let (k, e) = elliptic_ke(1.0 - g * g);
+        Ok(Self::from_shape(a_curv, b_curv, contact_modulus, g, k, e))
+    }
+
+    /// Coefficients from the ellipse shape: axis ratio `g` ≤ 1 and the elliptic integrals `k`,
+    /// `e` of modulus √(1 − g²) (inputs valid; shared with [`super::hertz_table`]).
+    pub(super) fn from_shape(
+        a_curv: f64,
+        b_curv: f64,
+        contact_modulus: f64,
+        g: f64,
+        k: f64,
+        e: f64,
+    ) -> Self {
         let sum = a_curv + b_curv;
         // Semi-axes at N = 1 N.
         let major = (3.0 * e / (2.0 * PI * g * g * sum * contact_modulus)).cbrt();
@@ -169,11 +182,11 @@ impl HertzCoefficients {
         } else {
             (minor, major)
         };
-        Ok(Self {
+        Self {
             long_coef,
             lat_coef,
             stiffness: 1.0 / approach_unit.powf(1.5),
-        })
+        }
     }
 
     /// As [`Self::from_curvatures`] from the radii and the material.

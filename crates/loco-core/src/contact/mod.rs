@@ -5,4 +5,5 @@ pub mod elliptic;
 pub mod fastsim;
 pub mod fastsim_table;
 pub mod hertz;
+pub mod hertz_table;
 pub mod kalker;
