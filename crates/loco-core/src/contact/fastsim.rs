@@ -167,6 +167,11 @@ impl Fastsim {
         &self.params
     }
 
+    /// Kalker's coefficients for this solver's Poisson's ratio.
+    pub fn kalker_table(&self) -> &KalkerTable {
+        &self.table
+    }
+
     /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
     /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
     /// (hot path; use [`fastsim`] for checked input); a non-positive a, b or N gives zero forces.
@@ -224,12 +229,14 @@ impl Fastsim {
                     px[l] -= h * slope_x[l];
                     py[l] -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
                     let bound = bound_j[l] * shape_k;
-                    let norm2 = px[l] * px[l] + py[l] * py[l];
-                    if norm2 > bound * bound {
-                        let scale = bound / norm2.sqrt();
-                        px[l] *= scale;
-                        py[l] *= scale;
-                    }
+                    // Projection onto the bound, branch-free so that the lanes vectorise:
+                    // scale = min(1, bound/|p|) (|p| = 0 gives 1 through the tiny floor).
+                    let norm = (px[l] * px[l] + py[l] * py[l])
+                        .sqrt()
+                        .max(f64::MIN_POSITIVE);
+                    let scale = (bound / norm).min(1.0);
+                    px[l] *= scale;
+                    py[l] *= scale;
                     sx[l] += px[l];
                     sy[l] += py[l];
                     sxpy[l] += x * py[l];

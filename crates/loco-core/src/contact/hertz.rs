@@ -30,6 +30,7 @@
 //! and then the ellipse for any load and the load for any approach cost a cube root or a square
 //! root (no iteration, no allocation) — the form the vehicle model's time loop needs.
 
+use super::elliptic::{axis_ratio, elliptic_ke};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
 use std::f64::consts::PI;
 
@@ -157,6 +158,19 @@ impl HertzCoefficients {
         let (c_min, c_max) = (a_curv.min(b_curv), a_curv.max(b_curv));
         let g = axis_ratio(c_min / c_max);
         let (k, e) = elliptic_ke(1.0 - g * g);
+        Ok(Self::from_shape(a_curv, b_curv, contact_modulus, g, k, e))
+    }
+
+    /// Coefficients from the ellipse shape: axis ratio `g` ≤ 1 and the elliptic integrals `k`,
+    /// `e` of modulus √(1 − g²) (inputs valid; shared with [`super::hertz_table`]).
+    pub(super) fn from_shape(
+        a_curv: f64,
+        b_curv: f64,
+        contact_modulus: f64,
+        g: f64,
+        k: f64,
+        e: f64,
+    ) -> Self {
         let sum = a_curv + b_curv;
         // Semi-axes at N = 1 N.
         let major = (3.0 * e / (2.0 * PI * g * g * sum * contact_modulus)).cbrt();
@@ -168,11 +182,11 @@ impl HertzCoefficients {
         } else {
             (minor, major)
         };
-        Ok(Self {
+        Self {
             long_coef,
             lat_coef,
             stiffness: 1.0 / approach_unit.powf(1.5),
-        })
+        }
     }
 
     /// As [`Self::from_curvatures`] from the radii and the material.
@@ -231,73 +245,12 @@ pub fn hertz_contact(
     Ok(HertzCoefficients::new(radii, material)?.contact(normal_force))
 }
 
-/// Complete elliptic integrals `(K(m), E(m))` of parameter `m = k²` ∈ [0, 1), by the
-/// arithmetic-geometric mean (Abramowitz & Stegun 17.6; converges quadratically).
-pub fn elliptic_ke(m: f64) -> (f64, f64) {
-    let mut a = 1.0;
-    let mut b = (1.0 - m).sqrt();
-    let mut c2 = m; // c_n² with c_0 = k
-    let mut weight = 0.5; // 2^{n−1}
-    let mut sum = weight * c2;
-    for _ in 0..40 {
-        if (a - b).abs() <= 1e-16 * a {
-            break;
-        }
-        let c = 0.5 * (a - b);
-        let next_b = (a * b).sqrt();
-        a = 0.5 * (a + b);
-        b = next_b;
-        c2 = c * c;
-        weight *= 2.0;
-        sum += weight * c2;
-    }
-    let k = PI / (2.0 * a);
-    (k, k * (1.0 - sum))
-}
-
-/// Ratio `g = c_minor/c_major` ∈ (0, 1] of the ellipse for the curvature ratio
-/// `rho = A_min/A_max` ∈ (0, 1]: solves `(K − E)/(E/g² − K) = rho` by bisection in ln g (the left
-/// side increases monotonically from 0 to 1 with g).
-fn axis_ratio(rho: f64) -> f64 {
-    if rho >= 1.0 {
-        return 1.0;
-    }
-    let curvature_ratio = |g: f64| {
-        let (k, e) = elliptic_ke(1.0 - g * g);
-        (k - e) / (e / (g * g) - k)
-    };
-    // g ≈ rho^{2/3} asymptotically; 1e-12 brackets any physical wheel-rail ellipse.
-    let (mut lo, mut hi) = (1e-12_f64.ln(), 0.0_f64);
-    for _ in 0..64 {
-        let mid = 0.5 * (lo + hi);
-        if curvature_ratio(mid.exp()) < rho {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if hi - lo < 1e-13 {
-            break;
-        }
-    }
-    (0.5 * (lo + hi)).exp()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn rel(x: f64, y: f64) -> f64 {
         (x - y).abs() / y.abs()
-    }
-
-    #[test]
-    fn elliptic_integrals_match_known_values() {
-        // A&S table 17.1: K(0.5) = 1.854074677, E(0.5) = 1.350643881.
-        let (k, e) = elliptic_ke(0.5);
-        assert!((k - 1.854_074_677).abs() < 1e-9);
-        assert!((e - 1.350_643_881).abs() < 1e-9);
-        let (k0, e0) = elliptic_ke(0.0);
-        assert!((k0 - PI / 2.0).abs() < 1e-15 && (e0 - PI / 2.0).abs() < 1e-15);
     }
 
     #[test]
