@@ -6,11 +6,21 @@
 //!   for the time loop; [`builtin`]: the registry of built-in profiles.
 
 pub mod builtin;
+pub mod geometry;
 pub mod profile;
 pub mod profile_builder;
+pub mod profile_io;
+pub mod setup;
 mod spline;
+pub mod table;
 
 pub use builtin::{builtin_names, builtin_profile};
+pub use geometry::{
+    ContactGeometry, ContactPoint, ContactWorkspace, WheelContact, WheelsetContact,
+};
 pub use profile::{Profile, ProfileKind, MIN_PROFILE_POINTS};
 pub use profile_builder::{ProfileBuilder, Segment};
+pub use profile_io::load_profile;
+pub use setup::{ContactSearchParams, TrackSetup, WheelsetSetup, LEFT, RIGHT};
 pub use spline::SplineValue;
+pub use table::{rolling_radius_difference, ContactTable, ContactTableParams};

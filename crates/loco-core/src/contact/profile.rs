@@ -119,7 +119,6 @@ impl Profile {
     }
 
     /// The interpolant (for the contact search, which evaluates it with interval hints).
-    #[allow(dead_code)] // used by the contact search (geometry.rs)
     pub(crate) fn spline(&self) -> &CubicSpline {
         &self.spline
     }
