@@ -251,6 +251,29 @@ impl ContactGeometry {
         })
     }
 
+    /// Vertical gap (m) between wheel `side` (`LEFT`/`RIGHT`) and its rail at the wheel profile
+    /// position `wheel_y` (m), with the wheelset in its rigid contact pose at displacement `y`
+    /// (m): the gap function whose minima are the contact points.
+    pub fn gap_at(&self, y: f64, side: usize, wheel_y: f64) -> Result<f64> {
+        check_finite("y", y)?;
+        check_finite("wheel_y", wheel_y)?;
+        if side > RIGHT {
+            return Err(LocoError::param("side", "must be 0 (left) or 1 (right)"));
+        }
+        let mut ws = ContactWorkspace::default();
+        let (roll, z) = self.solve_pose(y, self.roll_reference, &mut ws)?;
+        let (u_ws, phi) = side_pose(side, y, roll);
+        let (lo, hi) = self.sides[side].wheel.y_range();
+        let h = (lo..=hi)
+            .contains(&wheel_y)
+            .then(|| self.sides[side].eval_h(u_ws, phi, wheel_y))
+            .flatten()
+            .ok_or_else(|| {
+                LocoError::input("wheel_y", format!("{wheel_y} m is not above the rail"))
+            })?;
+        Ok(z + h.0)
+    }
+
     /// Roll (rad) and centre height (m) at which both wheels touch.
     fn solve_pose(&self, y: f64, roll_guess: f64, ws: &mut ContactWorkspace) -> Result<(f64, f64)> {
         let max = self.params.max_roll;

@@ -6,8 +6,8 @@
 //!   separated by blanks, commas or semicolons (extra columns ignored); `#` and `%` start comments.
 //!   The points must already be in the profile frame (EN 15302 reference files are); they may run
 //!   in either y direction but must be strictly monotonic, unless `drop_backtracking` is set, in
-//!   which case points that do not advance beyond the last kept y are dropped (the EN 15302 files
-//!   of criogenox end with such a repeated stretch).
+//!   which case points that do not advance beyond the last kept y are dropped (for digitised
+//!   profiles that double back on themselves at an end).
 //! - SIMPACK: the header's `type` (0 rail, 1 wheel) must agree with the extension and with the
 //!   kind asked for. The point section's coordinates are processed as SIMPACK documents in the
 //!   file's own header comments, in its order: shift (`shift.y`, `shift.z`), rotation (only 0 is
