@@ -47,8 +47,7 @@ fn read_reference(text: &str, mirror: f64, nominal_radius_mm: f64) -> Vec<(usize
     let mut patches = 0;
     let mut tr: Option<Vec<f64>> = None;
     let mut wheel: Option<Vec<f64>> = None;
-    for i in 0..lines.len() {
-        let l = lines[i];
+    for (i, l) in lines.iter().enumerate() {
         if l.contains("CONTACT PATCH") && l.contains("WHEEL-RAIL") {
             patches = l.split_whitespace().rev().nth(2).unwrap().parse().unwrap();
         } else if l.trim_start().starts_with("XCP(TR)") && tr.is_none() {
