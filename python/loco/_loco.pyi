@@ -97,6 +97,70 @@ def rolling_radius_difference(
     nominal_radius_right: float,
 ) -> npt.NDArray[np.float64]: ...
 
+# --- creep (creep.rs) ---------------------------------------------------------------------------
+
+__all__ += [
+    "fastsim",
+    "hertz_contact",
+    "hertz_stiffness",
+    "kalker_coefficients",
+    "linear_creep_forces",
+    "wheelset_creepages",
+]
+
+def hertz_contact(
+    normal_force: float,
+    r_wheel_rolling: float,
+    r_wheel_transverse: float,
+    r_rail_transverse: float,
+    youngs_modulus: float,
+    poisson_ratio: float,
+) -> tuple[float, float, float, float]: ...
+def hertz_stiffness(
+    r_wheel_rolling: float,
+    r_wheel_transverse: float,
+    r_rail_transverse: float,
+    youngs_modulus: float,
+    poisson_ratio: float,
+) -> float: ...
+def kalker_coefficients(a_over_b: float, nu: float) -> tuple[float, float, float, float]: ...
+def linear_creep_forces(
+    a: float,
+    b: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    nu: float,
+    shear_modulus: float,
+) -> tuple[float, float, float]: ...
+def fastsim(
+    a: float,
+    b: float,
+    normal_force: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    mu: float,
+    nu: float,
+    shear_modulus: float,
+    nx: int,
+    ny: int,
+    bound: str,
+    kalker_factor: float,
+) -> tuple[float, float, float]: ...
+def wheelset_creepages(
+    speed: float,
+    lateral_velocity: float,
+    yaw: float,
+    yaw_rate: float,
+    roll_rate: float,
+    spin_rate: float,
+    side: str,
+    lateral_position: float,
+    rolling_radius: float,
+    contact_angle: float,
+) -> tuple[float, float, float]: ...
+
 # --- track (track.rs) ---------------------------------------------------------------------------
 
 # --- metrics (metrics.rs) -----------------------------------------------------------------------

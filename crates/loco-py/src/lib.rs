@@ -5,6 +5,7 @@
 //! returns numpy arrays by moving their buffers. No physics lives here.
 
 mod contact;
+mod creep;
 mod dampers;
 mod errors;
 mod metrics;
@@ -18,6 +19,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     errors::register(m)?;
     contact::register(m)?;
+    creep::register(m)?;
     track::register(m)?;
     metrics::register(m)?;
     dampers::register(m)?;

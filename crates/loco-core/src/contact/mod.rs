@@ -4,9 +4,17 @@
 //!   [`profile_io`]: text and SIMPACK loaders.
 //! - [`geometry`]: the rigid contact search of a wheelset on a track; [`table`]: contact tables
 //!   for the time loop; [`builtin`]: the registry of built-in profiles.
+//! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables: normal and creep forces.
 
 pub mod builtin;
+pub mod creepage;
+pub mod elliptic;
+pub mod fastsim;
+pub mod fastsim_table;
 pub mod geometry;
+pub mod hertz;
+pub mod hertz_table;
+pub mod kalker;
 pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;
