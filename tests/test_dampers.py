@@ -116,11 +116,12 @@ def test_hydraulic_default_and_fsd_variant() -> None:
     plain_soft = dampers.bench(plain, 0.5, 5e-3, cycles=6)
     assert soft.scale_factor[-1] == 0.0
     assert (soft.equivalent_damping or 0) < 0.4 * (plain_soft.equivalent_damping or 0)
-    # Above f_p it stays closed and is the plain damper.
+    # Above f_p it stays closed and is the plain damper (up to the finer integration step that
+    # the open valve's faster pole imposes).
     hard = dampers.bench(frequency_selective, 4.0, 2e-3, cycles=6)
     plain_hard = dampers.bench(plain, 4.0, 2e-3, cycles=6)
     assert np.all(hard.scale_factor == 1.0)
-    assert hard.equivalent_damping == pytest.approx(plain_hard.equivalent_damping, rel=1e-9)
+    assert hard.equivalent_damping == pytest.approx(plain_hard.equivalent_damping, rel=1e-5)
 
 
 def test_bench_rejects_bad_input() -> None:
