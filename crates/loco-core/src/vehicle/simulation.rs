@@ -117,7 +117,9 @@ impl VehicleSystem {
         self.wrenches = [[0.0; 6]; N_BODIES];
         self.structure
             .add_structural_forces(&self.body_states, self.speed, &mut self.wrenches);
-        for (i, damper) in self.dampers.iter().enumerate() {
+        // Dampers carry no static force: the static search leaves them out.
+        let statics = self.static_stiffness > 0.0;
+        for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
             let n = damper.law.n_states();
             let o = damper.state_offset;
@@ -208,7 +210,9 @@ impl OdeSystem for VehicleSystem {
         let (q, rest) = y.split_at(N_DOF);
         self.structure
             .body_states(q, &rest[..N_DOF], &mut self.body_states);
-        for (i, damper) in self.dampers.iter().enumerate() {
+        // Dampers carry no static force: the static search leaves them out.
+        let statics = self.static_stiffness > 0.0;
+        for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
             let o = damper.state_offset;
             let n = damper.law.n_states();

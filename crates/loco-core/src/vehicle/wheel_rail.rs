@@ -56,6 +56,9 @@ pub struct WheelRail {
     table: ContactTable,
     fastsim: Fastsim,
     settings: WheelRailSettings,
+    /// Rolling radius of the centred wheelset (mean of both wheels at y = 0), m: free rolling at
+    /// speed V turns the wheelset at V / this, so a centred wheelset has no longitudinal creep.
+    centred_radius: f64,
 }
 
 const SIDES: [Side; 2] = [Side::Left, Side::Right];
@@ -63,11 +66,24 @@ const SIDES: [Side; 2] = [Side::Left, Side::Right];
 impl WheelRail {
     /// Wraps a contact table and a FASTSIM solver.
     pub fn new(table: ContactTable, fastsim: Fastsim, settings: WheelRailSettings) -> Self {
+        let centre = table.lookup(0.0);
+        let radius = |side: usize| {
+            centre.wheels[side]
+                .touching()
+                .map_or(settings.nominal_radius, |p| p.rolling_radius)
+        };
+        let centred_radius = 0.5 * (radius(0) + radius(1));
         Self {
             table,
             fastsim,
             settings,
+            centred_radius,
         }
+    }
+
+    /// Rolling radius of the centred wheelset, m.
+    pub fn centred_radius(&self) -> f64 {
+        self.centred_radius
     }
 
     /// The contact table.
@@ -78,7 +94,7 @@ impl WheelRail {
     /// Adds the wheel-rail forces on wheelset `w` at time `t` (s, for error messages) to
     /// `wrenches`; `rails` are the irregularities at the wheelset's position, `speed` is V (m/s).
     /// `static_stiffness` > 0 replaces the creep forces by a tangential spring (N/m) at each
-    /// contact, holding the wheels in the static equilibrium search where nothing rolls.
+    /// contact and a brake on the spin, holding the wheels in the static equilibrium search.
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
         &self,
@@ -94,7 +110,11 @@ impl WheelRail {
         let body = body_wheelset(w);
         let u = states.position[body];
         let v = states.velocity[body];
-        let spin = speed / self.settings.nominal_radius + v[PITCH];
+        let spin = speed / self.centred_radius + v[PITCH];
+        // The pitch coordinate of a wheelset is its spin beyond steady rolling: it turns the
+        // wheel under the contact but does not move the contact point, so lever arms ignore it.
+        let mut u_lever = u;
+        u_lever[PITCH] = 0.0;
         // Wheel angular velocity: spin about the rolled and yawed axle, plus roll and yaw rates.
         let angular = [
             v[ROLL] - spin * u[YAW],
@@ -105,6 +125,11 @@ impl WheelRail {
             velocity: [speed + v[0], v[1], v[2]],
             angular_velocity: angular,
         };
+        if static_stiffness > 0.0 {
+            // Static search: the brakes hold the spin, otherwise the vehicle could roll away.
+            let r0 = self.centred_radius;
+            wrenches[body][PITCH] -= static_stiffness * r0 * r0 * u[PITCH];
+        }
         let rail_y = [rails.y_left, rails.y_right];
         let rail_z = [rails.z_left, rails.z_right];
         let rail_dz = [rails.dz_left_ds, rails.dz_right_ds];
@@ -154,7 +179,7 @@ impl WheelRail {
                 let tangential = if static_stiffness > 0.0 {
                     // Static search: contact patches do not slide; displacement of the wheel
                     // surface at the contact (x − r·β, y + r·φ_el) against a tangential spring.
-                    let dx = u[0] - point.rolling_radius * u[PITCH];
+                    let dx = u[0] - point.rolling_radius * u[PITCH] - l * u[YAW];
                     let dy = u[1] + point.rolling_radius * (u[ROLL] - pose.roll);
                     CreepForces {
                         fx: -static_stiffness * dx,
@@ -179,7 +204,7 @@ impl WheelRail {
                         + tangential.fx * frame.longitudinal[k]
                         + tangential.fy * frame.lateral[k];
                 }
-                add_force(wrenches, body, &u, offset, f);
+                add_force(wrenches, body, &u_lever, offset, f);
                 for k in 0..3 {
                     wrenches[body][3 + k] += tangential.mz * frame.normal[k];
                 }
