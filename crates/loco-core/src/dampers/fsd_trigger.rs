@@ -132,7 +132,11 @@ impl TriggerMemory {
             self.stroke_lowpass_m = [elongation_m, 0.0];
             self.started = true;
         }
-        if dt_s.is_nan() || dt_s <= 0.0 || !elongation_m.is_finite() || !elongation_rate_mps.is_finite() {
+        if dt_s.is_nan()
+            || dt_s <= 0.0
+            || !elongation_m.is_finite()
+            || !elongation_rate_mps.is_finite()
+        {
             return;
         }
         self.elapsed_s += dt_s;
