@@ -304,4 +304,31 @@ mod tests {
         assert_eq!(FsdDamper::valve_state(0.4, true), ValveState::Closing);
         assert_eq!(FsdDamper::valve_state(0.4, false), ValveState::Opening);
     }
+
+    #[test]
+    fn reversal_half_way_starts_from_the_current_position() {
+        let params = FsdTriggerParams::default();
+        let mut trigger = TriggerMemory::new(true);
+        let mut scale = 0.0;
+        let dt = 1e-3;
+        // Closing toward a "high" decision for half the delay: s = 0.5, no jump.
+        for _ in 0..25 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+        }
+        assert!((scale - 0.5).abs() < 1e-12, "{scale}");
+        assert_eq!(FsdDamper::valve_state(scale, true), ValveState::Closing);
+        // The trigger turns to "low": the valve goes back from 0.5 at the same rate.
+        trigger.high_frequency = false;
+        let mut previous = scale;
+        for step in 0..30 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+            assert!(
+                (previous - scale - dt / 0.05).abs() < 1e-12 || scale == 0.0,
+                "{step}"
+            );
+            previous = scale;
+        }
+        assert_eq!(scale, 0.0);
+        assert_eq!(FsdDamper::valve_state(scale, false), ValveState::Open);
+    }
 }
