@@ -319,4 +319,19 @@ fn bench_rejects_bad_input() {
     };
     let err = run(&damper, &bad, &BenchOptions::default()).unwrap_err();
     assert!(err.to_string().contains("time_s"));
+    // A microgram equivalent mass makes a pole far too fast for a 100 s run: refused, no hang.
+    let stiff = Damper::Fsd(
+        FsdDamper::new(FsdParams {
+            equivalent_mass_kg: 1e-9,
+            ..FsdParams::default()
+        })
+        .unwrap(),
+    );
+    let long = BenchMotion::Sine {
+        frequency_hz: 0.1,
+        amplitude_m: 1e-3,
+        cycles: 10,
+    };
+    let err = run(&stiff, &long, &BenchOptions::default()).unwrap_err();
+    assert!(err.to_string().contains("motion"), "{err}");
 }
