@@ -3,6 +3,11 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
+from typing import final
+
+import numpy as _np
+from numpy.typing import NDArray as _NDArray
+
 __version__: str
 __all__ = ["__version__"]
 
@@ -101,3 +106,87 @@ def wheelset_creepages(
 # --- metrics (metrics.rs) -----------------------------------------------------------------------
 
 # --- dampers (dampers.rs) -----------------------------------------------------------------------
+
+__all__ += [
+    "Damper",
+    "damper_bench_recorded",
+    "damper_bench_sine",
+    "damper_bench_sweep",
+    "damper_fsd",
+    "damper_hydraulic",
+    "damper_hydraulic_defaults",
+    "damper_maxwell",
+    "damper_preset",
+]
+
+_F64 = _NDArray[_np.float64]
+_BenchTuple = tuple[_F64, _F64, _F64, _F64, _F64, _F64, tuple[float, float, float] | None, float]
+
+@final
+class Damper:
+    """A validated damper (immutable)."""
+
+    @property
+    def kind(self) -> str: ...
+    @property
+    def n_states(self) -> int: ...
+    @property
+    def fastest_rate(self) -> float: ...
+    def parameters(self) -> dict[str, float | bool | None]: ...
+
+def damper_maxwell(
+    damping: float,
+    series_stiffness: float,
+    knee_velocity: float | None = None,
+    blow_off_damping: float | None = None,
+) -> Damper: ...
+def damper_fsd(
+    low_damping: float,
+    high_damping: float,
+    equivalent_mass: float,
+    equivalent_stiffness: float,
+    cutoff_frequency: float,
+    switching_delay: float,
+    start_closed: bool,
+    hysteresis_ratio: float,
+    highpass_corner: float,
+    averaging_time: float,
+    min_stroke_rms: float,
+    warmup_time: float,
+) -> Damper: ...
+def damper_hydraulic(
+    piston_area: float,
+    rod_area: float,
+    rebound_orifice_area: float,
+    compression_orifice_area: float,
+    bottom_valve_area: float,
+    oil_density: float,
+    oil_kinematic_viscosity: float,
+    flow_coefficient: float,
+    series_stiffness: float,
+    open_area_ratio: float | None,
+    cutoff_frequency: float,
+    switching_delay: float,
+    start_closed: bool,
+) -> Damper: ...
+def damper_hydraulic_defaults() -> dict[str, float | bool | None]: ...
+def damper_preset(name: str) -> Damper: ...
+def damper_bench_sine(
+    damper: Damper,
+    frequency: float,
+    amplitude: float,
+    cycles: int,
+    steps_per_cycle: int,
+    samples_per_cycle: int,
+    equivalent_cycles: int,
+) -> _BenchTuple: ...
+def damper_bench_sweep(
+    damper: Damper,
+    start_frequency: float,
+    end_frequency: float,
+    amplitude: float,
+    duration: float,
+    steps_per_cycle: int,
+    samples_per_cycle: int,
+) -> _BenchTuple: ...
+def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _BenchTuple: ...

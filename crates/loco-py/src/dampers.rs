@@ -1,8 +1,382 @@
-//! Bindings of `loco_core::dampers`.
+//! Bindings of `loco_core::dampers`: the `Damper` class, its constructors and presets, and the
+//! bench. Python arguments are SI (N·s/m, N/m, kg, Hz, s, m, m², kg/m³, m²/s).
 
+use crate::errors::run_detached;
+use loco_core::dampers::bench::{self, BenchMotion, BenchOptions, BenchRecord};
+use loco_core::dampers::{
+    BlowOff, Damper, FsdDamper, FsdParams, FsdTriggerParams, HydraulicDamper,
+    HydraulicFrequencyValve, HydraulicParams, MaxwellDamper, MaxwellParams,
+};
+use loco_core::LocoError as CoreError;
+use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// A validated damper (immutable). Build it with `maxwell`, `fsd`, `hydraulic` or a preset.
+#[pyclass(frozen, name = "Damper", module = "loco._loco")]
+#[derive(Clone)]
+pub struct PyDamper {
+    pub inner: Damper,
+}
+
+#[pymethods]
+impl PyDamper {
+    /// "maxwell", "fsd" or "hydraulic".
+    #[getter]
+    fn kind(&self) -> &'static str {
+        match self.inner {
+            Damper::Maxwell(_) => "maxwell",
+            Damper::Fsd(_) => "fsd",
+            Damper::Hydraulic(_) => "hydraulic",
+        }
+    }
+
+    /// Number of continuous internal states.
+    #[getter]
+    fn n_states(&self) -> usize {
+        self.inner.n_states()
+    }
+
+    /// Magnitude of the fastest internal pole (1/s).
+    #[getter]
+    fn fastest_rate(&self) -> f64 {
+        self.inner.fastest_rate_per_s()
+    }
+
+    /// The parameters as a dict (SI units, names as in the constructor).
+    fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        match self.inner {
+            Damper::Maxwell(m) => {
+                let p = m.params();
+                d.set_item("damping", p.damping_nspm)?;
+                d.set_item("series_stiffness", p.series_stiffness_npm)?;
+                d.set_item("knee_velocity", p.blow_off.map(|b| b.knee_velocity_mps))?;
+                d.set_item(
+                    "blow_off_damping",
+                    p.blow_off.map(|b| b.blow_off_damping_nspm),
+                )?;
+            }
+            Damper::Fsd(f) => {
+                let p = f.params();
+                d.set_item("low_damping", p.low_damping_nspm)?;
+                d.set_item("high_damping", p.high_damping_nspm)?;
+                d.set_item("equivalent_mass", p.equivalent_mass_kg)?;
+                d.set_item("equivalent_stiffness", p.equivalent_stiffness_npm)?;
+                d.set_item("cutoff_frequency", p.cutoff_frequency_hz)?;
+                d.set_item("switching_delay", p.switching_delay_s)?;
+                d.set_item("start_closed", p.start_closed)?;
+                set_trigger(&d, &p.trigger)?;
+            }
+            Damper::Hydraulic(h) => {
+                let p = h.params();
+                d.set_item("piston_area", p.piston_area_m2)?;
+                d.set_item("rod_area", p.rod_area_m2)?;
+                d.set_item("rebound_orifice_area", p.rebound_orifice_area_m2)?;
+                d.set_item("compression_orifice_area", p.compression_orifice_area_m2)?;
+                d.set_item("bottom_valve_area", p.bottom_valve_area_m2)?;
+                d.set_item("oil_density", p.oil_density_kgpm3)?;
+                d.set_item("oil_kinematic_viscosity", p.oil_kinematic_viscosity_m2ps)?;
+                d.set_item("flow_coefficient", p.flow_coefficient)?;
+                d.set_item("series_stiffness", p.series_stiffness_npm)?;
+                let valve = p.frequency_valve;
+                d.set_item("open_area_ratio", valve.map(|v| v.open_area_ratio))?;
+                d.set_item("cutoff_frequency", valve.map(|v| v.cutoff_frequency_hz))?;
+                d.set_item("switching_delay", valve.map(|v| v.switching_delay_s))?;
+                if let Some(v) = valve {
+                    d.set_item("start_closed", v.start_closed)?;
+                    set_trigger(&d, &v.trigger)?;
+                }
+            }
+        }
+        Ok(d)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Damper({:?})", self.inner)
+    }
+}
+
+fn set_trigger(d: &Bound<'_, PyDict>, t: &FsdTriggerParams) -> PyResult<()> {
+    d.set_item("hysteresis_ratio", t.hysteresis_ratio)?;
+    d.set_item("highpass_corner", t.highpass_corner_hz)?;
+    d.set_item("averaging_time", t.averaging_time_s)?;
+    d.set_item("min_stroke_rms", t.min_stroke_rms_m)?;
+    d.set_item("warmup_time", t.warmup_time_s)
+}
+
+/// A Maxwell damper: damping (N·s/m) in series with a stiffness (N/m), optional blow-off.
+#[pyfunction]
+#[pyo3(signature = (damping, series_stiffness, knee_velocity=None, blow_off_damping=None))]
+fn damper_maxwell(
+    py: Python<'_>,
+    damping: f64,
+    series_stiffness: f64,
+    knee_velocity: Option<f64>,
+    blow_off_damping: Option<f64>,
+) -> PyResult<PyDamper> {
+    run_detached(py, move || {
+        let blow_off = match (knee_velocity, blow_off_damping) {
+            (None, None) => None,
+            (Some(knee_velocity_mps), Some(blow_off_damping_nspm)) => Some(BlowOff {
+                knee_velocity_mps,
+                blow_off_damping_nspm,
+            }),
+            _ => {
+                return Err(CoreError::param(
+                    "knee_velocity",
+                    "give knee_velocity and blow_off_damping together",
+                ))
+            }
+        };
+        let damper = MaxwellDamper::new(MaxwellParams {
+            damping_nspm: damping,
+            series_stiffness_npm: series_stiffness,
+            blow_off,
+        })?;
+        Ok(PyDamper {
+            inner: Damper::Maxwell(damper),
+        })
+    })
+}
+
+/// A frequency-selective damper; defaults are the spec's FSD.
+#[pyfunction]
+#[pyo3(signature = (low_damping, high_damping, equivalent_mass, equivalent_stiffness,
+    cutoff_frequency, switching_delay, start_closed, hysteresis_ratio, highpass_corner,
+    averaging_time, min_stroke_rms, warmup_time))]
+#[allow(clippy::too_many_arguments)]
+fn damper_fsd(
+    py: Python<'_>,
+    low_damping: f64,
+    high_damping: f64,
+    equivalent_mass: f64,
+    equivalent_stiffness: f64,
+    cutoff_frequency: f64,
+    switching_delay: f64,
+    start_closed: bool,
+    hysteresis_ratio: f64,
+    highpass_corner: f64,
+    averaging_time: f64,
+    min_stroke_rms: f64,
+    warmup_time: f64,
+) -> PyResult<PyDamper> {
+    run_detached(py, move || {
+        let damper = FsdDamper::new(FsdParams {
+            low_damping_nspm: low_damping,
+            high_damping_nspm: high_damping,
+            equivalent_mass_kg: equivalent_mass,
+            equivalent_stiffness_npm: equivalent_stiffness,
+            cutoff_frequency_hz: cutoff_frequency,
+            switching_delay_s: switching_delay,
+            start_closed,
+            trigger: FsdTriggerParams {
+                highpass_corner_hz: highpass_corner,
+                averaging_time_s: averaging_time,
+                hysteresis_ratio,
+                min_stroke_rms_m: min_stroke_rms,
+                warmup_time_s: warmup_time,
+            },
+        })?;
+        Ok(PyDamper {
+            inner: Damper::Fsd(damper),
+        })
+    })
+}
+
+/// A hydraulic orifice damper; `open_area_ratio` adds a frequency valve (hydraulic FSD) with
+/// the given cut-off, delay and start state and the default trigger.
+#[pyfunction]
+#[pyo3(signature = (piston_area, rod_area, rebound_orifice_area, compression_orifice_area,
+    bottom_valve_area, oil_density, oil_kinematic_viscosity, flow_coefficient, series_stiffness,
+    open_area_ratio, cutoff_frequency, switching_delay, start_closed))]
+#[allow(clippy::too_many_arguments)]
+fn damper_hydraulic(
+    py: Python<'_>,
+    piston_area: f64,
+    rod_area: f64,
+    rebound_orifice_area: f64,
+    compression_orifice_area: f64,
+    bottom_valve_area: f64,
+    oil_density: f64,
+    oil_kinematic_viscosity: f64,
+    flow_coefficient: f64,
+    series_stiffness: f64,
+    open_area_ratio: Option<f64>,
+    cutoff_frequency: f64,
+    switching_delay: f64,
+    start_closed: bool,
+) -> PyResult<PyDamper> {
+    run_detached(py, move || {
+        let damper = HydraulicDamper::new(HydraulicParams {
+            piston_area_m2: piston_area,
+            rod_area_m2: rod_area,
+            rebound_orifice_area_m2: rebound_orifice_area,
+            compression_orifice_area_m2: compression_orifice_area,
+            bottom_valve_area_m2: bottom_valve_area,
+            oil_density_kgpm3: oil_density,
+            oil_kinematic_viscosity_m2ps: oil_kinematic_viscosity,
+            flow_coefficient,
+            series_stiffness_npm: series_stiffness,
+            frequency_valve: open_area_ratio.map(|open_area_ratio| HydraulicFrequencyValve {
+                open_area_ratio,
+                cutoff_frequency_hz: cutoff_frequency,
+                switching_delay_s: switching_delay,
+                start_closed,
+                trigger: FsdTriggerParams::default(),
+            }),
+        })?;
+        Ok(PyDamper {
+            inner: Damper::Hydraulic(damper),
+        })
+    })
+}
+
+/// Default parameters of the hydraulic damper (SI), for the Python wrapper's defaults.
+#[pyfunction]
+fn damper_hydraulic_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    PyDamper {
+        inner: Damper::Hydraulic(HydraulicDamper::fsd_default()),
+    }
+    .parameters(py)
+}
+
+/// Preset: "yd1", "yd2" or "fsd".
+#[pyfunction]
+fn damper_preset(name: &str) -> PyResult<PyDamper> {
+    let inner = match name {
+        "yd1" => Damper::yd1(),
+        "yd2" => Damper::yd2(),
+        "fsd" => Damper::fsd(),
+        _ => {
+            return Err(crate::errors::to_py_err(CoreError::param(
+                "name",
+                format!("unknown preset `{name}` (yd1, yd2, fsd)"),
+            )))
+        }
+    };
+    Ok(PyDamper { inner })
+}
+
+type Arr<'py> = Bound<'py, PyArray1<f64>>;
+type BenchTuple<'py> = (
+    Arr<'py>,
+    Arr<'py>,
+    Arr<'py>,
+    Arr<'py>,
+    Arr<'py>,
+    Arr<'py>,
+    Option<(f64, f64, f64)>,
+    f64,
+);
+
+fn to_tuple(py: Python<'_>, r: BenchRecord) -> BenchTuple<'_> {
+    (
+        r.time_s.into_pyarray(py),
+        r.displacement_m.into_pyarray(py),
+        r.velocity_mps.into_pyarray(py),
+        r.force_n.into_pyarray(py),
+        r.scale_factor.into_pyarray(py),
+        r.estimated_frequency_hz.into_pyarray(py),
+        r.equivalent
+            .map(|e| (e.damping_nspm, e.stiffness_npm, e.energy_per_cycle_j)),
+        r.dissipated_energy_j,
+    )
+}
+
+fn options(
+    steps_per_cycle: usize,
+    samples_per_cycle: usize,
+    equivalent_cycles: usize,
+) -> BenchOptions {
+    BenchOptions {
+        steps_per_cycle,
+        samples_per_cycle,
+        equivalent_cycles,
+    }
+}
+
+/// Sine bench: (time, displacement, velocity, force, scale factor, estimated frequency,
+/// (c_eq, k_eq, energy per cycle), dissipated energy).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (damper, frequency, amplitude, cycles, steps_per_cycle, samples_per_cycle, equivalent_cycles))]
+fn damper_bench_sine<'py>(
+    py: Python<'py>,
+    damper: &PyDamper,
+    frequency: f64,
+    amplitude: f64,
+    cycles: usize,
+    steps_per_cycle: usize,
+    samples_per_cycle: usize,
+    equivalent_cycles: usize,
+) -> PyResult<BenchTuple<'py>> {
+    let inner = damper.inner;
+    let motion = BenchMotion::Sine {
+        frequency_hz: frequency,
+        amplitude_m: amplitude,
+        cycles,
+    };
+    let opts = options(steps_per_cycle, samples_per_cycle, equivalent_cycles);
+    let record = run_detached(py, move || bench::run(&inner, &motion, &opts))?;
+    Ok(to_tuple(py, record))
+}
+
+/// Linear sweep bench; same tuple as the sine bench with no equivalent values.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (damper, start_frequency, end_frequency, amplitude, duration, steps_per_cycle, samples_per_cycle))]
+fn damper_bench_sweep<'py>(
+    py: Python<'py>,
+    damper: &PyDamper,
+    start_frequency: f64,
+    end_frequency: f64,
+    amplitude: f64,
+    duration: f64,
+    steps_per_cycle: usize,
+    samples_per_cycle: usize,
+) -> PyResult<BenchTuple<'py>> {
+    let inner = damper.inner;
+    let motion = BenchMotion::Sweep {
+        start_frequency_hz: start_frequency,
+        end_frequency_hz: end_frequency,
+        amplitude_m: amplitude,
+        duration_s: duration,
+    };
+    let opts = options(steps_per_cycle, samples_per_cycle, 1);
+    let record = run_detached(py, move || bench::run(&inner, &motion, &opts))?;
+    Ok(to_tuple(py, record))
+}
+
+/// Recorded-motion bench; same tuple as the sine bench with no equivalent values.
+#[pyfunction]
+fn damper_bench_recorded<'py>(
+    py: Python<'py>,
+    damper: &PyDamper,
+    time: PyReadonlyArray1<'py, f64>,
+    displacement: PyReadonlyArray1<'py, f64>,
+) -> PyResult<BenchTuple<'py>> {
+    let inner = damper.inner;
+    let motion = BenchMotion::Recorded {
+        time_s: time.as_array().to_vec(),
+        displacement_m: displacement.as_array().to_vec(),
+    };
+    let record = run_detached(py, move || {
+        bench::run(&inner, &motion, &BenchOptions::default())
+    })?;
+    Ok(to_tuple(py, record))
+}
 
 /// Adds this file's functions and classes to the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyDamper>()?;
+    m.add_function(wrap_pyfunction!(damper_maxwell, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_fsd, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_hydraulic, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_hydraulic_defaults, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_preset, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_bench_sine, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_bench_sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_bench_recorded, m)?)?;
     Ok(())
 }

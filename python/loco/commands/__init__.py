@@ -6,4 +6,5 @@ Each module listed here defines ``NAME`` (the subcommand), ``HELP`` (one line),
 
 COMMAND_MODULES: list[str] = [
     "info",
+    "damper_bench",
 ]

@@ -1,1 +1,219 @@
-//! Dampers: Maxwell elements, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
+//! Dampers: Maxwell elements, the frequency-selective (FSD) yaw damper, the hydraulic orifice
+//! model and a bench that drives any of them.
+//!
+//! # Interface for the vehicle model
+//! A [`Damper`] is an immutable, `Copy` parameter value (validated on construction; presets
+//! [`Damper::yd1`], [`Damper::yd2`], [`Damper::fsd`]). Its state lives with the caller:
+//!
+//! - **Continuous states**: [`Damper::n_states`] (≤ [`MAX_STATES`]) values that the vehicle's
+//!   integrator owns and integrates with its own states; [`Damper::initial_states`] fills them
+//!   (zero: no force at zero elongation). Maxwell: `[x_d]`, the deflection of the damper element;
+//!   FSD with mass: `[x_d, ẋ_d]`; hydraulic: `[x_d]`.
+//! - **Discrete state**: a small `Copy` [`DamperDiscreteState`] (FSD valve scale factor, trigger
+//!   filters and decision), from [`Damper::initial_discrete`], updated by [`Damper::advance`] once
+//!   per *accepted* time step (never inside the stages of a Runge-Kutta step or a rejected step).
+//! - **Force**: [`Damper::evaluate`] is pure and allocation-free: from the elongation `x` (m, the
+//!   change of the distance between the two attachment points from its static value), the
+//!   elongation rate (m/s), the continuous states and the discrete state it returns the force (N)
+//!   and writes the state derivatives into `dstates`.
+//!
+//! **Sign**: the force is positive in **tension**: it resists elongation (positive when `x` or
+//! `ẋ` grows), so it pulls the two attachment points toward each other. The vehicle applies
+//! `+F·e` to the body at the first end and `-F·e` to the other, with `e` the unit vector from the
+//! first end to the second.
+//!
+//! **Step size**: [`Damper::fastest_rate_per_s`] is the magnitude of the fastest internal pole; an
+//! explicit integrator needs roughly `dt·rate < 2.7` (RK4). The spec's FSD with its 15 kg
+//! equivalent mass has a pole near `-c2/m = -5.3e4 1/s` (dt < 5e-5 s); the Maxwell presets are
+//! slow (`k/c` = 28–113 1/s).
+//!
+//! ```
+//! use loco_core::dampers::{Damper, MAX_STATES};
+//! let damper = Damper::fsd();
+//! let mut states = [0.0; MAX_STATES];
+//! let mut dstates = [0.0; MAX_STATES];
+//! let n = damper.n_states();
+//! damper.initial_states(&mut states[..n]);
+//! let mut discrete = damper.initial_discrete();
+//! let (dt, x, v) = (1e-5, 1e-3, 0.01);
+//! let force = damper.evaluate(x, v, &states[..n], &discrete, &mut dstates[..n]);
+//! // ... the integrator advances `states` with `dstates`, then, once the step is accepted:
+//! damper.advance(&mut discrete, dt, dt, x, v, &states[..n]);
+//! assert!(force > 0.0);
+//! ```
+//!
+//! Submodules: [`maxwell`] (linear or blow-off law), [`fsd`] (the FSD and its state machine),
+//! [`fsd_trigger`] (frequency estimation and hysteresis), [`hydraulic`] (orifice model, optional
+//! frequency valve), [`bench`](mod@bench) (sine, sweep or recorded excitation, equivalent values).
+
+pub mod bench;
+pub mod fsd;
+pub mod fsd_trigger;
+pub mod hydraulic;
+pub mod maxwell;
+
+pub use fsd::{FsdDamper, FsdParams, ValveState};
+pub use fsd_trigger::{FsdTriggerParams, TriggerMemory};
+pub use hydraulic::{HydraulicDamper, HydraulicFrequencyValve, HydraulicParams};
+pub use maxwell::{BlowOff, MaxwellDamper, MaxwellParams};
+
+/// The largest [`Damper::n_states`] of any damper: size fixed arrays with it.
+pub const MAX_STATES: usize = 2;
+
+/// Any damper of the crate; see the module documentation for the interface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Damper {
+    /// Spring in series with a linear or blow-off damper.
+    Maxwell(MaxwellDamper),
+    /// Frequency-selective damper (c1/c2 switched by a frequency valve).
+    Fsd(FsdDamper),
+    /// Hydraulic orifice model in series with a spring, optionally with a frequency valve.
+    Hydraulic(HydraulicDamper),
+}
+
+/// The discrete state of a damper, updated once per accepted step by [`Damper::advance`].
+/// Dampers without a frequency valve keep it constant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DamperDiscreteState {
+    /// Frequency-valve scale factor: 0 open (low damping), 1 closed (high damping); 1 for
+    /// dampers without a valve.
+    pub scale_factor: f64,
+    /// The trigger's filters and decision (unused without a valve).
+    pub trigger: TriggerMemory,
+}
+
+impl Damper {
+    /// Conventional yaw damper YD1: Maxwell, 200 kN·s/m, 22.5 kN/mm.
+    pub fn yd1() -> Self {
+        Self::Maxwell(MaxwellDamper::yd1())
+    }
+
+    /// Conventional yaw damper YD2: Maxwell, 800 kN·s/m, 22.5 kN/mm.
+    pub fn yd2() -> Self {
+        Self::Maxwell(MaxwellDamper::yd2())
+    }
+
+    /// The spec's FSD yaw damper (c1 = 200, c2 = 800 kN·s/m, m = 15 kg, k = 15 kN/mm,
+    /// f_p = 2 Hz, switching delay 0.05 s).
+    pub fn fsd() -> Self {
+        Self::Fsd(FsdDamper::spec())
+    }
+
+    /// Number of continuous states (≤ [`MAX_STATES`]).
+    pub fn n_states(&self) -> usize {
+        match self {
+            Self::Maxwell(_) | Self::Hydraulic(_) => 1,
+            Self::Fsd(d) => d.n_states(),
+        }
+    }
+
+    /// Writes the initial continuous states (zero deflection and velocity: no force at rest).
+    pub fn initial_states(&self, states: &mut [f64]) {
+        states.iter_mut().for_each(|s| *s = 0.0);
+    }
+
+    /// The discrete state at start (valve position from the parameters' `start_closed`).
+    pub fn initial_discrete(&self) -> DamperDiscreteState {
+        let start_closed = match self {
+            Self::Maxwell(_) => true,
+            Self::Fsd(d) => d.params().start_closed,
+            Self::Hydraulic(d) => d.params().frequency_valve.is_none_or(|v| v.start_closed),
+        };
+        DamperDiscreteState {
+            scale_factor: if start_closed { 1.0 } else { 0.0 },
+            trigger: TriggerMemory::new(start_closed),
+        }
+    }
+
+    /// Force (N, positive in tension) for elongation `x` (m) and elongation rate (m/s), and the
+    /// derivatives of the continuous states written into `dstates` (same length as `states`,
+    /// [`Damper::n_states`]). Pure, no allocation.
+    #[inline]
+    pub fn evaluate(
+        &self,
+        elongation_m: f64,
+        elongation_rate_mps: f64,
+        states: &[f64],
+        discrete: &DamperDiscreteState,
+        dstates: &mut [f64],
+    ) -> f64 {
+        // Series elements: the force depends on the elongation and the internal states only;
+        // the elongation rate enters through the integration of the states.
+        let _ = elongation_rate_mps;
+        match self {
+            Self::Maxwell(d) => {
+                let (force_n, rate) = d.force_and_rate(elongation_m, states[0]);
+                dstates[0] = rate;
+                force_n
+            }
+            Self::Fsd(d) => d.evaluate(elongation_m, states, discrete.scale_factor, dstates),
+            Self::Hydraulic(d) => {
+                let laws = d.laws_at(discrete.scale_factor);
+                let (force_n, rate) = d.force_and_rate(elongation_m, states[0], &laws);
+                dstates[0] = rate;
+                force_n
+            }
+        }
+    }
+
+    /// Updates the discrete state after an accepted step of `dt_s` (s) that ended at time `t_s`
+    /// (s) with elongation `x` (m), elongation rate (m/s) and continuous states `states`.
+    pub fn advance(
+        &self,
+        discrete: &mut DamperDiscreteState,
+        t_s: f64,
+        dt_s: f64,
+        elongation_m: f64,
+        elongation_rate_mps: f64,
+        states: &[f64],
+    ) {
+        let _ = (t_s, states); // the valve judges the stroke, not the internal states
+        match self {
+            Self::Maxwell(_) => {}
+            Self::Fsd(d) => d.advance_valve(
+                &mut discrete.trigger,
+                &mut discrete.scale_factor,
+                dt_s,
+                elongation_m,
+                elongation_rate_mps,
+            ),
+            Self::Hydraulic(d) => {
+                if let Some(valve) = d.params().frequency_valve {
+                    fsd::advance_scale_factor(
+                        &mut discrete.trigger,
+                        &mut discrete.scale_factor,
+                        &valve.trigger,
+                        valve.cutoff_frequency_hz,
+                        valve.switching_delay_s,
+                        dt_s,
+                        elongation_m,
+                        elongation_rate_mps,
+                    );
+                }
+            }
+        }
+    }
+
+    /// Valve position for dampers with a frequency valve, `None` otherwise.
+    pub fn valve_state(&self, discrete: &DamperDiscreteState) -> Option<ValveState> {
+        let has_valve = match self {
+            Self::Maxwell(_) => false,
+            Self::Fsd(_) => true,
+            Self::Hydraulic(d) => d.params().frequency_valve.is_some(),
+        };
+        has_valve
+            .then(|| FsdDamper::valve_state(discrete.scale_factor, discrete.trigger.high_frequency))
+    }
+
+    /// Magnitude of the fastest internal pole (1/s), for the choice of an explicit time step.
+    pub fn fastest_rate_per_s(&self) -> f64 {
+        match self {
+            Self::Maxwell(d) => d.fastest_rate_per_s(),
+            Self::Fsd(d) => d.fastest_rate_per_s(),
+            Self::Hydraulic(d) => d.fastest_rate_per_s(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,337 @@
+//! The frequency-selective (FSD) yaw damper: a Maxwell damper whose damping switches between a
+//! low value `c1` below the cut-off frequency `f_p` and a high value `c2` above it.
+//!
+//! # The four modules (spec §4)
+//! 1. **Damping modules** c1 (valve open) and c2 (valve closed), linear laws.
+//! 2. **Frequency valve**: open (flow through the bypass, low damping) or closed (high damping).
+//! 3. **Trigger** ([`super::fsd_trigger`]): estimates the frequency of the stroke and decides
+//!    "low" or "high" with a hysteresis band around `f_p`.
+//! 4. **Scale factor** `s ∈ [0, 1]`: the damping is `c(s) = c1 + s·(c2 - c1)`; `s` moves toward
+//!    the trigger's decision (1 for "high", 0 for "low") at the rate `1/switching_delay`, so a
+//!    complete switch takes exactly the switching delay and a reversal half-way starts from where
+//!    the valve is (no jump of the force).
+//!
+//! # State machine (discrete state, updated once per accepted time step)
+//! Two coupled machines. The **trigger decision** `D ∈ {low, high}` (see
+//! [`super::fsd_trigger`]): `low → high` when the estimated frequency exceeds `f_p·(1 + h)`,
+//! `high → low` when it falls below `f_p·(1 - h)`, held otherwise, during the warm-up and while
+//! the stroke is below the minimum rms. The **valve**, with the scale factor `s` as its timer:
+//!
+//! | valve state | scale factor | event | next state |
+//! |---|---|---|---|
+//! | `Open` | `s = 0` | `D` becomes high | `Closing` |
+//! | `Closing` | `s` rises by `dt/delay` per step | `s` reaches 1 | `Closed` |
+//! | `Closing` | | `D` becomes low | `Opening`, from the current `s` |
+//! | `Closed` | `s = 1` | `D` becomes low | `Opening` |
+//! | `Opening` | `s` falls by `dt/delay` per step | `s` reaches 0 | `Open` |
+//! | `Opening` | | `D` becomes high | `Closing`, from the current `s` |
+//!
+//! - Start: `Closed` (s = 1, high damping c2, the damping of YD2: the state that keeps the bogie
+//!   stable while nothing is known about the motion) unless [`FsdParams::start_closed`] is false;
+//!   the trigger holds its start decision during its warm-up (0.75 s) and while the stroke is too
+//!   small to judge, so a low-frequency stroke opens the valve about 0.8 s after the start.
+//! - Timer: `s` changes by `dt/switching_delay_s` per step, so `Open → Closed` takes the delay.
+//! - The scale factor is piecewise constant over a time step (the integrator's force stays a pure
+//!   function of its states within the step).
+//!
+//! # Continuous model
+//! The equivalent mass `m` sits at the node between the series spring `k` and the damper:
+//! `F = k·(x - x_d)`, `m·ẍ_d = F - c(s)·ẋ_d`; states `[x_d, ẋ_d]`. With `m = 0` the node is
+//! massless and the state is `[x_d]` with `ẋ_d = F/c(s)`. The closed form for a sine at ω is the
+//! complex stiffness `k·(iωc - mω²)/(k - mω² + iωc)`. The mass adds a fast pole near `-c2/m`
+//! (5.3e4 1/s for the spec values): explicit integrators need `dt < 2.78·m/c2 ≈ 5e-5 s`
+//! ([`FsdDamper::fastest_rate_per_s`]).
+
+use super::fsd_trigger::{FsdTriggerParams, TriggerMemory};
+use crate::error::{check_non_negative, check_positive, Result};
+use crate::LocoError;
+
+/// Parameters of an [`FsdDamper`] (SI units). The default is the spec's FSD (§4).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FsdParams {
+    /// Equivalent damping at low frequency, valve open, c1 (N·s/m), > 0.
+    pub low_damping_nspm: f64,
+    /// Equivalent damping at high frequency, valve closed, c2 (N·s/m), > c1.
+    pub high_damping_nspm: f64,
+    /// Equivalent mass at the spring-damper node m (kg), >= 0 (0: massless Maxwell element).
+    pub equivalent_mass_kg: f64,
+    /// Equivalent (series) stiffness k (N/m), > 0.
+    pub equivalent_stiffness_npm: f64,
+    /// Cut-off frequency of the frequency valve f_p (Hz), > 0.
+    pub cutoff_frequency_hz: f64,
+    /// Time for a complete switch of the valve (s), > 0.
+    pub switching_delay_s: f64,
+    /// Valve state at start: true = closed (high damping).
+    pub start_closed: bool,
+    /// Tuning of the trigger.
+    pub trigger: FsdTriggerParams,
+}
+
+impl Default for FsdParams {
+    /// Spec §4: c1 = 200 kN·s/m, c2 = 800 kN·s/m, m = 15 kg, k = 15 kN/mm, f_p = 2 Hz, 0.05 s.
+    fn default() -> Self {
+        Self {
+            low_damping_nspm: 200e3,
+            high_damping_nspm: 800e3,
+            equivalent_mass_kg: 15.0,
+            equivalent_stiffness_npm: 15e6,
+            cutoff_frequency_hz: 2.0,
+            switching_delay_s: 0.05,
+            start_closed: true,
+            trigger: FsdTriggerParams::default(),
+        }
+    }
+}
+
+/// Position of the frequency valve, derived from the scale factor and the trigger's decision.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ValveState {
+    /// s = 0: low damping c1.
+    Open,
+    /// 0 < s < 1 and moving toward 1.
+    Closing,
+    /// s = 1: high damping c2.
+    Closed,
+    /// 0 < s < 1 and moving toward 0.
+    Opening,
+}
+
+/// A validated FSD damper; see the module documentation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FsdDamper {
+    params: FsdParams,
+}
+
+impl FsdDamper {
+    /// Validates: c1, c2, k, f_p, delay finite and > 0, m finite and >= 0, c1 < c2, trigger.
+    pub fn new(params: FsdParams) -> Result<Self> {
+        check_positive("low_damping_nspm", params.low_damping_nspm)?;
+        check_positive("high_damping_nspm", params.high_damping_nspm)?;
+        if params.low_damping_nspm >= params.high_damping_nspm {
+            return Err(LocoError::param(
+                "low_damping_nspm",
+                format!(
+                    "c1 must be < c2 (high_damping_nspm = {}), got {}",
+                    params.high_damping_nspm, params.low_damping_nspm
+                ),
+            ));
+        }
+        check_non_negative("equivalent_mass_kg", params.equivalent_mass_kg)?;
+        check_positive("equivalent_stiffness_npm", params.equivalent_stiffness_npm)?;
+        check_positive("cutoff_frequency_hz", params.cutoff_frequency_hz)?;
+        check_positive("switching_delay_s", params.switching_delay_s)?;
+        params.trigger.validate()?;
+        Ok(Self { params })
+    }
+
+    /// The spec's FSD yaw damper (§4).
+    pub fn spec() -> Self {
+        Self {
+            params: FsdParams::default(),
+        }
+    }
+
+    /// The validated parameters.
+    pub fn params(&self) -> &FsdParams {
+        &self.params
+    }
+
+    /// Number of continuous states: 2 (`x_d`, `ẋ_d`) with a mass, 1 (`x_d`) without.
+    pub fn n_states(&self) -> usize {
+        if self.params.equivalent_mass_kg > 0.0 {
+            2
+        } else {
+            1
+        }
+    }
+
+    /// Damping (N·s/m) at scale factor `s` (0 = open, 1 = closed).
+    #[inline]
+    pub fn damping_at(&self, scale_factor: f64) -> f64 {
+        let p = &self.params;
+        p.low_damping_nspm + scale_factor * (p.high_damping_nspm - p.low_damping_nspm)
+    }
+
+    /// Force (N, tension positive) and state derivatives for elongation `x` (m).
+    #[inline]
+    pub fn evaluate(
+        &self,
+        elongation_m: f64,
+        states: &[f64],
+        scale_factor: f64,
+        dstates: &mut [f64],
+    ) -> f64 {
+        let p = &self.params;
+        let force_n = p.equivalent_stiffness_npm * (elongation_m - states[0]);
+        let damping = self.damping_at(scale_factor);
+        if p.equivalent_mass_kg > 0.0 {
+            dstates[0] = states[1];
+            dstates[1] = (force_n - damping * states[1]) / p.equivalent_mass_kg;
+        } else {
+            dstates[0] = force_n / damping;
+        }
+        force_n
+    }
+
+    /// Moves the scale factor toward the trigger's decision after a step of `dt_s` (s), then
+    /// lets the trigger judge the stroke at the end of the step.
+    pub fn advance_valve(
+        &self,
+        trigger: &mut TriggerMemory,
+        scale_factor: &mut f64,
+        dt_s: f64,
+        elongation_m: f64,
+        elongation_rate_mps: f64,
+    ) {
+        let p = &self.params;
+        advance_scale_factor(
+            trigger,
+            scale_factor,
+            &p.trigger,
+            p.cutoff_frequency_hz,
+            p.switching_delay_s,
+            dt_s,
+            elongation_m,
+            elongation_rate_mps,
+        );
+    }
+
+    /// Valve position from the scale factor and the trigger's decision.
+    pub fn valve_state(scale_factor: f64, high_frequency: bool) -> ValveState {
+        if scale_factor <= 0.0 {
+            if high_frequency {
+                ValveState::Closing
+            } else {
+                ValveState::Open
+            }
+        } else if scale_factor >= 1.0 {
+            if high_frequency {
+                ValveState::Closed
+            } else {
+                ValveState::Opening
+            }
+        } else if high_frequency {
+            ValveState::Closing
+        } else {
+            ValveState::Opening
+        }
+    }
+
+    /// Fastest decay rate of the internal states (1/s), for the choice of an explicit step.
+    pub fn fastest_rate_per_s(&self) -> f64 {
+        let p = &self.params;
+        let (m, k) = (p.equivalent_mass_kg, p.equivalent_stiffness_npm);
+        if m > 0.0 {
+            let c = p.high_damping_nspm;
+            let discriminant = c * c - 4.0 * m * k;
+            if discriminant >= 0.0 {
+                (c + discriminant.sqrt()) / (2.0 * m)
+            } else {
+                (k / m).sqrt()
+            }
+        } else {
+            k / p.low_damping_nspm
+        }
+    }
+}
+
+/// The valve and scale-factor update shared by the FSD and the hydraulic frequency valve: the
+/// valve moves during the step that just ended toward the decision in force during it, then the
+/// trigger judges the stroke; a decision taken at the end of step n acts from step n + 1 on, and
+/// a complete switch ends exactly `switching_delay_s` after the decision.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn advance_scale_factor(
+    trigger: &mut TriggerMemory,
+    scale_factor: &mut f64,
+    trigger_params: &FsdTriggerParams,
+    cutoff_frequency_hz: f64,
+    switching_delay_s: f64,
+    dt_s: f64,
+    elongation_m: f64,
+    elongation_rate_mps: f64,
+) {
+    let target = if trigger.high_frequency { 1.0 } else { 0.0 };
+    let step = dt_s.max(0.0) / switching_delay_s;
+    *scale_factor = if target > *scale_factor {
+        (*scale_factor + step).min(target)
+    } else {
+        (*scale_factor - step).max(target)
+    };
+    trigger.update(
+        trigger_params,
+        cutoff_frequency_hz,
+        dt_s,
+        elongation_m,
+        elongation_rate_mps,
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validation_names_the_field() {
+        let bad = FsdParams {
+            low_damping_nspm: 900e3,
+            ..FsdParams::default()
+        };
+        let err = FsdDamper::new(bad).unwrap_err().to_string();
+        assert!(
+            err.contains("low_damping_nspm") && err.contains("c1 must be < c2"),
+            "{err}"
+        );
+        let bad = FsdParams {
+            cutoff_frequency_hz: 0.0,
+            ..FsdParams::default()
+        };
+        assert!(FsdDamper::new(bad)
+            .unwrap_err()
+            .to_string()
+            .contains("cutoff_frequency_hz"));
+        let bad = FsdParams {
+            equivalent_mass_kg: -1.0,
+            ..FsdParams::default()
+        };
+        assert!(FsdDamper::new(bad)
+            .unwrap_err()
+            .to_string()
+            .contains("equivalent_mass_kg"));
+        assert!(FsdDamper::new(FsdParams::default()).is_ok());
+    }
+
+    #[test]
+    fn valve_states_follow_scale_factor_and_decision() {
+        assert_eq!(FsdDamper::valve_state(0.0, false), ValveState::Open);
+        assert_eq!(FsdDamper::valve_state(1.0, true), ValveState::Closed);
+        assert_eq!(FsdDamper::valve_state(0.4, true), ValveState::Closing);
+        assert_eq!(FsdDamper::valve_state(0.4, false), ValveState::Opening);
+    }
+
+    #[test]
+    fn reversal_half_way_starts_from_the_current_position() {
+        let params = FsdTriggerParams::default();
+        let mut trigger = TriggerMemory::new(true);
+        let mut scale = 0.0;
+        let dt = 1e-3;
+        // Closing toward a "high" decision for half the delay: s = 0.5, no jump.
+        for _ in 0..25 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+        }
+        assert!((scale - 0.5).abs() < 1e-12, "{scale}");
+        assert_eq!(FsdDamper::valve_state(scale, true), ValveState::Closing);
+        // The trigger turns to "low": the valve goes back from 0.5 at the same rate.
+        trigger.high_frequency = false;
+        let mut previous = scale;
+        for step in 0..30 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+            assert!(
+                (previous - scale - dt / 0.05).abs() < 1e-12 || scale == 0.0,
+                "{step}"
+            );
+            previous = scale;
+        }
+        assert_eq!(scale, 0.0);
+        assert_eq!(FsdDamper::valve_state(scale, false), ValveState::Open);
+    }
+}

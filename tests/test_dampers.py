@@ -1,0 +1,156 @@
+"""loco.dampers: constructors, validation, presets, the bench against closed forms, the FSD
+regimes, and the ``loco damper-bench`` command."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import loco
+from loco import dampers
+from loco.cli import main
+
+
+def test_presets_have_the_spec_values() -> None:
+    assert dampers.YD1.kind == "maxwell"
+    assert dampers.YD1.parameters()["damping"] == 200e3
+    assert dampers.YD2.parameters()["damping"] == 800e3
+    assert dampers.YD2.parameters()["series_stiffness"] == 22.5e6
+    p = dampers.FSD.parameters()
+    assert (p["low_damping"], p["high_damping"]) == (200e3, 800e3)
+    assert (p["equivalent_mass"], p["equivalent_stiffness"]) == (15.0, 15e6)
+    assert (p["cutoff_frequency"], p["switching_delay"]) == (2.0, 0.05)
+    assert dampers.FSD.n_states == 2
+    assert dampers.fsd(equivalent_mass=0.0).n_states == 1
+
+
+@pytest.mark.parametrize(
+    ("build", "field"),
+    [
+        (lambda: dampers.maxwell(-1.0, 22.5e6), "damping"),
+        (lambda: dampers.maxwell(200e3, math.nan), "series_stiffness"),
+        (lambda: dampers.maxwell(200e3, 22.5e6, knee_velocity=0.02), "knee_velocity"),
+        (lambda: dampers.fsd(low_damping=900e3), "low_damping"),
+        (lambda: dampers.fsd(cutoff_frequency=0.0), "cutoff_frequency"),
+        (lambda: dampers.fsd(switching_delay=-0.1), "switching_delay"),
+        (lambda: dampers.hydraulic(rod_area=1.0), "rod_area"),
+        (lambda: dampers.hydraulic(open_area_ratio=0.5), "open_area_ratio"),
+    ],
+)
+def test_bad_parameters_raise_a_named_parameter_error(build: object, field: str) -> None:
+    with pytest.raises(loco.ParameterError, match=field):
+        build()  # type: ignore[operator]
+
+
+@pytest.mark.parametrize("frequency", [0.5, 1.0, 4.0])
+@pytest.mark.parametrize("damper", [dampers.YD1, dampers.YD2], ids=["YD1", "YD2"])
+def test_maxwell_bench_matches_closed_form(damper: dampers.Damper, frequency: float) -> None:
+    amplitude = 3e-3
+    result = dampers.bench(damper, frequency, amplitude, cycles=6)
+    p = damper.parameters()
+    c, k = float(p["damping"] or 0), float(p["series_stiffness"] or 0)
+    ratio = 2 * np.pi * frequency * c / k
+    c_closed = c / (1 + ratio**2)
+    k_closed = k * ratio**2 / (1 + ratio**2)
+    assert result.equivalent_damping == pytest.approx(c_closed, rel=0.01)
+    assert result.equivalent_stiffness == pytest.approx(k_closed, rel=0.01)
+    energy = np.pi * c_closed * 2 * np.pi * frequency * amplitude**2
+    assert result.energy_per_cycle == pytest.approx(energy, rel=0.01)
+    assert dampers.maxwell_closed_form(c, k, frequency) == pytest.approx((c_closed, k_closed))
+
+
+def test_bench_returns_consistent_arrays() -> None:
+    result = dampers.bench(dampers.YD1, 2.0, 1e-3, cycles=3, samples_per_cycle=100)
+    n = 3 * 100 + 1
+    for array in (result.time, result.displacement, result.velocity, result.force):
+        assert array.shape == (n,) and array.dtype == np.float64
+    assert result.time[-1] == pytest.approx(1.5)
+    assert np.allclose(result.displacement, 1e-3 * np.sin(2 * np.pi * 2.0 * result.time))
+    assert np.all(result.scale_factor == 1.0)  # no valve
+    assert np.all(np.isnan(result.estimated_frequency))
+
+
+@pytest.mark.parametrize(("frequency", "damping"), [(0.5, 200e3), (4.0, 800e3)])
+def test_fsd_low_below_and_high_above_cutoff(frequency: float, damping: float) -> None:
+    result = dampers.bench(dampers.FSD, frequency, 3e-3, cycles=10)
+    c_closed, k_closed = dampers.maxwell_closed_form(damping, 15e6, frequency, 15.0)
+    assert result.equivalent_damping == pytest.approx(c_closed, rel=0.01)
+    assert result.equivalent_stiffness == pytest.approx(k_closed, rel=0.01)
+    assert result.scale_factor[-1] == (1.0 if frequency > 2.0 else 0.0)
+
+
+def test_fsd_sweep_switches_near_the_cutoff() -> None:
+    duration = 40.0
+    result = dampers.bench_sweep(dampers.FSD, 0.5, 4.0, 2e-3, duration)
+    after = result.time > 2.0
+    # The valve opened after the warm-up at low frequency, then closes once on the way up.
+    moving = np.flatnonzero(after & (result.scale_factor > 0.0))
+    f_switch = 0.5 + 3.5 * result.time[moving[0]] / duration
+    assert 2.0 < f_switch < 2.4  # f_p (1 + 10 %) plus the trigger's averaging lag
+    assert result.scale_factor[-1] == 1.0
+
+
+def test_two_tone_cases() -> None:
+    t = np.arange(0.0, 20.0, 1e-3)
+    stroke = 3e-3 * np.sin(2 * np.pi * t) + 0.3e-3 * np.sin(2 * np.pi * 5.0 * t)
+    open_valve = dampers.bench_recorded(dampers.FSD, t, stroke)
+    assert np.all(open_valve.scale_factor[t > 2.0] == 0.0)
+    drift = 1e-3 * np.sin(2 * np.pi * 5.0 * t) + 3e-3 * np.sin(2 * np.pi * 0.3 * t)
+    closed_valve = dampers.bench_recorded(dampers.FSD, t, drift)
+    assert np.all(closed_valve.scale_factor == 1.0)
+
+
+def test_hydraulic_default_and_fsd_variant() -> None:
+    plain = dampers.hydraulic()
+    assert plain.kind == "hydraulic"
+    low = dampers.bench(plain, 1.0, 5e-3, cycles=6)
+    assert 5e5 < (low.equivalent_damping or 0) < 7.5e5
+    frequency_selective = dampers.hydraulic(open_area_ratio=2.0)
+    # Below f_p the valve opens: all flow areas doubled, the turbulent force divided by four.
+    soft = dampers.bench(frequency_selective, 0.5, 5e-3, cycles=6)
+    plain_soft = dampers.bench(plain, 0.5, 5e-3, cycles=6)
+    assert soft.scale_factor[-1] == 0.0
+    assert (soft.equivalent_damping or 0) < 0.4 * (plain_soft.equivalent_damping or 0)
+    # Above f_p it stays closed and is the plain damper (up to the finer integration step that
+    # the open valve's faster pole imposes).
+    hard = dampers.bench(frequency_selective, 4.0, 2e-3, cycles=6)
+    plain_hard = dampers.bench(plain, 4.0, 2e-3, cycles=6)
+    assert np.all(hard.scale_factor == 1.0)
+    assert hard.equivalent_damping == pytest.approx(plain_hard.equivalent_damping, rel=1e-5)
+
+
+def test_bench_rejects_bad_input() -> None:
+    with pytest.raises(loco.ParameterError, match="frequency_hz"):
+        dampers.bench(dampers.YD1, -1.0, 1e-3)
+    with pytest.raises(loco.ParameterError, match="cycles"):
+        dampers.bench(dampers.YD1, 1.0, 1e-3, cycles=-2)
+    with pytest.raises(loco.ParameterError, match="cycles"):
+        dampers.bench(dampers.YD1, 1.0, 1e-3, cycles=2, equivalent_cycles=3)
+    with pytest.raises(loco.ParameterError, match="time_s"):
+        dampers.bench_recorded(dampers.YD1, [0.0, 1.0, 1.0], [0.0, 0.0, 0.0])
+
+
+def test_damper_bench_command(tmp_path: Path) -> None:
+    assert main(["damper-bench", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "damper_bench.png").stat().st_size > 10_000
+    parameters = json.loads((tmp_path / "damper_bench_parameters.json").read_text())
+    assert parameters["loco_version"] == loco.__version__
+    assert set(parameters["dampers"]) == {"YD1", "YD2", "FSD"}
+    with open(tmp_path / "damper_bench_summary.csv") as f:
+        assert f.readline().startswith(f"# loco {loco.__version__}")
+        rows = list(csv.DictReader(f))
+    assert {(r["damper"], float(r["frequency_hz"])) for r in rows} == {
+        (d, f) for d in ("YD1", "YD2", "FSD") for f in (1.0, 4.0)
+    }
+    for row in rows:
+        measured = float(row["equivalent_damping_nspm"])
+        assert measured == pytest.approx(float(row["closed_form_damping_nspm"]), rel=0.01)
+    with open(tmp_path / "damper_bench_loops.csv") as f:
+        f.readline()
+        loops = list(csv.DictReader(f))
+    assert {r["damper"] for r in loops} == {"YD1", "YD2", "FSD"}
