@@ -52,7 +52,14 @@ impl Side {
     ) -> Result<Self> {
         let wheel_offset = wheelset.taping_line_half_spacing();
         let (t0, t1) = wheel.y_range();
-        let n = ((t1 - t0) / params.wheel_sample_spacing).ceil() as usize + 1;
+        let samples = ((t1 - t0) / params.wheel_sample_spacing).ceil();
+        if samples > 1e6 {
+            return Err(LocoError::param(
+                "wheel_sample_spacing",
+                format!("gives {samples} samples across the wheel profile (at most 1e6)"),
+            ));
+        }
+        let n = samples as usize + 1;
         let mut t = Vec::with_capacity(n);
         let mut big_u = Vec::with_capacity(n);
         let mut big_z = Vec::with_capacity(n);
