@@ -24,6 +24,14 @@
 //! This is the frame of the EN 15302 reference files (`RUIC519A.dat`, `SUIC519A.dat`, mm) and of
 //! processed SIMPACK profiles with the z axis flipped (SIMPACK uses z down); the loaders convert.
 //!
+//! EN 15302 reference files (criogenox data, checked against the points): wheels `RUIC519*` have
+//! the flange back at y = −70 mm and the taping line at the origin (`flange_back_offset` 0.070).
+//! The rail `SUIC519A` is **already inclined** and given in the frame of the centred wheel: its
+//! first point (−32.5, −14) mm is the gauge point, 14 mm below z = 0, while the head's highest
+//! point is at z = +0.49 mm. To reproduce that set-up use `rail_inclination = 0` and
+//! `gauge_height = 0.014 + max(z)` (the gauge point then lands on the file's first point) with
+//! gauge 1.435 m and back-to-back 1.360 m (1.43516 m in the standard's E1–E9 cases).
+//!
 //! # Interpolant
 //!
 //! A natural cubic spline in `y` through the points ([`CubicSpline`]): C2, so the contact angle
