@@ -1,9 +1,36 @@
 //! Wheel-rail contact: profiles, contact geometry, equivalent conicity, Hertz and creep forces.
+//!
+//! - [`profile`]: the profile type and its frame; [`profile_builder`]: lines and tangent arcs;
+//!   [`profile_io`]: text and SIMPACK loaders.
+//! - [`geometry`]: the rigid contact search of a wheelset on a track; [`table`]: contact tables
+//!   for the time loop; [`builtin`]: the registry of built-in profiles.
+//! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables: normal and creep forces.
 
+pub mod builtin;
 pub mod creepage;
 pub mod elliptic;
 pub mod fastsim;
 pub mod fastsim_table;
+pub mod geometry;
 pub mod hertz;
 pub mod hertz_table;
 pub mod kalker;
+pub mod profile;
+pub mod profile_builder;
+pub mod profile_io;
+pub mod profile_simpack;
+pub mod setup;
+mod side;
+mod spline;
+pub mod table;
+
+pub use builtin::{builtin_names, builtin_profile};
+pub use geometry::{
+    ContactGeometry, ContactPoint, ContactWorkspace, WheelContact, WheelsetContact,
+};
+pub use profile::{Profile, ProfileKind, MIN_PROFILE_POINTS};
+pub use profile_builder::{ProfileBuilder, Segment};
+pub use profile_io::load_profile;
+pub use setup::{ContactSearchParams, TrackSetup, WheelsetSetup, LEFT, RIGHT};
+pub use spline::SplineValue;
+pub use table::{rolling_radius_difference, ContactTable, ContactTableParams};
