@@ -6,9 +6,9 @@ Each section belongs to one binding file of ``crates/loco-py/src``; keep them in
 from typing import final
 
 import numpy as _np
-from numpy.typing import NDArray as _NDArray
 import numpy as np
 import numpy.typing as npt
+from numpy.typing import NDArray as _NDArray
 
 __version__: str
 __all__ = ["__version__"]
