@@ -200,6 +200,10 @@ def test_hertz_and_kalker_bad_input() -> None:
         hertz(math.nan, 0.46, 0.3, 0.3)
     with pytest.raises(ParameterError, match="r_wheel_transverse"):
         hertz(1e5, 0.46, -0.1, 0.3)
+    with pytest.raises(ParameterError, match="`E`"):
+        hertz(1e5, 0.46, 0.3, 0.3, E=-1.0)
+    with pytest.raises(ParameterError, match="`nu`"):
+        hertz(1e5, 0.46, 0.3, 0.3, nu=0.5)
     with pytest.raises(ParameterError, match="a_over_b"):
         kalker_coefficients(-1.0)
 

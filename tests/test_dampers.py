@@ -127,6 +127,10 @@ def test_hydraulic_default_and_fsd_variant() -> None:
 def test_bench_rejects_bad_input() -> None:
     with pytest.raises(loco.ParameterError, match="frequency_hz"):
         dampers.bench(dampers.YD1, -1.0, 1e-3)
+    with pytest.raises(loco.ParameterError, match="cycles"):
+        dampers.bench(dampers.YD1, 1.0, 1e-3, cycles=-2)
+    with pytest.raises(loco.ParameterError, match="cycles"):
+        dampers.bench(dampers.YD1, 1.0, 1e-3, cycles=2, equivalent_cycles=3)
     with pytest.raises(loco.ParameterError, match="time_s"):
         dampers.bench_recorded(dampers.YD1, [0.0, 1.0, 1.0], [0.0, 0.0, 0.0])
 

@@ -5,9 +5,9 @@ Each section belongs to one binding file of ``crates/loco-py/src``; keep them in
 
 from typing import final
 
+import numpy as _np
 import numpy as np
 import numpy.typing as npt
-import numpy as _np
 from numpy.typing import NDArray as _NDArray
 
 __version__: str
@@ -62,6 +62,7 @@ class Profile:
     def height(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
     def slope(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
     def curvature(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def smoothed(self, length: float) -> Profile: ...
 
 def load_profile_file(
     path: str, kind: str | None = None, drop_backtracking: bool = False

@@ -5,8 +5,9 @@ Frames follow ``docs/CONVENTIONS.md`` (x forward, y left, z up). The creep force
 rail exerts on the wheel, opposing the creepages (Kalker's sign convention):
 ``Fx = -G·a·b·C11·ξ`` at small creepage.
 
-Bad input (NaN, non-positive sizes or loads, ``mu < 0``, a grid smaller than 1) raises
-:class:`loco.ParameterError` naming the argument.
+Bad input (NaN, non-positive semi-axes or radii, negative loads, ``mu < 0``, a grid smaller
+than 1) raises :class:`loco.ParameterError` naming the argument; a zero normal force (contact
+lost) gives zero creep forces.
 """
 
 from __future__ import annotations
@@ -144,7 +145,11 @@ def fastsim(
     bound: Literal["parabolic", "elliptic"] = "parabolic",
     kalker_factor: float = 1.0,
 ) -> CreepForces:
-    """Creep forces by Kalker's FASTSIM on an ``grid = (nx, ny)`` discretisation."""
+    """Creep forces by Kalker's FASTSIM on a ``grid = (nx, ny)`` discretisation.
+
+    ``nx`` elements per strip along the rolling direction, ``ny`` strips; rolling in +x (the
+    leading edge is at x = +a). ``kalker_factor`` divides the flexibilities (1: Kalker's values).
+    """
     nx, ny = grid
     return CreepForces(
         *_loco.fastsim(

@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from loco import _loco
-from loco._loco import Damper
+from loco._loco import Damper, ParameterError
 
 __all__ = [
     "FSD",
@@ -176,6 +176,13 @@ class BenchResult:
     """Energy dissipated over the whole run (J)."""
 
 
+def _check_count(name: str, value: int, minimum: int) -> int:
+    """Counts are checked here: a negative Python int would not convert to the core's usize."""
+    if value < minimum:
+        raise ParameterError(f"invalid parameter `{name}`: must be >= {minimum}, got {value}")
+    return value
+
+
 def _result(raw: _BenchTuple) -> BenchResult:
     time, x, v, force, scale, f_est, equivalent, energy = raw
     c_eq, k_eq, e_cycle = equivalent if equivalent is not None else (None, None, None)
@@ -204,10 +211,10 @@ def bench(
             damper,
             frequency,
             amplitude,
-            cycles,
-            steps_per_cycle,
-            samples_per_cycle,
-            equivalent_cycles,
+            _check_count("cycles", cycles, 1),
+            _check_count("steps_per_cycle", steps_per_cycle, 8),
+            _check_count("samples_per_cycle", samples_per_cycle, 4),
+            _check_count("equivalent_cycles", equivalent_cycles, 1),
         )
     )
 
@@ -230,8 +237,8 @@ def bench_sweep(
             end_frequency,
             amplitude,
             duration,
-            steps_per_cycle,
-            samples_per_cycle,
+            _check_count("steps_per_cycle", steps_per_cycle, 8),
+            _check_count("samples_per_cycle", samples_per_cycle, 4),
         )
     )
 

@@ -265,7 +265,8 @@ pub fn fastsim(
 ) -> Result<CreepForces> {
     check_positive("a", a)?;
     check_positive("b", b)?;
-    check_positive("normal_force", normal_force)?;
+    // N = 0 (contact lost) is valid and gives zero forces.
+    check_non_negative("normal_force", normal_force)?;
     check_non_negative("mu", mu)?;
     check_finite("creepage_long", creepages.longitudinal)?;
     check_finite("creepage_lat", creepages.lateral)?;
@@ -374,6 +375,10 @@ mod tests {
         let c = creep(0.0, 0.0, 0.0);
         let err = fastsim(0.0, B, N, 0.3, &c, p).unwrap_err();
         assert!(err.to_string().contains("`a`"));
+        assert_eq!(
+            fastsim(A, B, 0.0, 0.3, &creep(1e-3, 0.0, 0.0), p).unwrap(),
+            CreepForces::default()
+        );
         let err = fastsim(A, B, N, -0.1, &c, p).unwrap_err();
         assert!(err.to_string().contains("mu"));
         let err = fastsim(A, B, N, 0.3, &c, FastsimParams { nx: 0, ..p }).unwrap_err();

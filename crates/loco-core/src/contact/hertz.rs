@@ -54,13 +54,13 @@ impl Default for ElasticMaterial {
 }
 
 impl ElasticMaterial {
-    /// Checks that E > 0 and 0 ≤ ν < 0.5.
+    /// Checks that E > 0 and 0 ≤ ν < 0.5 (errors name `E` and `nu`, the symbols of the Python API).
     pub fn validate(&self) -> Result<()> {
-        check_positive("youngs_modulus", self.youngs_modulus)?;
-        check_non_negative("poisson_ratio", self.poisson_ratio)?;
+        check_positive("E", self.youngs_modulus)?;
+        check_non_negative("nu", self.poisson_ratio)?;
         if self.poisson_ratio >= 0.5 {
             return Err(LocoError::param(
-                "poisson_ratio",
+                "nu",
                 format!("must be < 0.5, got {}", self.poisson_ratio),
             ));
         }

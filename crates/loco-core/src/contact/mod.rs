@@ -18,7 +18,9 @@ pub mod kalker;
 pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;
+pub mod profile_simpack;
 pub mod setup;
+mod side;
 mod spline;
 pub mod table;
 

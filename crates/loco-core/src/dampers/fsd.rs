@@ -12,21 +12,24 @@
 //!    the valve is (no jump of the force).
 //!
 //! # State machine (discrete state, updated once per accepted time step)
-//! ```text
-//!                 trigger "high"                    s reaches 1
-//!   ┌────────┐ ─────────────────▶ ┌─────────┐ ───────────────────▶ ┌────────┐
-//!   │  Open  │                    │ Closing │                      │ Closed │
-//!   │ s = 0  │ ◀───────────────── │ s ↑     │ ◀──┐            ┌─── │ s = 1  │
-//!   └────────┘   s reaches 0      └─────────┘    │ "high"     │    └────────┘
-//!        ▲                             │ "low"   │            │ "low"   │
-//!        │ s reaches 0            ┌─────────┐ ───┘            │         │
-//!        └─────────────────────── │ Opening │ ◀───────────────┘─────────┘
-//!                                 │ s ↓     │
-//!                                 └─────────┘
-//! ```
-//! - Start: `Closed` (s = 1, high damping = the conventional YD2 behaviour, the fail-safe state
-//!   for running stability) unless [`FsdParams::start_closed`] is false; the trigger holds its
-//!   start decision during its warm-up and while the stroke is too small to judge.
+//! Two coupled machines. The **trigger decision** `D ∈ {low, high}` (see
+//! [`super::fsd_trigger`]): `low → high` when the estimated frequency exceeds `f_p·(1 + h)`,
+//! `high → low` when it falls below `f_p·(1 - h)`, held otherwise, during the warm-up and while
+//! the stroke is below the minimum rms. The **valve**, with the scale factor `s` as its timer:
+//!
+//! | valve state | scale factor | event | next state |
+//! |---|---|---|---|
+//! | `Open` | `s = 0` | `D` becomes high | `Closing` |
+//! | `Closing` | `s` rises by `dt/delay` per step | `s` reaches 1 | `Closed` |
+//! | `Closing` | | `D` becomes low | `Opening`, from the current `s` |
+//! | `Closed` | `s = 1` | `D` becomes low | `Opening` |
+//! | `Opening` | `s` falls by `dt/delay` per step | `s` reaches 0 | `Open` |
+//! | `Opening` | | `D` becomes high | `Closing`, from the current `s` |
+//!
+//! - Start: `Closed` (s = 1, high damping c2, the damping of YD2: the state that keeps the bogie
+//!   stable while nothing is known about the motion) unless [`FsdParams::start_closed`] is false;
+//!   the trigger holds its start decision during its warm-up (0.75 s) and while the stroke is too
+//!   small to judge, so a low-frequency stroke opens the valve about 0.8 s after the start.
 //! - Timer: `s` changes by `dt/switching_delay_s` per step, so `Open → Closed` takes the delay.
 //! - The scale factor is piecewise constant over a time step (the integrator's force stays a pure
 //!   function of its states within the step).
@@ -303,5 +306,32 @@ mod tests {
         assert_eq!(FsdDamper::valve_state(1.0, true), ValveState::Closed);
         assert_eq!(FsdDamper::valve_state(0.4, true), ValveState::Closing);
         assert_eq!(FsdDamper::valve_state(0.4, false), ValveState::Opening);
+    }
+
+    #[test]
+    fn reversal_half_way_starts_from_the_current_position() {
+        let params = FsdTriggerParams::default();
+        let mut trigger = TriggerMemory::new(true);
+        let mut scale = 0.0;
+        let dt = 1e-3;
+        // Closing toward a "high" decision for half the delay: s = 0.5, no jump.
+        for _ in 0..25 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+        }
+        assert!((scale - 0.5).abs() < 1e-12, "{scale}");
+        assert_eq!(FsdDamper::valve_state(scale, true), ValveState::Closing);
+        // The trigger turns to "low": the valve goes back from 0.5 at the same rate.
+        trigger.high_frequency = false;
+        let mut previous = scale;
+        for step in 0..30 {
+            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
+            assert!(
+                (previous - scale - dt / 0.05).abs() < 1e-12 || scale == 0.0,
+                "{step}"
+            );
+            previous = scale;
+        }
+        assert_eq!(scale, 0.0);
+        assert_eq!(FsdDamper::valve_state(scale, false), ValveState::Open);
     }
 }

@@ -11,9 +11,11 @@
 //!
 //! - `x` and `v` are the elongation and elongation rate passed through the same second-order
 //!   high-pass (two first-order stages, corner `highpass_corner_hz`), which removes the static
-//!   length and slow drift (a 0.3 Hz drift is attenuated in power by 0.12 at the default 0.5 Hz
-//!   corner, 1 Hz by 0.94, so a 5 Hz motion keeps the valve closed under a drift up to about
-//!   6 times its amplitude). A common filter on `x` and `v` leaves a single tone's ratio exact.
+//!   length and slow drift (at the default 0.5 Hz corner a 0.3 Hz drift keeps 0.11 of its power,
+//!   a 1 Hz stroke 0.94). A common filter on `x` and `v` leaves a single tone's ratio exact.
+//! - Limits of the two-tone cases (analysis above, checked in the tests): a 5 Hz ripple up to a
+//!   quarter of a 1 Hz stroke's amplitude keeps the valve open; a 5 Hz motion keeps it closed on
+//!   a 0.3 Hz drift up to six times its amplitude.
 //! - `<·>` is a second-order low-pass (two first-order stages, time constant
 //!   `averaging_time_s` each) of the squared signals. The squares of `x` and `v` oscillate in
 //!   antiphase at twice the excitation frequency; the two stages attenuate that ripple by
@@ -132,7 +134,11 @@ impl TriggerMemory {
             self.stroke_lowpass_m = [elongation_m, 0.0];
             self.started = true;
         }
-        if dt_s.is_nan() || dt_s <= 0.0 || !elongation_m.is_finite() || !elongation_rate_mps.is_finite() {
+        if dt_s.is_nan()
+            || dt_s <= 0.0
+            || !elongation_m.is_finite()
+            || !elongation_rate_mps.is_finite()
+        {
             return;
         }
         self.elapsed_s += dt_s;

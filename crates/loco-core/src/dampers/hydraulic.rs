@@ -34,7 +34,17 @@
 //! (Merritt §2.6; handbooks give 0.6–0.7); ISO VG 32 hydraulic oil, `ρ = 870 kg/m³`,
 //! `ν = 32 mm²/s` at 40 °C (ISO 3448 defines the grade by this viscosity); series stiffness
 //! 22.5 kN/mm (spec). This gives `b ≈ 2.5e7 N·s²/m²`: 25 kN at 0.031 m/s (1 Hz, 5 mm) and an
-//! equivalent damping `8·b·A·ω/(3π) ≈ 670 kN·s/m` there, of the order of YD2.
+//! orifice-alone equivalent damping `8·b·A·ω/(3π) ≈ 670 kN·s/m` there, of the order of YD2.
+//!
+//! Equivalent damping of the default damper with its joint on the bench (kN·s/m; it grows with
+//! amplitude and frequency, as a quadratic law must, until the series stiffness takes over):
+//!
+//! | frequency | 2 mm | 5 mm |
+//! |---|---|---|
+//! | 0.5 Hz | 138 | 338 |
+//! | 1 Hz | 268 | 619 |
+//! | 2 Hz | 453 | 767 |
+//! | 4 Hz | 430 | 402 |
 
 use super::fsd_trigger::FsdTriggerParams;
 use crate::error::{check_positive, Result};

@@ -44,7 +44,7 @@
 //!
 //! Submodules: [`maxwell`] (linear or blow-off law), [`fsd`] (the FSD and its state machine),
 //! [`fsd_trigger`] (frequency estimation and hysteresis), [`hydraulic`] (orifice model, optional
-//! frequency valve), [`bench`] (sine, sweep or recorded excitation, equivalent values).
+//! frequency valve), [`bench`](mod@bench) (sine, sweep or recorded excitation, equivalent values).
 
 pub mod bench;
 pub mod fsd;

@@ -241,6 +241,31 @@ fn fast_motion_with_slow_drift_keeps_the_valve_closed() {
 }
 
 #[test]
+fn two_tone_limits_of_the_trigger_documentation() {
+    // The limits stated in `fsd_trigger`: ripple up to a quarter of the stroke, drift up to six
+    // times the fast motion.
+    let two_tone = |slow_hz: f64, slow_m: f64, fast_m: f64| {
+        move |t: f64| {
+            (
+                slow_m * (TAU * slow_hz * t).sin() + fast_m * (TAU * 5.0 * t).sin(),
+                slow_m * TAU * slow_hz * (TAU * slow_hz * t).cos()
+                    + fast_m * TAU * 5.0 * (TAU * 5.0 * t).cos(),
+            )
+        }
+    };
+    let (s, _) = valve_after_warmup(two_tone(1.0, 3e-3, 0.25 * 3e-3), true);
+    assert!(
+        s.iter().all(|&s| s == 0.0),
+        "ripple of a quarter closed the valve"
+    );
+    let (s, _) = valve_after_warmup(two_tone(0.3, 6e-3, 1e-3), false);
+    assert!(
+        s.iter().all(|&s| s == 1.0),
+        "drift of six times opened the valve"
+    );
+}
+
+#[test]
 fn multi_tone_noise_on_a_stroke_does_not_chatter() {
     // 1.2 Hz stroke of 4 mm plus twelve tones from 4 to 20 Hz of 0.05 mm each with spread phases
     // (a broadband ripple whose velocity is 80 % of the stroke's): the valve stays open.
@@ -319,4 +344,19 @@ fn bench_rejects_bad_input() {
     };
     let err = run(&damper, &bad, &BenchOptions::default()).unwrap_err();
     assert!(err.to_string().contains("time_s"));
+    // A microgram equivalent mass makes a pole far too fast for a 100 s run: refused, no hang.
+    let stiff = Damper::Fsd(
+        FsdDamper::new(FsdParams {
+            equivalent_mass_kg: 1e-9,
+            ..FsdParams::default()
+        })
+        .unwrap(),
+    );
+    let long = BenchMotion::Sine {
+        frequency_hz: 0.1,
+        amplitude_m: 1e-3,
+        cycles: 10,
+    };
+    let err = run(&stiff, &long, &BenchOptions::default()).unwrap_err();
+    assert!(err.to_string().contains("motion"), "{err}");
 }
