@@ -25,3 +25,4 @@ pub mod run;
 pub mod simulation;
 pub mod statics;
 pub mod wheel_rail;
+pub mod scenario;

@@ -18,7 +18,7 @@ use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
 use crate::contact::creepage::{creepages, BodyVelocity, ContactFrame, Side};
 use crate::contact::fastsim::Fastsim;
 use crate::contact::geometry::WheelsetContact;
-use crate::contact::hertz::HertzCoefficients;
+use crate::contact::hertz_table::HertzShapeTable;
 use crate::contact::kalker::CreepForces;
 use crate::contact::table::ContactTable;
 use crate::error::{LocoError, Result};
@@ -56,6 +56,8 @@ pub struct WheelRail {
     table: ContactTable,
     fastsim: Fastsim,
     settings: WheelRailSettings,
+    /// Hertz shape functions, tabulated: curvatures change at every evaluation.
+    hertz: HertzShapeTable,
     /// Rolling radius of the centred wheelset (mean of both wheels at y = 0), m: free rolling at
     /// speed V turns the wheelset at V / this, so a centred wheelset has no longitudinal creep.
     centred_radius: f64,
@@ -77,6 +79,7 @@ impl WheelRail {
             table,
             fastsim,
             settings,
+            hertz: HertzShapeTable::new(),
             centred_radius,
         }
     }
@@ -161,7 +164,7 @@ impl WheelRail {
                 let approach = interference * cg;
                 let approach_rate =
                     (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
-                let hertz = HertzCoefficients::from_curvatures(
+                let hertz = self.hertz.coefficients(
                     0.5 / point.rolling_radius,
                     // A conformal point (flange root on the gauge corner) has a lateral relative
                     // curvature near zero; a floor of 1/(20 m) keeps the ellipse finite there.

@@ -1,0 +1,235 @@
+//! A run of the locomotive as an engineer states it: which wheel and rail, how fast, how far, on
+//! which track, with which yaw damper; and the function that simulates it.
+//!
+//! The study's scenarios (SPEC §2) are JM3 treads in three wear states on CN60 rail inclined 1:40:
+//! `S_low` thin flange (equivalent conicity 0.04), `S_norm` new wheel (0.10), `S_high` worn wheel
+//! (0.70).
+
+use super::parameters::ParameterSet;
+use super::run::{run, RunOutput, RunSettings};
+use super::simulation::VehicleSystem;
+use super::statics::static_equilibrium;
+use super::structure::VehicleStructure;
+use super::wheel_rail::{WheelRail, WheelRailSettings};
+use crate::contact::builtin::builtin_profile;
+use crate::contact::fastsim::{Fastsim, FastsimParams};
+use crate::contact::geometry::ContactGeometry;
+use crate::contact::profile::Profile;
+use crate::contact::setup::{ContactSearchParams, TrackSetup, WheelsetSetup};
+use crate::contact::table::{ContactTable, ContactTableParams};
+use crate::dampers::Damper;
+use crate::error::{check_positive, LocoError, Result};
+use crate::track::{synthesize, SynthesisParams, TrackIrregularity};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+
+/// Highest running speed the model accepts, m/s (400 km/h: well above the SS8's 240 km/h test
+/// speed; the contact tables and creep model are not meant for more).
+pub const MAX_SPEED: f64 = 400.0 / 3.6;
+
+/// Track distance before the vehicle's origin at t = 0, m: the rear wheelset starts on the track.
+const START_DISTANCE: f64 = 10.0;
+
+/// The wheel and rail of a study scenario (SPEC §2): (wheel, rail) built-in profile names.
+pub fn scenario_profiles(name: &str) -> Result<(&'static str, &'static str)> {
+    match name {
+        "S_low" => Ok(("jm3-thin-flange", "cn60")),
+        "S_norm" => Ok(("jm3-new", "cn60")),
+        "S_high" => Ok(("jm3-worn", "cn60")),
+        other => Err(LocoError::param(
+            "scenario",
+            format!("unknown scenario '{other}'; expected S_low, S_norm or S_high"),
+        )),
+    }
+}
+
+/// The track a run uses.
+#[derive(Debug, Clone)]
+pub enum TrackSpec {
+    /// Perfect straight track (no irregularity).
+    Perfect,
+    /// Irregularities synthesised from a spectrum (length is set from the run).
+    Synthetic(SynthesisParams),
+    /// A given (e.g. measured) irregularity.
+    Given(Arc<TrackIrregularity>),
+}
+
+/// Everything about a run except the vehicle's parameters.
+#[derive(Debug, Clone)]
+pub struct Scenario {
+    /// Wheel profile (used on both wheels of every wheelset).
+    pub wheel: Profile,
+    /// Rail profile (both rails).
+    pub rail: Profile,
+    /// Track set-up (gauge, gauge height, inclination).
+    pub track_setup: TrackSetup,
+    /// Running speed, m/s.
+    pub speed: f64,
+    /// Distance run, m (the simulated time is distance / speed).
+    pub distance: f64,
+    pub track: TrackSpec,
+    /// Yaw damper law; `None` keeps the parameter file's Maxwell yaw damper.
+    pub yaw_damper: Option<Damper>,
+    pub run: RunSettings,
+    pub fastsim: FastsimParams,
+    /// Lateral disturbance of every wheelset at t = 0, m (0: start from equilibrium).
+    pub initial_lateral_offset: f64,
+}
+
+impl Scenario {
+    /// A study scenario (`S_low`, `S_norm`, `S_high`) at `speed` (m/s) over `distance` (m) on a
+    /// track synthesised from the Chinese high-speed spectrum with `seed`.
+    pub fn study(name: &str, speed: f64, distance: f64, seed: u64) -> Result<Self> {
+        let (wheel, rail) = scenario_profiles(name)?;
+        Ok(Self {
+            wheel: builtin_profile(wheel)?,
+            rail: builtin_profile(rail)?,
+            track_setup: TrackSetup::default(),
+            speed,
+            distance,
+            track: TrackSpec::Synthetic(SynthesisParams {
+                seed,
+                ..SynthesisParams::default()
+            }),
+            yaw_damper: None,
+            run: RunSettings::default(),
+            fastsim: FastsimParams::default(),
+            initial_lateral_offset: 0.0,
+        })
+    }
+
+    /// Checks speed, distance and settings; errors name the field.
+    pub fn validate(&self) -> Result<()> {
+        check_positive("speed", self.speed)?;
+        if self.speed > MAX_SPEED {
+            return Err(LocoError::param(
+                "speed",
+                format!(
+                    "{:.1} km/h is beyond the model's range (max {:.0} km/h)",
+                    self.speed * 3.6,
+                    MAX_SPEED * 3.6
+                ),
+            ));
+        }
+        check_positive("distance", self.distance)?;
+        check_positive("step", self.run.step)?;
+        check_positive("output_rate", self.run.output_rate)?;
+        if !self.initial_lateral_offset.is_finite() || self.initial_lateral_offset.abs() > 0.01 {
+            return Err(LocoError::param(
+                "initial_lateral_offset",
+                format!("must be finite and within ±0.01 m, got {}", self.initial_lateral_offset),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Track length a run needs, m.
+    pub fn track_length(&self, structure: &VehicleStructure) -> f64 {
+        let front = structure.layout.wheelset_x[0];
+        START_DISTANCE + self.distance + front + 20.0
+    }
+}
+
+/// Builds the wheel-rail contact (contact table and FASTSIM) of a scenario for a vehicle.
+pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
+    let r0 = check_positive("track.wheel_rolling_radius", parameters.get("track.wheel_rolling_radius")?)?;
+    let half = check_positive(
+        "track.contact_point_half_distance",
+        parameters.get("track.contact_point_half_distance")?,
+    )?;
+    let wheelset = WheelsetSetup {
+        // Nominal contact points 2·half apart on the taping lines (SPEC §1: 1493 mm).
+        back_to_back: 2.0 * (half - WheelsetSetup::default().flange_back_offset),
+        nominal_radius: [r0, r0],
+        ..WheelsetSetup::default()
+    };
+    let geometry = ContactGeometry::new(
+        [&scenario.wheel, &scenario.wheel],
+        [&scenario.rail, &scenario.rail],
+        &scenario.track_setup,
+        &wheelset,
+        &ContactSearchParams::default(),
+    )?;
+    let table = ContactTable::build(&geometry, &ContactTableParams::default())?;
+    let e = check_positive("track.young_modulus", parameters.get("track.young_modulus")?)?;
+    let nu = parameters.get("track.poisson_ratio")?;
+    if !(0.0..0.5).contains(&nu) {
+        return Err(LocoError::param("track.poisson_ratio", format!("must be in [0, 0.5), got {nu}")));
+    }
+    let fastsim = Fastsim::new(FastsimParams {
+        poisson_ratio: nu,
+        shear_modulus: check_positive("track.shear_modulus", parameters.get("track.shear_modulus")?)?,
+        ..scenario.fastsim
+    })?;
+    Ok(WheelRail::new(
+        table,
+        fastsim,
+        WheelRailSettings {
+            friction: check_positive("track.wheel_rail_friction", parameters.get("track.wheel_rail_friction")?)?,
+            contact_modulus: e / (2.0 * (1.0 - nu * nu)),
+            normal_damping: crate::error::check_non_negative(
+                "contact.normal_contact_damping",
+                parameters.get("contact.normal_contact_damping")?,
+            )?,
+            nominal_radius: r0,
+        },
+    ))
+}
+
+/// Builds the track of a scenario (synthesised ones get the run's length).
+pub fn build_track(scenario: &Scenario, structure: &VehicleStructure) -> Result<TrackIrregularity> {
+    let length = scenario.track_length(structure);
+    match &scenario.track {
+        TrackSpec::Perfect => {
+            let n = (length / 0.5).ceil() as usize + 2;
+            let zeros = vec![0.0; n];
+            let values = [zeros.clone(), zeros.clone(), zeros.clone(), zeros];
+            TrackIrregularity::from_channels(0.5, &values, &values, 0.0, None)
+        }
+        TrackSpec::Synthetic(params) => synthesize(&SynthesisParams { length, ..*params }),
+        TrackSpec::Given(track) => {
+            track.check_covers(length)?;
+            Ok((**track).clone())
+        }
+    }
+}
+
+/// Simulates a scenario with prepared contact and track (batches share them across samples).
+pub fn simulate_prepared(
+    structure: Arc<VehicleStructure>,
+    wheel_rail: Arc<WheelRail>,
+    track: Arc<TrackIrregularity>,
+    scenario: &Scenario,
+    cancel: Option<&AtomicBool>,
+) -> Result<RunOutput> {
+    scenario.validate()?;
+    let mut system = VehicleSystem::new(
+        structure,
+        wheel_rail,
+        track,
+        scenario.speed,
+        START_DISTANCE,
+        scenario.yaw_damper.as_ref(),
+        scenario.run.step,
+    )?;
+    let mut y = static_equilibrium(&mut system)?;
+    if scenario.initial_lateral_offset != 0.0 {
+        for w in 0..super::layout::N_WHEELSETS {
+            y[super::layout::wheelset(w) + super::layout::Y] += scenario.initial_lateral_offset;
+        }
+    }
+    let settings = RunSettings {
+        duration: scenario.distance / scenario.speed,
+        ..scenario.run
+    };
+    run(&mut system, &mut y, &settings, cancel)
+}
+
+/// Simulates a scenario for a vehicle parameter set: builds the vehicle, contact and track.
+pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<RunOutput> {
+    scenario.validate()?;
+    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+    let track = Arc::new(build_track(scenario, &structure)?);
+    simulate_prepared(structure, wheel_rail, track, scenario, None)
+}
