@@ -3,6 +3,11 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
+from typing import final
+
+import numpy as np
+import numpy.typing as npt
+
 __version__: str
 __all__ = ["__version__"]
 
@@ -31,6 +36,66 @@ class DerailmentError(SimulationError): ...
 class InternalError(LocoError): ...
 
 # --- contact (contact.rs) -----------------------------------------------------------------------
+
+__all__ += [
+    "Profile",
+    "builtin_profile_named",
+    "builtin_profile_names",
+    "contact_geometry",
+    "load_profile_file",
+    "rolling_radius_difference",
+]
+
+@final
+class Profile:
+    def __new__(cls, name: str, kind: str, y: npt.ArrayLike, z: npt.ArrayLike) -> Profile: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def y(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def z(self) -> npt.NDArray[np.float64]: ...
+    def height(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def slope(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def curvature(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+
+def load_profile_file(
+    path: str, kind: str | None = None, drop_backtracking: bool = False
+) -> Profile: ...
+def builtin_profile_named(name: str) -> Profile: ...
+def builtin_profile_names() -> list[str]: ...
+def contact_geometry(
+    left_wheel: Profile,
+    right_wheel: Profile,
+    left_rail: Profile,
+    right_rail: Profile,
+    ys: npt.ArrayLike,
+    *,
+    gauge: float,
+    gauge_height: float,
+    rail_inclination: float,
+    back_to_back: float,
+    flange_back_offset: float,
+    nominal_radius_left: float,
+    nominal_radius_right: float,
+) -> dict[str, npt.NDArray[np.float64]]: ...
+def rolling_radius_difference(
+    left_wheel: Profile,
+    right_wheel: Profile,
+    left_rail: Profile,
+    right_rail: Profile,
+    ys: npt.ArrayLike,
+    *,
+    gauge: float,
+    gauge_height: float,
+    rail_inclination: float,
+    back_to_back: float,
+    flange_back_offset: float,
+    nominal_radius_left: float,
+    nominal_radius_right: float,
+) -> npt.NDArray[np.float64]: ...
 
 # --- track (track.rs) ---------------------------------------------------------------------------
 

@@ -1,8 +1,348 @@
-//! Bindings of `loco_core::contact`.
+//! Bindings of `loco_core::contact`: profiles (load, built-ins, evaluation) and the rigid contact
+//! geometry of a wheelset on a track.
 
+use crate::errors::run_detached;
+use loco_core::contact::{
+    builtin_names, builtin_profile, load_profile, rolling_radius_difference, ContactGeometry,
+    ContactPoint, ContactSearchParams, ContactWorkspace, Profile, ProfileKind, TrackSetup,
+    WheelsetSetup,
+};
+use loco_core::LocoError as CoreError;
+use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArrayLike1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::path::PathBuf;
+
+/// A wheel or rail profile (points in m, profile frame: y toward the field side, z up).
+#[pyclass(name = "Profile", module = "loco._loco", frozen)]
+pub struct PyProfile {
+    pub inner: Profile,
+}
+
+/// Copies a 1-D array-like of floats.
+fn to_vec(values: &PyArrayLike1<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> {
+    Ok(values.as_slice()?.to_vec())
+}
+
+#[pymethods]
+impl PyProfile {
+    /// A profile from points `y`, `z` in m; `kind` is 'wheel' or 'rail'.
+    #[new]
+    fn new(
+        py: Python<'_>,
+        name: String,
+        kind: String,
+        y: PyArrayLike1<'_, f64, AllowTypeChange>,
+        z: PyArrayLike1<'_, f64, AllowTypeChange>,
+    ) -> PyResult<Self> {
+        let (y, z) = (to_vec(&y)?, to_vec(&z)?);
+        let inner = run_detached(py, move || {
+            let kind = ProfileKind::parse("kind", &kind)?;
+            Profile::new(name, kind, &y, &z)
+        })?;
+        Ok(Self { inner })
+    }
+
+    /// The profile's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.inner.name().to_string()
+    }
+
+    /// 'wheel' or 'rail'.
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.inner.kind().as_str()
+    }
+
+    /// Lateral coordinates of the points, m.
+    #[getter]
+    fn y<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.inner.y().to_vec().into_pyarray(py)
+    }
+
+    /// Heights of the points, m (up).
+    #[getter]
+    fn z<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.inner.z().to_vec().into_pyarray(py)
+    }
+
+    /// Height z (m) at each lateral position `y` (m).
+    fn height<'py>(
+        &self,
+        py: Python<'py>,
+        y: PyArrayLike1<'py, f64, AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.map(py, y, |p, v| p.height(v))
+    }
+
+    /// Slope dz/dy at each lateral position `y` (m).
+    fn slope<'py>(
+        &self,
+        py: Python<'py>,
+        y: PyArrayLike1<'py, f64, AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.map(py, y, |p, v| p.slope(v))
+    }
+
+    /// Signed curvature (1/m, positive where the profile bends upward) at each `y` (m).
+    fn curvature<'py>(
+        &self,
+        py: Python<'py>,
+        y: PyArrayLike1<'py, f64, AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.map(py, y, |p, v| p.curvature(v))
+    }
+
+    fn __repr__(&self) -> String {
+        let (lo, hi) = self.inner.y_range();
+        format!(
+            "Profile(name={:?}, kind={:?}, points={}, y=[{:.4}, {:.4}] m)",
+            self.inner.name(),
+            self.inner.kind().as_str(),
+            self.inner.y().len(),
+            lo,
+            hi
+        )
+    }
+}
+
+impl PyProfile {
+    fn map<'py>(
+        &self,
+        py: Python<'py>,
+        y: PyArrayLike1<'py, f64, AllowTypeChange>,
+        f: fn(&Profile, f64) -> Result<f64, CoreError>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let y = to_vec(&y)?;
+        let profile = self.inner.clone();
+        let out: Vec<f64> = run_detached(py, move || y.iter().map(|&v| f(&profile, v)).collect())?;
+        Ok(out.into_pyarray(py))
+    }
+}
+
+/// Loads a profile file: SIMPACK `.prw`/`.prr`, or two-column text in mm (then `kind` is needed).
+#[pyfunction]
+#[pyo3(signature = (path, kind=None, drop_backtracking=false))]
+fn load_profile_file(
+    py: Python<'_>,
+    path: PathBuf,
+    kind: Option<String>,
+    drop_backtracking: bool,
+) -> PyResult<PyProfile> {
+    let inner = run_detached(py, move || {
+        let kind = kind.map(|k| ProfileKind::parse("kind", &k)).transpose()?;
+        load_profile(&path, kind, drop_backtracking)
+    })?;
+    Ok(PyProfile { inner })
+}
+
+/// The built-in profile `name`.
+#[pyfunction]
+fn builtin_profile_named(py: Python<'_>, name: String) -> PyResult<PyProfile> {
+    let inner = run_detached(py, move || builtin_profile(&name))?;
+    Ok(PyProfile { inner })
+}
+
+/// Names of the built-in profiles.
+#[pyfunction]
+fn builtin_profile_names() -> Vec<String> {
+    builtin_names().iter().map(|s| s.to_string()).collect()
+}
+
+/// Set-up of a wheelset on a track, copied from Python keyword arguments.
+#[derive(Clone)]
+struct Setup {
+    wheels: [Profile; 2],
+    rails: [Profile; 2],
+    track: TrackSetup,
+    wheelset: WheelsetSetup,
+}
+
+impl Setup {
+    fn geometry(&self) -> Result<ContactGeometry, CoreError> {
+        ContactGeometry::new(
+            [&self.wheels[0], &self.wheels[1]],
+            [&self.rails[0], &self.rails[1]],
+            &self.track,
+            &self.wheelset,
+            &ContactSearchParams::default(),
+        )
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn setup(
+    left_wheel: &PyProfile,
+    right_wheel: &PyProfile,
+    left_rail: &PyProfile,
+    right_rail: &PyProfile,
+    gauge: f64,
+    gauge_height: f64,
+    rail_inclination: f64,
+    back_to_back: f64,
+    flange_back_offset: f64,
+    nominal_radius_left: f64,
+    nominal_radius_right: f64,
+) -> Setup {
+    Setup {
+        wheels: [left_wheel.inner.clone(), right_wheel.inner.clone()],
+        rails: [left_rail.inner.clone(), right_rail.inner.clone()],
+        track: TrackSetup {
+            gauge,
+            gauge_height,
+            rail_inclination,
+        },
+        wheelset: WheelsetSetup {
+            back_to_back,
+            flange_back_offset,
+            nominal_radius: [nominal_radius_left, nominal_radius_right],
+        },
+    }
+}
+
+/// Names of the per-point quantities, in the order of [`point_values`].
+const POINT_FIELDS: [&str; 9] = [
+    "gap",
+    "lateral",
+    "vertical",
+    "rolling_radius",
+    "contact_angle",
+    "wheel_curvature",
+    "rail_curvature",
+    "wheel_y",
+    "rail_y",
+];
+
+fn point_values(p: &ContactPoint) -> [f64; 9] {
+    [
+        p.gap,
+        p.lateral,
+        p.vertical,
+        p.rolling_radius,
+        p.contact_angle,
+        p.wheel_curvature,
+        p.rail_curvature,
+        p.wheel_y,
+        p.rail_y,
+    ]
+}
+
+/// Rigid contact geometry at each lateral displacement `ys` (m). Returns a dict of arrays:
+/// `roll`, `rise` of shape (n,), and each point quantity of shape (n, 2, 2) indexed
+/// [y, wheel (0 left, 1 right), slot (0 tread side, 1 flange side)], NaN where absent.
+#[pyfunction]
+#[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, ys, *, gauge, gauge_height,
+    rail_inclination, back_to_back, flange_back_offset, nominal_radius_left, nominal_radius_right))]
+#[allow(clippy::too_many_arguments)]
+fn contact_geometry<'py>(
+    py: Python<'py>,
+    left_wheel: PyRef<'py, PyProfile>,
+    right_wheel: PyRef<'py, PyProfile>,
+    left_rail: PyRef<'py, PyProfile>,
+    right_rail: PyRef<'py, PyProfile>,
+    ys: PyArrayLike1<'py, f64, AllowTypeChange>,
+    gauge: f64,
+    gauge_height: f64,
+    rail_inclination: f64,
+    back_to_back: f64,
+    flange_back_offset: f64,
+    nominal_radius_left: f64,
+    nominal_radius_right: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let ys = to_vec(&ys)?;
+    let s = setup(
+        &left_wheel,
+        &right_wheel,
+        &left_rail,
+        &right_rail,
+        gauge,
+        gauge_height,
+        rail_inclination,
+        back_to_back,
+        flange_back_offset,
+        nominal_radius_left,
+        nominal_radius_right,
+    );
+    let n = ys.len();
+    let (roll, rise, fields) = run_detached(py, move || {
+        let g = s.geometry()?;
+        let mut ws = ContactWorkspace::default();
+        let mut roll = vec![0.0; n];
+        let mut rise = vec![0.0; n];
+        let mut fields = vec![vec![f64::NAN; n * 4]; POINT_FIELDS.len()];
+        let mut guess = g.roll_at_centre();
+        for (i, &y) in ys.iter().enumerate() {
+            let c = g.solve_with(y, guess, &mut ws)?;
+            guess = c.roll;
+            roll[i] = c.roll;
+            rise[i] = c.rise;
+            for (w, wheel) in c.wheels.iter().enumerate() {
+                for (k, point) in wheel.points.iter().enumerate() {
+                    if let Some(p) = point {
+                        for (f, v) in point_values(p).into_iter().enumerate() {
+                            fields[f][i * 4 + w * 2 + k] = v;
+                        }
+                    }
+                }
+            }
+        }
+        Ok((roll, rise, fields))
+    })?;
+    let out = PyDict::new(py);
+    out.set_item("roll", roll.into_pyarray(py))?;
+    out.set_item("rise", rise.into_pyarray(py))?;
+    for (name, values) in POINT_FIELDS.iter().zip(fields) {
+        out.set_item(*name, values.into_pyarray(py).reshape([n, 2, 2])?)?;
+    }
+    Ok(out)
+}
+
+/// Rolling radius difference r_left − r_right (m) of the touching points at each `ys` (m).
+#[pyfunction(name = "rolling_radius_difference")]
+#[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, ys, *, gauge, gauge_height,
+    rail_inclination, back_to_back, flange_back_offset, nominal_radius_left, nominal_radius_right))]
+#[allow(clippy::too_many_arguments)]
+fn py_rolling_radius_difference<'py>(
+    py: Python<'py>,
+    left_wheel: PyRef<'py, PyProfile>,
+    right_wheel: PyRef<'py, PyProfile>,
+    left_rail: PyRef<'py, PyProfile>,
+    right_rail: PyRef<'py, PyProfile>,
+    ys: PyArrayLike1<'py, f64, AllowTypeChange>,
+    gauge: f64,
+    gauge_height: f64,
+    rail_inclination: f64,
+    back_to_back: f64,
+    flange_back_offset: f64,
+    nominal_radius_left: f64,
+    nominal_radius_right: f64,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let ys = to_vec(&ys)?;
+    let s = setup(
+        &left_wheel,
+        &right_wheel,
+        &left_rail,
+        &right_rail,
+        gauge,
+        gauge_height,
+        rail_inclination,
+        back_to_back,
+        flange_back_offset,
+        nominal_radius_left,
+        nominal_radius_right,
+    );
+    let dr = run_detached(py, move || rolling_radius_difference(&s.geometry()?, &ys))?;
+    Ok(dr.into_pyarray(py))
+}
 
 /// Adds this file's functions and classes to the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyProfile>()?;
+    m.add_function(wrap_pyfunction!(load_profile_file, m)?)?;
+    m.add_function(wrap_pyfunction!(builtin_profile_named, m)?)?;
+    m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_geometry, m)?)?;
+    m.add_function(wrap_pyfunction!(py_rolling_radius_difference, m)?)?;
     Ok(())
 }

@@ -1,0 +1,200 @@
+"""Wheel-rail contact: the rigid contact geometry of a wheelset on a track.
+
+:func:`geometry` solves, for each lateral displacement ``y`` of the wheelset (m, positive to the
+left), the roll and rise at which both wheels touch their rails, and returns per wheel up to two
+contact points (tread side and flange side, the second with its vertical gap).
+:func:`rolling_radius_difference` returns Δr = r_left − r_right for equivalent conicity.
+
+Track set-up keywords (SI units): ``gauge`` (m, measured ``gauge_height`` below the rail top),
+``inclination`` (rad, rail cant toward the track centre; 0 for already canted rail profiles),
+``back_to_back`` or its synonym ``flange_back_spacing`` (m, between the wheels' inner faces),
+``flange_back_offset`` (m, from a wheel's inner face to its taping line) and ``nominal_radius``
+(m, one value or a (left, right) pair). Defaults are the study's: 1435 mm gauge at 16 mm, 1:40,
+back-to-back 1353 mm, 70 mm, 625 mm.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from loco import _loco
+from loco._loco import Profile
+
+__all__ = ["ContactGeometry", "geometry", "rolling_radius_difference"]
+
+_FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class ContactGeometry:
+    """Rigid contact geometry at lateral displacements ``y``.
+
+    ``roll`` (rad, positive lifting the left wheel) and ``rise`` (m, of the wheelset centre from
+    its centred pose) have shape (n,). Every other field has shape (n, 2, 2), indexed
+    ``[i, wheel, slot]`` with wheel 0 left and 1 right, slot 0 the field-side (tread) point and
+    slot 1 the gauge-side (flange) point when the gap has two minima; NaN where a slot is empty.
+    Signs and frames follow ``loco_core::contact::ContactPoint``: ``gap`` vertical (m, 0 where
+    touching), ``lateral`` and ``vertical`` relative to the wheelset centre in track axes (m),
+    ``contact_angle`` positive when the rail pushes the wheel toward the track centre (rad),
+    curvatures positive for convex surfaces (1/m), ``wheel_y`` and ``rail_y`` positions on the
+    profiles (m).
+    """
+
+    y: _FloatArray
+    roll: _FloatArray
+    rise: _FloatArray
+    gap: _FloatArray
+    lateral: _FloatArray
+    vertical: _FloatArray
+    rolling_radius: _FloatArray
+    contact_angle: _FloatArray
+    wheel_curvature: _FloatArray
+    rail_curvature: _FloatArray
+    wheel_y: _FloatArray
+    rail_y: _FloatArray
+
+    def touching(self, field: str) -> _FloatArray:
+        """``field`` at the touching point (smallest gap) of each wheel, shape (n, 2)."""
+        values: _FloatArray = getattr(self, field)
+        gap = np.where(np.isnan(self.gap), np.inf, self.gap)
+        slot = np.argmin(gap, axis=2)
+        return np.take_along_axis(values, slot[:, :, None], axis=2)[:, :, 0]
+
+
+def _setup(
+    wheel: Profile,
+    rail: Profile,
+    right_wheel: Profile | None,
+    right_rail: Profile | None,
+    gauge: float,
+    gauge_height: float,
+    inclination: float,
+    back_to_back: float | None,
+    flange_back_spacing: float | None,
+    flange_back_offset: float,
+    nominal_radius: float | tuple[float, float],
+) -> tuple[tuple[Profile, Profile, Profile, Profile], dict[str, float]]:
+    if back_to_back is not None and flange_back_spacing is not None:
+        raise _loco.ParameterError("give back_to_back or flange_back_spacing, not both")
+    spacing = back_to_back if back_to_back is not None else flange_back_spacing
+    if isinstance(nominal_radius, tuple):
+        r_left, r_right = nominal_radius
+    else:
+        r_left = r_right = nominal_radius
+    profiles = (
+        wheel,
+        right_wheel if right_wheel is not None else wheel,
+        rail,
+        right_rail if right_rail is not None else rail,
+    )
+    kwargs = {
+        "gauge": float(gauge),
+        "gauge_height": float(gauge_height),
+        "rail_inclination": float(inclination),
+        "back_to_back": float(spacing if spacing is not None else 1.353),
+        "flange_back_offset": float(flange_back_offset),
+        "nominal_radius_left": float(r_left),
+        "nominal_radius_right": float(r_right),
+    }
+    return profiles, kwargs
+
+
+def geometry(
+    wheel: Profile,
+    rail: Profile,
+    y: npt.ArrayLike,
+    *,
+    right_wheel: Profile | None = None,
+    right_rail: Profile | None = None,
+    gauge: float = 1.435,
+    gauge_height: float = 0.016,
+    inclination: float = math.atan(1.0 / 40.0),
+    back_to_back: float | None = None,
+    flange_back_spacing: float | None = None,
+    flange_back_offset: float = 0.070,
+    nominal_radius: float | tuple[float, float] = 0.625,
+) -> ContactGeometry:
+    """Rigid contact geometry for the lateral displacements ``y`` (m, array-like).
+
+    ``wheel`` and ``rail`` are the left profiles; the right ones are the same mirrored unless
+    ``right_wheel`` / ``right_rail`` are given (also as left-side profiles).
+    """
+    ys = np.atleast_1d(np.asarray(y, dtype=np.float64))
+    profiles, kwargs = _setup(
+        wheel,
+        rail,
+        right_wheel,
+        right_rail,
+        gauge,
+        gauge_height,
+        inclination,
+        back_to_back,
+        flange_back_spacing,
+        flange_back_offset,
+        nominal_radius,
+    )
+    out = _loco.contact_geometry(
+        profiles[0],
+        profiles[1],
+        profiles[2],
+        profiles[3],
+        ys,
+        gauge=kwargs["gauge"],
+        gauge_height=kwargs["gauge_height"],
+        rail_inclination=kwargs["rail_inclination"],
+        back_to_back=kwargs["back_to_back"],
+        flange_back_offset=kwargs["flange_back_offset"],
+        nominal_radius_left=kwargs["nominal_radius_left"],
+        nominal_radius_right=kwargs["nominal_radius_right"],
+    )
+    return ContactGeometry(y=ys, **out)
+
+
+def rolling_radius_difference(
+    wheel: Profile,
+    rail: Profile,
+    y: npt.ArrayLike,
+    *,
+    right_wheel: Profile | None = None,
+    right_rail: Profile | None = None,
+    gauge: float = 1.435,
+    gauge_height: float = 0.016,
+    inclination: float = math.atan(1.0 / 40.0),
+    back_to_back: float | None = None,
+    flange_back_spacing: float | None = None,
+    flange_back_offset: float = 0.070,
+    nominal_radius: float | tuple[float, float] = 0.625,
+) -> _FloatArray:
+    """Δr = r_left − r_right (m) of the touching points at each lateral displacement ``y`` (m)."""
+    ys = np.atleast_1d(np.asarray(y, dtype=np.float64))
+    profiles, kwargs = _setup(
+        wheel,
+        rail,
+        right_wheel,
+        right_rail,
+        gauge,
+        gauge_height,
+        inclination,
+        back_to_back,
+        flange_back_spacing,
+        flange_back_offset,
+        nominal_radius,
+    )
+    return _loco.rolling_radius_difference(
+        profiles[0],
+        profiles[1],
+        profiles[2],
+        profiles[3],
+        ys,
+        gauge=kwargs["gauge"],
+        gauge_height=kwargs["gauge_height"],
+        rail_inclination=kwargs["rail_inclination"],
+        back_to_back=kwargs["back_to_back"],
+        flange_back_offset=kwargs["flange_back_offset"],
+        nominal_radius_left=kwargs["nominal_radius_left"],
+        nominal_radius_right=kwargs["nominal_radius_right"],
+    )

@@ -1,0 +1,41 @@
+"""Wheel and rail profiles: loading files, built-in profiles, evaluation.
+
+Profiles are in the profile frame documented in ``loco_core::contact::profile``: points in m,
+``y`` lateral toward the field side (the flange / gauge corner on the low-``y`` side, as for a
+left wheel and rail), ``z`` up; a wheel's origin is its taping line. Every method of
+:class:`Profile` takes and returns SI units.
+
+Files: SIMPACK ``.prw`` (wheel) and ``.prr`` (rail) profiles, or two-column text files with y and z
+in mm (``#`` and ``%`` start comments), such as the EN 15302 reference profiles.
+"""
+
+from __future__ import annotations
+
+import os
+
+from loco._loco import Profile, builtin_profile_named, builtin_profile_names, load_profile_file
+
+__all__ = ["Profile", "builtin", "builtin_names", "load"]
+
+
+def load(
+    path: str | os.PathLike[str], kind: str | None = None, *, drop_backtracking: bool = False
+) -> Profile:
+    """Loads a profile file.
+
+    ``kind`` ('wheel' or 'rail') is required for text files and, when given for a SIMPACK file,
+    must match the file's type. ``drop_backtracking`` drops points of a text file that do not
+    advance in y instead of raising :class:`loco.ProfileFormatError`.
+    """
+    return load_profile_file(os.fspath(path), kind, drop_backtracking)
+
+
+def builtin(name: str) -> Profile:
+    """The built-in profile ``name`` (see :func:`builtin_names`); raises
+    :class:`loco.ParameterError` listing the available names for an unknown one."""
+    return builtin_profile_named(name)
+
+
+def builtin_names() -> list[str]:
+    """Names accepted by :func:`builtin`."""
+    return builtin_profile_names()

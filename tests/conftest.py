@@ -1,0 +1,32 @@
+"""Shared pytest fixtures: the reference data of ``shared/data`` (never copied into the repo)."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+
+def find_shared_data() -> Path | None:
+    """``$LOCO_SHARED_DATA`` if set, else the first ``shared/data`` directory next to this
+    repository or one of its ancestors (``<root>/main`` or ``<root>/wt/<name>`` with the data at
+    ``<root>/shared/data``); None when absent."""
+    env = os.environ.get("LOCO_SHARED_DATA")
+    if env:
+        path = Path(env)
+        return path if path.is_dir() else None
+    for parent in Path(__file__).resolve().parents:
+        candidate = parent / "shared" / "data"
+        if candidate.is_dir():
+            return candidate
+    return None
+
+
+@pytest.fixture(scope="session")
+def shared_data() -> Path:
+    """The reference-data directory; skips the test with the reason when it is absent."""
+    path = find_shared_data()
+    if path is None:
+        pytest.skip("reference data not found: set LOCO_SHARED_DATA or provide ../shared/data")
+    return path

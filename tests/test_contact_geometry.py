@@ -1,0 +1,98 @@
+"""Contact geometry from Python: symmetry, conical wheel on a knife edge, S1002/UIC60."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import loco
+from loco import contact, profiles
+
+
+def knife_rail(rho: float = 5e-4, alpha: float = 1.2) -> profiles.Profile:
+    """A rail with a sharp apex (radius ``rho``) at y = 0 between flanks at ±alpha."""
+    t = np.linspace(-alpha, alpha, 801)
+    arc_y, arc_z = rho * np.sin(t), rho * (np.cos(t) - 1)
+    flank = np.linspace(0.0, 0.02, 201)[1:]
+    y = np.concatenate(
+        [arc_y[0] - flank[::-1] * math.cos(alpha), arc_y, arc_y[-1] + flank * math.cos(alpha)]
+    )
+    z = np.concatenate(
+        [arc_z[0] - flank[::-1] * math.sin(alpha), arc_z, arc_z[-1] - flank * math.sin(alpha)]
+    )
+    return profiles.Profile("knife", "rail", y, z)
+
+
+def test_cone_on_knife_edges_matches_the_analytical_rolling_radius_difference() -> None:
+    lam, r0, b = 0.05, 0.46, 0.75
+    t = np.linspace(-0.04, 0.04, 801)
+    cone = profiles.Profile("cone", "wheel", t, lam * t)
+    rho, alpha, depth = 5e-4, 1.2, 0.014
+    to_gauge = rho * math.sin(alpha) + (depth - rho * (1 - math.cos(alpha))) / math.tan(alpha)
+    ys = np.array([-0.004, -0.001, 0.002, 0.005])
+    dr = contact.rolling_radius_difference(
+        cone,
+        knife_rail(rho, alpha),
+        ys,
+        gauge=2 * (b - to_gauge),
+        gauge_height=depth,
+        inclination=0.0,
+        back_to_back=1.36,
+        nominal_radius=r0,
+    )
+    # Δr = 2λy to first order; the roll φ = Δr/(2b) moves the contact by r0·φ on the cone.
+    np.testing.assert_allclose(dr, 2 * lam * ys / (1 - lam * r0 / b), rtol=2e-3)
+
+
+@pytest.fixture(scope="module")
+def s1002_uic60(shared_data: Path) -> tuple[profiles.Profile, profiles.Profile]:
+    return (
+        profiles.load(shared_data / "profiles" / "MBench_S1002_v3.prw"),
+        profiles.load(shared_data / "profiles" / "MBench_UIC60_v3.prr"),
+    )
+
+
+BENCHMARK_SETUP = {
+    "gauge": 1.435,
+    "gauge_height": 0.014,
+    "inclination": 0.0,
+    "back_to_back": 1.360,
+    "nominal_radius": 0.46,
+}
+
+
+def test_symmetric_wheelset_and_odd_rolling_radius_difference(
+    s1002_uic60: tuple[profiles.Profile, profiles.Profile],
+) -> None:
+    wheel, rail = s1002_uic60
+    ys = np.linspace(-0.009, 0.009, 37)
+    g = contact.geometry(wheel, rail, ys, **BENCHMARK_SETUP)  # type: ignore[arg-type]
+    centre = len(ys) // 2
+    assert g.roll[centre] == pytest.approx(0.0, abs=1e-12)
+    r = g.touching("rolling_radius")
+    assert r[centre, 0] == pytest.approx(r[centre, 1], abs=1e-12)
+    dr = r[:, 0] - r[:, 1]
+    np.testing.assert_allclose(dr, -dr[::-1], atol=1e-9)
+    assert g.gap.shape == (37, 2, 2)
+    # In flange contact (y = 9 mm, left wheel) the contact angle is steep and the wheelset rises.
+    assert g.touching("contact_angle")[-1, 0] > 0.8
+    assert g.rise[-1] > 0.005
+    direct = contact.rolling_radius_difference(wheel, rail, ys, **BENCHMARK_SETUP)  # type: ignore[arg-type]
+    np.testing.assert_allclose(direct, dr, atol=1e-12)
+
+
+def test_setup_errors_name_the_parameter(
+    s1002_uic60: tuple[profiles.Profile, profiles.Profile],
+) -> None:
+    wheel, rail = s1002_uic60
+    with pytest.raises(loco.ParameterError, match="gauge"):
+        contact.geometry(wheel, rail, [0.0], gauge=-1.0)
+    with pytest.raises(loco.ParameterError, match="not both"):
+        contact.geometry(wheel, rail, [0.0], back_to_back=1.36, flange_back_spacing=1.36)
+    with pytest.raises(loco.ParameterError, match="rail profile"):
+        contact.geometry(rail, rail, [0.0])
+    with pytest.raises(loco.ContactError):
+        contact.geometry(wheel, rail, [0.2], **BENCHMARK_SETUP)  # type: ignore[arg-type]
