@@ -85,6 +85,10 @@ impl DeltaR {
     /// S(y) = ∫ Δr dy from the first grid point (m²); `y` must lie in [`Self::range`].
     pub(crate) fn potential(&self, y: f64) -> f64 {
         let i = self.segment(y);
+        // At the grid points, the stored sums exactly (the turning-point search compares them).
+        if y == self.y[i + 1] {
+            return self.potential[i + 1];
+        }
         let t = y - self.y[i];
         self.potential[i] + self.dr[i] * t + 0.5 * self.slope(i) * t * t
     }
