@@ -9,9 +9,9 @@ use loco_core::LocoError as CoreError;
 use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArrayLike1};
 use pyo3::prelude::*;
 
-/// Copies a 1-D array-like of floats.
+/// Copies a 1-D array-like of floats (any strides).
 fn to_vec(values: &PyArrayLike1<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> {
-    Ok(values.as_slice()?.to_vec())
+    Ok(values.as_array().iter().copied().collect())
 }
 
 /// Equivalent conicity (-) at each amplitude in `amplitudes` (m) of the Δr(y) sampled as `dr`

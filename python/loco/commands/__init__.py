@@ -5,5 +5,6 @@ Each module listed here defines ``NAME`` (the subcommand), ``HELP`` (one line),
 """
 
 COMMAND_MODULES: list[str] = [
+    "contact_report",
     "info",
 ]
