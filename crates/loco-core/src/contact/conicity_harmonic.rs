@@ -83,11 +83,9 @@ fn swing_centre(delta_r: &DeltaR, amplitude: f64) -> Result<f64> {
         return Err(out_of_range());
     }
     let rising = f_hi > 0.0;
-    for _ in 0..200 {
+    // The centre to 1e-12 of the amplitude: far below any effect on tan γe.
+    while hi - lo > 1e-12 * amplitude {
         let mid = 0.5 * (lo + hi);
-        if mid == lo || mid == hi {
-            break;
-        }
         if (mean(mid) > 0.0) == rising {
             hi = mid;
         } else {
