@@ -88,7 +88,7 @@ def test_contact_report_writes_figures_and_table(tmp_path: Path) -> None:
     with (out / "conicity.csv").open() as f:
         rows = list(csv.DictReader(f))
     assert [r["wheel"] for r in rows] == [w for w, _ in SCENARIOS]
-    for row, (_, target) in zip(rows, SCENARIOS):
+    for row, (_, target) in zip(rows, SCENARIOS, strict=True):
         tan = float(row["tan_gamma_e_3mm"])
         assert abs(tan - target) <= min(0.05, 0.5 * target)
         assert row["loco_version"] == loco.__version__

@@ -17,11 +17,11 @@ from typing import Any
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-import loco  # noqa: E402
-from loco import conicity, contact, profiles  # noqa: E402
+import loco
+from loco import conicity, contact, profiles
 
 NAME = "contact-report"
 HELP = "contact report of the JM3 wheel states on CN60 rail (figures and conicity table)"
@@ -110,9 +110,7 @@ def run(args: argparse.Namespace) -> int:
         )
     ax_dr.set(title="Rolling radius difference", xlabel="y [mm]", ylabel="Δr [mm]")
     ax_ca.set(title="Contact angle, left wheel", xlabel="y [mm]", ylabel="contact angle [°]")
-    ax_c.set(
-        title="Equivalent conicity", xlabel="wheelset amplitude ŷ [mm]", ylabel="tan γe [-]"
-    )
+    ax_c.set(title="Equivalent conicity", xlabel="wheelset amplitude ŷ [mm]", ylabel="tan γe [-]")
     for ax in (ax_dr, ax_ca, ax_c):
         ax.grid(True)
         ax.legend(fontsize=8)
