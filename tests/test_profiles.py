@@ -81,3 +81,15 @@ def test_builtin_unknown_name_lists_the_available_ones() -> None:
     assert isinstance(profiles.builtin_names(), list)
     with pytest.raises(loco.ParameterError, match="available"):
         profiles.builtin("no-such-profile")
+
+
+def test_smoothing_recovers_the_curvature_of_a_rounded_crown() -> None:
+    y = np.arange(-222, 223) * 1.35e-4
+    z = np.round((np.sqrt(0.09 - y**2) - 0.3) * 1e8) * 1e-8  # rounded to 1e-5 mm
+    rough = profiles.Profile("crown", "rail", y, z)
+    smooth = rough.smoothed(2e-3)
+    probe = np.linspace(-0.01, 0.01, 201)
+    assert np.max(np.abs(rough.curvature(probe) + 1 / 0.3)) > 0.5
+    np.testing.assert_allclose(smooth.curvature(probe), -1 / 0.3, atol=0.1)
+    with pytest.raises(loco.ParameterError, match="smoothing"):
+        rough.smoothed(-1.0)

@@ -60,6 +60,7 @@ class Profile:
     def height(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
     def slope(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
     def curvature(self, y: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def smoothed(self, length: float) -> Profile: ...
 
 def load_profile_file(
     path: str, kind: str | None = None, drop_backtracking: bool = False
@@ -107,6 +108,69 @@ def conicity_from_delta_r(
 def kinematic_swing(
     y: npt.ArrayLike, dr: npt.ArrayLike, amplitude: float
 ) -> tuple[float, float, float]: ...
+
+# --- creep (creep.rs) ---------------------------------------------------------------------------
+
+__all__ += [
+    "fastsim",
+    "hertz_contact",
+    "hertz_stiffness",
+    "kalker_coefficients",
+    "linear_creep_forces",
+    "wheelset_creepages",
+]
+
+def hertz_contact(
+    normal_force: float,
+    r_wheel_rolling: float,
+    r_wheel_transverse: float,
+    r_rail_transverse: float,
+    youngs_modulus: float,
+    poisson_ratio: float,
+) -> tuple[float, float, float, float]: ...
+def hertz_stiffness(
+    r_wheel_rolling: float,
+    r_wheel_transverse: float,
+    r_rail_transverse: float,
+    youngs_modulus: float,
+    poisson_ratio: float,
+) -> float: ...
+def kalker_coefficients(a_over_b: float, nu: float) -> tuple[float, float, float, float]: ...
+def linear_creep_forces(
+    a: float,
+    b: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    nu: float,
+    shear_modulus: float,
+) -> tuple[float, float, float]: ...
+def fastsim(
+    a: float,
+    b: float,
+    normal_force: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    mu: float,
+    nu: float,
+    shear_modulus: float,
+    nx: int,
+    ny: int,
+    bound: str,
+    kalker_factor: float,
+) -> tuple[float, float, float]: ...
+def wheelset_creepages(
+    speed: float,
+    lateral_velocity: float,
+    yaw: float,
+    yaw_rate: float,
+    roll_rate: float,
+    spin_rate: float,
+    side: str,
+    lateral_position: float,
+    rolling_radius: float,
+    contact_angle: float,
 
 # --- track (track.rs) ---------------------------------------------------------------------------
 

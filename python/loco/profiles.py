@@ -19,15 +19,22 @@ __all__ = ["Profile", "builtin", "builtin_names", "load"]
 
 
 def load(
-    path: str | os.PathLike[str], kind: str | None = None, *, drop_backtracking: bool = False
+    path: str | os.PathLike[str],
+    kind: str | None = None,
+    *,
+    drop_backtracking: bool = False,
+    smoothing_length: float = 0.0,
 ) -> Profile:
     """Loads a profile file.
 
     ``kind`` ('wheel' or 'rail') is required for text files and, when given for a SIMPACK file,
     must match the file's type. ``drop_backtracking`` drops points of a text file that do not
-    advance in y instead of raising :class:`loco.ProfileFormatError`.
+    advance in y instead of raising :class:`loco.ProfileFormatError`. ``smoothing_length`` (m)
+    > 0 smooths the profile (cubic smoothing spline, see :meth:`Profile.smoothed`); use about
+    2e-3 for measured or rounded profiles so that curvatures are meaningful.
     """
-    return load_profile_file(os.fspath(path), kind, drop_backtracking)
+    profile = load_profile_file(os.fspath(path), kind, drop_backtracking)
+    return profile.smoothed(smoothing_length) if smoothing_length > 0.0 else profile
 
 
 def builtin(name: str) -> Profile:

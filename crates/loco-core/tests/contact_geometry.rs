@@ -206,3 +206,37 @@ fn bad_setups_are_rejected() {
     assert!(g.solve(0.2).is_err());
     assert!(g.solve(0.009).is_err());
 }
+
+#[test]
+fn different_wheel_radii_offset_the_rolling_radius_difference() {
+    // Cones with r0 = 0.460 (left) and 0.459 m (right) on knife edges under the taping lines:
+    // the centred wheelset rolls by φ = (r_L − r_R)/(2b) and the contacts move by r0·φ along
+    // the cones, so Δr(0) = Δr0 / (1 − λ·r0/b) to first order, with Δr0 = 1 mm.
+    let (lambda, r0) = (0.05, 0.46);
+    let wheelset = WheelsetSetup {
+        back_to_back: 1.36,
+        flange_back_offset: 0.07,
+        nominal_radius: [r0, r0 - 1e-3],
+    };
+    let b = wheelset.taping_line_half_spacing();
+    let depth = 0.014;
+    let (rail, to_gauge) = knife_rail(5e-4, 1.2, depth);
+    let track = TrackSetup {
+        gauge: 2.0 * (b - to_gauge),
+        gauge_height: depth,
+        rail_inclination: 0.0,
+    };
+    let wheel = cone(lambda);
+    let g = ContactGeometry::new(
+        [&wheel, &wheel],
+        [&rail, &rail],
+        &track,
+        &wheelset,
+        &Default::default(),
+    )
+    .unwrap();
+    let c = g.solve(0.0).unwrap();
+    let expected = 1e-3 / (1.0 - lambda * r0 / b);
+    assert!((c.rolling_radius_difference() - expected).abs() < 5e-3 * expected);
+    assert!(g.roll_at_centre() > 0.0 && c.rise.abs() < 1e-12);
+}

@@ -16,6 +16,9 @@ struct RefContact {
     radius: f64,
     /// CONTACT's elastic approach of the bodies, mm.
     approach: f64,
+    /// CONTACT's normal force FN, N, and peak pressure PMAX, MPa.
+    normal_force: f64,
+    peak_pressure: f64,
 }
 
 /// Lateral displacement Y_WS (mm), roll ROLL_WS (rad) and yaw (rad) per case, from the `.inp`.
@@ -47,6 +50,7 @@ fn read_reference(text: &str, mirror: f64, nominal_radius_mm: f64) -> Vec<(usize
     let mut patches = 0;
     let mut tr: Option<Vec<f64>> = None;
     let mut wheel: Option<Vec<f64>> = None;
+    let mut forces: Option<Vec<f64>> = None;
     for (i, l) in lines.iter().enumerate() {
         if l.contains("CONTACT PATCH") && l.contains("WHEEL-RAIL") {
             patches = l.split_whitespace().rev().nth(2).unwrap().parse().unwrap();
@@ -54,8 +58,12 @@ fn read_reference(text: &str, mirror: f64, nominal_radius_mm: f64) -> Vec<(usize
             tr = Some(numbers(i + 1));
         } else if l.trim_start().starts_with("XCP(W)") {
             wheel = Some(numbers(i + 1));
+        } else if l.trim_start().starts_with("FN ") {
+            forces = Some(numbers(i + 1));
         } else if l.trim_start().starts_with("FN/G") {
             let approach = numbers(i + 1)[3];
+            let peak_pressure = numbers(i + 1)[4];
+            let normal_force = forces.take().map_or(f64::NAN, |f| f[0]);
             if let (Some(t), Some(w)) = (tr.take(), wheel.take()) {
                 out.push((
                     patches,
@@ -68,6 +76,8 @@ fn read_reference(text: &str, mirror: f64, nominal_radius_mm: f64) -> Vec<(usize
                         // ZCP(W) is the wheel profile's z (down) at the contact: r = r0 + z.
                         radius: nominal_radius_mm + w[2],
                         approach,
+                        normal_force,
+                        peak_pressure,
                     },
                 ));
             }
@@ -216,4 +226,103 @@ fn en15302_reference_profiles_load_in_the_profile_frame() {
         ContactGeometry::symmetric(&wheel, &rail, &track, &wheelset, &Default::default()).unwrap();
     let c = g.solve(0.0).unwrap();
     assert!(c.roll.abs() < 1e-12);
+}
+
+#[test]
+fn manchester_benchmark_a22_hertz_from_our_curvatures() {
+    // Checks the contact angle, rolling radius and transverse curvatures together: the Hertz
+    // ellipse they give for CONTACT's own normal force must have CONTACT's peak pressure and
+    // approach. Hertz assumes one isolated contact with constant curvatures over the patch, so
+    // the check applies where (a) no second contact point lies within twice CONTACT's approach
+    // and (b) the rigid point is within 1 mm of CONTACT's (not a flat, conformal gap); there
+    // 5 % on both (the curvatures vary across patches up to 15 mm wide; worst seen 4.3 %).
+    use loco_core::contact::hertz::{hertz_contact, ContactRadii, ElasticMaterial};
+    let files = [
+        "profiles/MBench_S1002_v3.prw",
+        "profiles/MBench_UIC60_v3.prr",
+        "profiles/mbench_a22_left.inp",
+        "profiles/mbench_a22_left.ref_out",
+        "profiles/mbench_a22_right.ref_out",
+    ];
+    let Some(paths) = files
+        .iter()
+        .map(|f| support::shared_file(f))
+        .collect::<Option<Vec<_>>>()
+    else {
+        return;
+    };
+    let wheel = load_profile(&paths[0], Some(ProfileKind::Wheel), false).unwrap();
+    let rail = load_profile(&paths[1], Some(ProfileKind::Rail), false).unwrap();
+    let read = |p: &Path| std::fs::read_to_string(p).unwrap();
+    let poses = read_poses(&read(&paths[2]));
+    let left = read_reference(&read(&paths[3]), -1.0, 460.0);
+    let right = read_reference(&read(&paths[4]), 1.0, 460.0);
+    let track = TrackSetup {
+        gauge: 1.435,
+        gauge_height: 0.014,
+        rail_inclination: 0.0,
+    };
+    let wheelset = WheelsetSetup {
+        back_to_back: 1.360,
+        flange_back_offset: 0.070,
+        nominal_radius: [0.46, 0.46],
+    };
+    let g =
+        ContactGeometry::symmetric(&wheel, &rail, &track, &wheelset, &Default::default()).unwrap();
+    // The benchmark's material: G = 82 GPa, ν = 0.28, so E = 2G(1 + ν).
+    let material = ElasticMaterial {
+        youngs_modulus: 2.0 * 82e9 * 1.28,
+        poisson_ratio: 0.28,
+    };
+    let (mut checked, mut worst) = (0, [0.0_f64; 2]);
+    for (case, &(y_mm, _, _)) in poses.iter().enumerate() {
+        let c = g.solve(y_mm * 1e-3).unwrap();
+        for (side, reference) in [(LEFT, &right[case]), (RIGHT, &left[case])] {
+            let r = reference.1;
+            let p = c.wheels[side].touching().unwrap();
+            let isolated = c.wheels[side]
+                .points
+                .iter()
+                .flatten()
+                .all(|q| q.gap == 0.0 || q.gap * 1e3 > 2.0 * r.approach);
+            let located = (p.wheel_y * 1e3 - r.wheel_y).abs() <= 1.0;
+            // The wheel's curvature in the rolling direction, seen in the contact plane tilted
+            // by the contact angle, is cos δ / r.
+            let radii = ContactRadii {
+                wheel_rolling: p.rolling_radius / p.contact_angle.cos(),
+                wheel_transverse: 1.0 / p.wheel_curvature,
+                rail_transverse: 1.0 / p.rail_curvature,
+            };
+            let h = hertz_contact(r.normal_force, &radii, &material).unwrap();
+            let d = [
+                h.peak_pressure * 1e-6 / r.peak_pressure - 1.0,
+                h.approach * 1e3 / r.approach - 1.0,
+            ];
+            println!(
+                "case {:>2} side {side}: pmax {:7.1} ref {:7.1} MPa, approach {:.4} ref {:.4} mm{}",
+                case + 1,
+                h.peak_pressure * 1e-6,
+                r.peak_pressure,
+                h.approach * 1e3,
+                r.approach,
+                if isolated && located {
+                    ""
+                } else {
+                    "  (not compared)"
+                }
+            );
+            if isolated && located {
+                checked += 1;
+                assert!(
+                    d[0].abs() < 0.05 && d[1].abs() < 0.05,
+                    "case {}: {d:?}",
+                    case + 1
+                );
+                worst = [worst[0].max(d[0].abs()), worst[1].max(d[1].abs())];
+            }
+        }
+    }
+    println!("compared {checked} of 42 contacts; worst relative error pmax, approach: {worst:?}");
+    // Guard against a vacuous test: most contacts of the benchmark are isolated tread contacts.
+    assert!(checked > 21, "only {checked} contacts compared");
 }

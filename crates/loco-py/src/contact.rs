@@ -94,6 +94,13 @@ impl PyProfile {
         self.map(py, y, |p, v| p.curvature(v))
     }
 
+    /// The profile smoothed by a cubic smoothing spline of smoothing `length` (m, e.g. 2e-3).
+    fn smoothed(&self, py: Python<'_>, length: f64) -> PyResult<Self> {
+        let profile = self.inner.clone();
+        let inner = run_detached(py, move || profile.smoothed(length))?;
+        Ok(Self { inner })
+    }
+
     fn __repr__(&self) -> String {
         let (lo, hi) = self.inner.y_range();
         format!(

@@ -6,6 +6,7 @@
 
 mod conicity;
 mod contact;
+mod creep;
 mod dampers;
 mod errors;
 mod metrics;
@@ -20,6 +21,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     contact::register(m)?;
     conicity::register(m)?;
+    creep::register(m)?;
     track::register(m)?;
     metrics::register(m)?;
     dampers::register(m)?;

@@ -7,19 +7,29 @@
 //! - [`delta_r`]: a sampled rolling radius difference Δr(y); [`conicity`]: equivalent conicity by
 //!   the nonlinear kinematic method of EN 15302; [`conicity_harmonic`]: by harmonic
 //!   linearisation.
+//! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables: normal and creep forces.
 
 pub mod builtin;
 pub mod conicity;
 pub mod conicity_harmonic;
+pub mod creepage;
 pub mod delta_r;
+pub mod elliptic;
+pub mod fastsim;
+pub mod fastsim_table;
 #[cfg(test)]
 mod en15302_data;
 pub mod geometry;
+pub mod hertz;
+pub mod hertz_table;
+pub mod kalker;
 pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;
 mod quadrature;
+pub mod profile_simpack;
 pub mod setup;
+mod side;
 mod spline;
 pub mod table;
 

@@ -24,11 +24,22 @@
 //! This is the frame of the EN 15302 reference files (`RUIC519A.dat`, `SUIC519A.dat`, mm) and of
 //! processed SIMPACK profiles with the z axis flipped (SIMPACK uses z down); the loaders convert.
 //!
+//! EN 15302 reference files (criogenox data, checked against the points): wheels `RUIC519*` have
+//! the flange back at y = −70 mm and the taping line at the origin (`flange_back_offset` 0.070).
+//! The rail `SUIC519A` is **already inclined** and given in the frame of the centred wheel: its
+//! first point (−32.5, −14) mm is the gauge point, 14 mm below z = 0, while the head's highest
+//! point is at z = +0.49 mm. To reproduce that set-up use `rail_inclination = 0` and
+//! `gauge_height = 0.014 + max(z)` (the gauge point then lands on the file's first point) with
+//! gauge 1.435 m and back-to-back 1.360 m (1.43516 m in the standard's E1–E9 cases).
+//!
 //! # Interpolant
 //!
 //! A natural cubic spline in `y` through the points ([`CubicSpline`]): C2, so the contact angle
-//! (slope) and the transverse curvature (second derivative) are continuous. It interpolates, it
-//! does not smooth: noisy measured profiles should be smoothed before loading.
+//! (slope) and the transverse curvature (second derivative) are continuous. It interpolates;
+//! measured or rounded profiles (the EN 15302 files are rounded to 1e-5 mm every 0.135 mm, which
+//! alone makes the interpolated curvature wrong by several 1/m) should be smoothed with
+//! [`Profile::smoothed`], a cubic smoothing spline with a smoothing length of a few mm (below
+//! contact-patch sizes, so the curvature seen by Hertz is kept).
 
 use super::spline::{CubicSpline, SplineValue};
 use crate::error::{LocoError, Result};
@@ -160,6 +171,25 @@ impl Profile {
     pub fn curvature(&self, y: f64) -> Result<f64> {
         let v = self.evaluate_checked(y)?;
         Ok(v.second / (1.0 + v.slope * v.slope).powf(1.5))
+    }
+
+    /// The profile smoothed by a natural cubic smoothing spline with smoothing `length` (m):
+    /// features shorter than about `length` are removed, longer ones kept; straight parts and
+    /// constant-curvature arcs (away from the ends) are unchanged. 2e-3 m suits measured wheel
+    /// and rail profiles; 0 returns the interpolating profile. The points' z become the smoothed
+    /// heights.
+    pub fn smoothed(&self, length: f64) -> Result<Self> {
+        let spline = CubicSpline::smoothing(
+            &format!("profile '{}'", self.name),
+            self.y(),
+            self.z(),
+            length,
+        )?;
+        Ok(Self {
+            name: self.name.clone(),
+            kind: self.kind,
+            spline,
+        })
     }
 
     /// The same profile with another name.

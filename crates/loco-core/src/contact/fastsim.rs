@@ -1,0 +1,382 @@
+//! FASTSIM: Kalker's simplified theory of rolling contact (J. J. Kalker, "A fast algorithm for the
+//! simplified theory of rolling contact", Vehicle System Dynamics 11, 1982, pp. 1–13).
+//!
+//! The simplified theory replaces the elastic half-space by independent springs: the surface
+//! displacement is `u = L·p` with flexibilities (Kalker 1982, chosen so that the theory reproduces
+//! the linear theory at vanishing creepage)
+//!
+//! ```text
+//! L1 = 8a / (3 C11 G),   L2 = 8a / (3 C22 G),   L3 = π a √(a/b) / (4 C23 G)
+//! ```
+//!
+//! divided here by the Kalker coefficient factor k (k < 1 models reduced adhesion; the study
+//! uses k = 1). In steady rolling (material flows from the leading edge x = +a to the trailing edge
+//! x = −a) and with the rigid slip `(ξ − φ y, η + φ x)`, the traction in the adhesion area obeys
+//! `∂p/∂x = (ξ/L1 − φ y/L3, η/L2 + φ x/L3)`, starting from zero at the leading edge. FASTSIM
+//! integrates this along strips y = const of the ellipse and, wherever |p| exceeds the traction
+//! bound μ p_n(x, y), projects p back onto the bound (slip). The normal pressure p_n is either
+//! Hertz's elliptic distribution or the parabolic one that Kalker recommends for FASTSIM (it gives
+//! a better force–creepage curve with the simplified theory's uniform flexibility):
+//!
+//! ```text
+//! elliptic:  p_n = 3N/(2πab) · √(1 − x²/a² − y²/b²)
+//! parabolic: p_n = 2N/(πab)  · (1 − x²/a² − y²/b²)
+//! ```
+//!
+//! Discretisation: `ny` strips of equal width; each strip is cut into `nx` elements of equal
+//! length; tractions live at element centres, and each step integrates the slip with the midpoint
+//! rule, which is exact for the linear variation in x, so at vanishing creepage the only error left
+//! is the strip quadrature. The discrete pressure is scaled so that it sums to N exactly, so that
+//! full slip gives |F| = μN on any grid. The element geometry in units of (a, b) is precomputed in
+//! [`Fastsim::new`]; [`Fastsim::creep_forces`] allocates nothing.
+
+use super::kalker::{CreepForces, Creepages, KalkerTable};
+use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
+use std::f64::consts::PI;
+
+/// Strips integrated together in the hot loop.
+const LANES: usize = 4;
+
+/// Geometry of [`LANES`] strips in units of (a, b).
+#[derive(Debug, Clone, Copy, Default)]
+struct StripLanes {
+    /// Strip centre y_j / b.
+    eta: [f64; LANES],
+    /// Strip half-length a_j / a.
+    half_length: [f64; LANES],
+    /// Pressure shape factor of the strip.
+    shape: [f64; LANES],
+}
+
+/// Normal pressure distribution that bounds the tangential traction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TractionBound {
+    /// Hertz's elliptic pressure.
+    Elliptic,
+    /// Parabolic pressure of the same total force (Kalker's choice for FASTSIM).
+    #[default]
+    Parabolic,
+}
+
+/// Parameters of FASTSIM.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FastsimParams {
+    /// Elements per strip along the rolling direction (≥ 1).
+    pub nx: usize,
+    /// Strips across the ellipse (≥ 1).
+    pub ny: usize,
+    /// Kalker coefficient factor k (> 0): the flexibilities are divided by k (1: Kalker's values).
+    pub kalker_factor: f64,
+    /// Traction bound.
+    pub bound: TractionBound,
+    /// Poisson's ratio ν (–), for the creepage coefficients.
+    pub poisson_ratio: f64,
+    /// Combined shear modulus G (Pa).
+    pub shear_modulus: f64,
+}
+
+impl Default for FastsimParams {
+    /// 10 × 10 grid, k = 1, parabolic bound, steel (ν = 0.28, G = 8.2e10 Pa).
+    fn default() -> Self {
+        Self {
+            nx: 10,
+            ny: 10,
+            kalker_factor: 1.0,
+            bound: TractionBound::Parabolic,
+            poisson_ratio: 0.28,
+            shear_modulus: 8.2e10,
+        }
+    }
+}
+
+/// A ready-to-run FASTSIM solver: parameters, Kalker table and the normalised grid.
+#[derive(Debug, Clone)]
+pub struct Fastsim {
+    params: FastsimParams,
+    table: KalkerTable,
+    /// Strips in groups of [`LANES`]: `y_j/b`, `a_j/a` and the strip's p_n shape factor; the
+    /// last group is padded with empty strips (a_j = 0), which contribute nothing.
+    strips: Vec<StripLanes>,
+    /// Per element k of a strip: `(x_k/a_j, p_n shape factor of the element)`.
+    elements: Vec<(f64, f64)>,
+    /// Pressure at shape factor 1 per N/(ab) (–): 1 / Σ shape·dA/(ab), so that the discrete
+    /// pressure sums to N exactly.
+    pressure_scale: f64,
+}
+
+impl Fastsim {
+    /// Checks the parameters and precomputes the grid.
+    pub fn new(params: FastsimParams) -> Result<Self> {
+        for (name, n) in [("grid.nx", params.nx), ("grid.ny", params.ny)] {
+            if !(1..=10_000).contains(&n) {
+                return Err(LocoError::param(
+                    name,
+                    format!("must be in 1..=10000, got {n}"),
+                ));
+            }
+        }
+        check_positive("kalker_factor", params.kalker_factor)?;
+        check_positive("shear_modulus", params.shear_modulus)?;
+        let table = KalkerTable::new(params.poisson_ratio)?;
+        let elliptic = params.bound == TractionBound::Elliptic;
+        // 1 − x²/a² − y²/b² = s_j² (1 − u_k²) with s_j = a_j/a, u_k = x/a_j: the pressure shape
+        // separates into a strip factor and an element factor.
+        let (nx, ny) = (params.nx, params.ny);
+        let strip = |j: usize| {
+            let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;
+            let s = (1.0 - eta * eta).sqrt();
+            (eta, s, if elliptic { s } else { s * s })
+        };
+        let strips: Vec<StripLanes> = (0..ny.div_ceil(LANES))
+            .map(|group| {
+                let mut lanes = StripLanes::default();
+                for lane in 0..LANES {
+                    let j = group * LANES + lane;
+                    if j < ny {
+                        (lanes.eta[lane], lanes.half_length[lane], lanes.shape[lane]) = strip(j);
+                    }
+                }
+                lanes
+            })
+            .collect();
+        let elements: Vec<(f64, f64)> = (0..nx)
+            .map(|k| {
+                let u = 1.0 - (2 * k + 1) as f64 / nx as f64;
+                let w = 1.0 - u * u;
+                (u, if elliptic { w.sqrt() } else { w })
+            })
+            .collect();
+        // Discrete ∫∫ shape dA in units of ab: Σ_j Σ_k shape · (2 s_j/nx)(2/ny).
+        let element_sum: f64 = elements.iter().map(|e| e.1).sum();
+        let discrete: f64 =
+            (0..ny).map(|j| strip(j).1 * strip(j).2).sum::<f64>() * element_sum * 4.0
+                / (nx * ny) as f64;
+        // (The exact integral is 2π/3 elliptic, π/2 parabolic; the discrete one converges to it.)
+        let pressure_scale = 1.0 / discrete;
+        Ok(Self {
+            params,
+            table,
+            strips,
+            elements,
+            pressure_scale,
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &FastsimParams {
+        &self.params
+    }
+
+    /// Kalker's coefficients for this solver's Poisson's ratio.
+    pub fn kalker_table(&self) -> &KalkerTable {
+        &self.table
+    }
+
+    /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
+    /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
+    /// (hot path; use [`fastsim`] for checked input); a non-positive a, b or N gives zero forces.
+    pub fn creep_forces(
+        &self,
+        a: f64,
+        b: f64,
+        normal_force: f64,
+        mu: f64,
+        creepages: &Creepages,
+    ) -> CreepForces {
+        if !(a > 0.0 && b > 0.0 && normal_force > 0.0) {
+            return CreepForces::default();
+        }
+        let coef = self.table.coefficients(a / b);
+        let g = self.params.shear_modulus * self.params.kalker_factor;
+        // Inverse flexibilities 1/L (Pa/m).
+        let inv_l1 = 3.0 * coef.c11 * g / (8.0 * a);
+        let inv_l2 = 3.0 * coef.c22 * g / (8.0 * a);
+        let inv_l3 = 4.0 * coef.c23 * g / (PI * a * (a / b).sqrt());
+        let Creepages {
+            longitudinal: xi,
+            lateral: eta,
+            spin: phi,
+        } = *creepages;
+        let bound_peak = mu * normal_force * self.pressure_scale / (a * b);
+        let nx = self.params.nx as f64;
+        let dy = 2.0 * b / self.params.ny as f64;
+        let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
+        // Strips are independent: integrating LANES of them in lockstep lets the CPU overlap the
+        // latency of the serial chain (step, bound check, square root, division) along a strip.
+        for group in &self.strips {
+            let mut y = [0.0; LANES];
+            let mut a_j = [0.0; LANES];
+            let mut slope_x = [0.0; LANES];
+            let mut bound_j = [0.0; LANES];
+            for l in 0..LANES {
+                y[l] = group.eta[l] * b;
+                a_j[l] = group.half_length[l] * a;
+                // The slope of p_x is constant along a strip; p_y's grows linearly with x.
+                slope_x[l] = xi * inv_l1 - phi * y[l] * inv_l3;
+                bound_j[l] = bound_peak * group.shape[l];
+            }
+            let mut px = [0.0; LANES];
+            let mut py = [0.0; LANES];
+            let mut sx = [0.0; LANES];
+            let mut sy = [0.0; LANES];
+            let mut sxpy = [0.0; LANES];
+            let mut x_prev = a_j;
+            for &(u_k, shape_k) in &self.elements {
+                for l in 0..LANES {
+                    let x = u_k * a_j[l];
+                    let h = x_prev[l] - x;
+                    let x_mid = 0.5 * (x_prev[l] + x);
+                    px[l] -= h * slope_x[l];
+                    py[l] -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
+                    let bound = bound_j[l] * shape_k;
+                    let norm2 = px[l] * px[l] + py[l] * py[l];
+                    if norm2 > bound * bound {
+                        let scale = bound / norm2.sqrt();
+                        px[l] *= scale;
+                        py[l] *= scale;
+                    }
+                    sx[l] += px[l];
+                    sy[l] += py[l];
+                    sxpy[l] += x * py[l];
+                    x_prev[l] = x;
+                }
+            }
+            for l in 0..LANES {
+                let area = 2.0 * a_j[l] / nx * dy;
+                fx += sx[l] * area;
+                fy += sy[l] * area;
+                mz += (sxpy[l] - y[l] * sx[l]) * area;
+            }
+        }
+        CreepForces { fx, fy, mz }
+    }
+}
+
+/// One checked FASTSIM evaluation (builds the solver; for repeated calls keep a [`Fastsim`]).
+pub fn fastsim(
+    a: f64,
+    b: f64,
+    normal_force: f64,
+    mu: f64,
+    creepages: &Creepages,
+    params: FastsimParams,
+) -> Result<CreepForces> {
+    check_positive("a", a)?;
+    check_positive("b", b)?;
+    check_positive("normal_force", normal_force)?;
+    check_non_negative("mu", mu)?;
+    check_finite("creepage_long", creepages.longitudinal)?;
+    check_finite("creepage_lat", creepages.lateral)?;
+    check_finite("spin", creepages.spin)?;
+    Ok(Fastsim::new(params)?.creep_forces(a, b, normal_force, mu, creepages))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::kalker::{kalker_coefficients, linear_creep_forces};
+    use super::*;
+
+    const A: f64 = 8e-3;
+    const B: f64 = 4e-3;
+    const N: f64 = 82e3;
+    const G: f64 = 82e9;
+
+    fn creep(xi: f64, eta: f64, phi: f64) -> Creepages {
+        Creepages {
+            longitudinal: xi,
+            lateral: eta,
+            spin: phi,
+        }
+    }
+
+    fn solver(n: usize, bound: TractionBound) -> Fastsim {
+        Fastsim::new(FastsimParams {
+            nx: n,
+            ny: n,
+            bound,
+            shear_modulus: G,
+            ..FastsimParams::default()
+        })
+        .unwrap()
+    }
+
+    #[test]
+    fn small_creepage_tends_to_linear_theory() {
+        for aob in [0.3_f64, 1.0, 2.0, 5.0] {
+            let (a, b) = (
+                A * aob.sqrt() / 2.0_f64.sqrt(),
+                B * 2.0_f64.sqrt() / aob.sqrt(),
+            );
+            let coef = kalker_coefficients(a / b, 0.28).unwrap();
+            let s = solver(100, TractionBound::Parabolic);
+            for c in [
+                creep(1e-7, 0.0, 0.0),
+                creep(0.0, 1e-7, 0.0),
+                creep(0.0, 0.0, 1e-5),
+            ] {
+                let f = s.creep_forces(a, b, N, 0.3, &c);
+                let lin = linear_creep_forces(a, b, G, &coef, &c);
+                let (got, want) = (f.fx + f.fy, lin.fx + lin.fy);
+                assert!(
+                    (got / want - 1.0).abs() < 0.01,
+                    "a/b={aob}: {got} vs {want} for {c:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn saturates_at_mu_n_on_any_grid() {
+        for n in [1, 3, 10, 40] {
+            for bound in [TractionBound::Parabolic, TractionBound::Elliptic] {
+                let s = solver(n, bound);
+                let f = s.creep_forces(A, B, N, 0.3, &creep(0.3, -0.4, 0.0));
+                let total = f.fx.hypot(f.fy);
+                assert!((total / (0.3 * N) - 1.0).abs() < 1e-9, "n={n}: {total}");
+                // Full slip: FASTSIM's traction points along (ξ/L1, η/L2) = (C11 ξ, C22 η)·const.
+                let coef = kalker_coefficients(A / B, 0.28).unwrap();
+                let want = (coef.c22 * -0.4) / (coef.c11 * 0.3);
+                assert!((f.fy / f.fx - want).abs() < 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn signs_follow_kalker() {
+        let s = solver(20, TractionBound::Parabolic);
+        let f = s.creep_forces(A, B, N, 0.3, &creep(1e-4, 0.0, 0.0));
+        assert!(f.fx < 0.0 && f.fy.abs() < 1e-9 * f.fx.abs());
+        let f = s.creep_forces(A, B, N, 0.3, &creep(0.0, 1e-4, 0.0));
+        assert!(f.fy < 0.0 && f.mz > 0.0);
+        let f = s.creep_forces(A, B, N, 0.3, &creep(0.0, 0.0, 0.1));
+        assert!(f.fy < 0.0 && f.mz < 0.0);
+    }
+
+    #[test]
+    fn kalker_factor_scales_small_creepage_forces() {
+        let base = solver(20, TractionBound::Parabolic);
+        let half = Fastsim::new(FastsimParams {
+            kalker_factor: 0.5,
+            ..*base.params()
+        })
+        .unwrap();
+        let c = creep(1e-7, 1e-7, 0.0);
+        let f1 = base.creep_forces(A, B, N, 0.3, &c);
+        let f2 = half.creep_forces(A, B, N, 0.3, &c);
+        assert!((f2.fx / f1.fx - 0.5).abs() < 1e-9);
+    }
+
+    #[test]
+    fn bad_input_names_the_argument() {
+        let p = FastsimParams::default();
+        let c = creep(0.0, 0.0, 0.0);
+        let err = fastsim(0.0, B, N, 0.3, &c, p).unwrap_err();
+        assert!(err.to_string().contains("`a`"));
+        let err = fastsim(A, B, N, -0.1, &c, p).unwrap_err();
+        assert!(err.to_string().contains("mu"));
+        let err = fastsim(A, B, N, 0.3, &c, FastsimParams { nx: 0, ..p }).unwrap_err();
+        assert!(err.to_string().contains("grid.nx"));
+        let err = fastsim(A, B, N, 0.3, &creep(f64::NAN, 0.0, 0.0), p).unwrap_err();
+        assert!(err.to_string().contains("creepage_long"));
+    }
+}

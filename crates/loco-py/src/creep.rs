@@ -1,0 +1,225 @@
+//! Bindings of `loco_core::contact::{hertz, creepage, kalker, fastsim}` (public API:
+//! `loco.creep`). Scalars in, tuples of floats out; every call goes through `run_detached`.
+
+use crate::errors::run_detached;
+use loco_core::contact::creepage::{Side, WheelContact, WheelsetMotion};
+use loco_core::contact::fastsim::{fastsim as core_fastsim, FastsimParams, TractionBound};
+use loco_core::contact::hertz::HertzCoefficients;
+use loco_core::contact::hertz::{hertz_contact as core_hertz, ContactRadii, ElasticMaterial};
+use loco_core::contact::kalker::{
+    kalker_coefficients as core_kalker, linear_creep_forces_checked, Creepages,
+};
+use loco_core::LocoError;
+use pyo3::prelude::*;
+
+/// Grid size from Python: an int ≥ 1, named in the error.
+fn grid_size(name: &str, n: i64) -> Result<usize, LocoError> {
+    if (1..=10_000).contains(&n) {
+        Ok(n as usize)
+    } else {
+        Err(LocoError::param(
+            name,
+            format!("must be in 1..=10000, got {n}"),
+        ))
+    }
+}
+
+fn traction_bound(bound: &str) -> Result<TractionBound, LocoError> {
+    match bound {
+        "parabolic" => Ok(TractionBound::Parabolic),
+        "elliptic" => Ok(TractionBound::Elliptic),
+        other => Err(LocoError::param(
+            "bound",
+            format!("must be \"parabolic\" or \"elliptic\", got {other:?}"),
+        )),
+    }
+}
+
+/// Hertz contact: (a, b, peak_pressure, approach) in m, m, Pa, m.
+#[pyfunction]
+#[pyo3(signature = (normal_force, r_wheel_rolling, r_wheel_transverse, r_rail_transverse, youngs_modulus, poisson_ratio))]
+fn hertz_contact(
+    py: Python<'_>,
+    normal_force: f64,
+    r_wheel_rolling: f64,
+    r_wheel_transverse: f64,
+    r_rail_transverse: f64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+) -> PyResult<(f64, f64, f64, f64)> {
+    run_detached(py, move || {
+        let radii = ContactRadii {
+            wheel_rolling: r_wheel_rolling,
+            wheel_transverse: r_wheel_transverse,
+            rail_transverse: r_rail_transverse,
+        };
+        let material = ElasticMaterial {
+            youngs_modulus,
+            poisson_ratio,
+        };
+        let c = core_hertz(normal_force, &radii, &material)?;
+        Ok((
+            c.semi_axis_long,
+            c.semi_axis_lat,
+            c.peak_pressure,
+            c.approach,
+        ))
+    })
+}
+
+/// Normal stiffness K_H (N·m^-1.5) of N = K_H·δ^1.5 for the given radii and material.
+#[pyfunction]
+#[pyo3(signature = (r_wheel_rolling, r_wheel_transverse, r_rail_transverse, youngs_modulus, poisson_ratio))]
+fn hertz_stiffness(
+    py: Python<'_>,
+    r_wheel_rolling: f64,
+    r_wheel_transverse: f64,
+    r_rail_transverse: f64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+) -> PyResult<f64> {
+    run_detached(py, move || {
+        let radii = ContactRadii {
+            wheel_rolling: r_wheel_rolling,
+            wheel_transverse: r_wheel_transverse,
+            rail_transverse: r_rail_transverse,
+        };
+        let material = ElasticMaterial {
+            youngs_modulus,
+            poisson_ratio,
+        };
+        Ok(HertzCoefficients::new(&radii, &material)?.stiffness())
+    })
+}
+
+/// Kalker's (C11, C22, C23, C33) for a/b and ν.
+#[pyfunction]
+fn kalker_coefficients(py: Python<'_>, a_over_b: f64, nu: f64) -> PyResult<(f64, f64, f64, f64)> {
+    run_detached(py, move || {
+        let c = core_kalker(a_over_b, nu)?;
+        Ok((c.c11, c.c22, c.c23, c.c33))
+    })
+}
+
+/// Linear-theory (Fx, Fy, Mz) in N, N, N·m.
+#[pyfunction]
+#[pyo3(signature = (a, b, creepage_long, creepage_lat, spin, nu, shear_modulus))]
+#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
+fn linear_creep_forces(
+    py: Python<'_>,
+    a: f64,
+    b: f64,
+    creepage_long: f64,
+    creepage_lat: f64,
+    spin: f64,
+    nu: f64,
+    shear_modulus: f64,
+) -> PyResult<(f64, f64, f64)> {
+    run_detached(py, move || {
+        let creep = Creepages {
+            longitudinal: creepage_long,
+            lateral: creepage_lat,
+            spin,
+        };
+        let f = linear_creep_forces_checked(a, b, shear_modulus, nu, &creep)?;
+        Ok((f.fx, f.fy, f.mz))
+    })
+}
+
+/// FASTSIM (Fx, Fy, Mz) in N, N, N·m.
+#[pyfunction]
+#[pyo3(signature = (a, b, normal_force, creepage_long, creepage_lat, spin, mu, nu, shear_modulus, nx, ny, bound, kalker_factor))]
+#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
+fn fastsim(
+    py: Python<'_>,
+    a: f64,
+    b: f64,
+    normal_force: f64,
+    creepage_long: f64,
+    creepage_lat: f64,
+    spin: f64,
+    mu: f64,
+    nu: f64,
+    shear_modulus: f64,
+    nx: i64,
+    ny: i64,
+    bound: String,
+    kalker_factor: f64,
+) -> PyResult<(f64, f64, f64)> {
+    run_detached(py, move || {
+        let params = FastsimParams {
+            nx: grid_size("grid[0]", nx)?,
+            ny: grid_size("grid[1]", ny)?,
+            kalker_factor,
+            bound: traction_bound(&bound)?,
+            poisson_ratio: nu,
+            shear_modulus,
+        };
+        let creep = Creepages {
+            longitudinal: creepage_long,
+            lateral: creepage_lat,
+            spin,
+        };
+        let f = core_fastsim(a, b, normal_force, mu, &creep, params)?;
+        Ok((f.fx, f.fy, f.mz))
+    })
+}
+
+/// Creepages (ξ, η, φ) of a wheelset contact on a fixed rail.
+#[pyfunction]
+#[pyo3(signature = (speed, lateral_velocity, yaw, yaw_rate, roll_rate, spin_rate, side, lateral_position, rolling_radius, contact_angle))]
+#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
+fn wheelset_creepages(
+    py: Python<'_>,
+    speed: f64,
+    lateral_velocity: f64,
+    yaw: f64,
+    yaw_rate: f64,
+    roll_rate: f64,
+    spin_rate: f64,
+    side: String,
+    lateral_position: f64,
+    rolling_radius: f64,
+    contact_angle: f64,
+) -> PyResult<(f64, f64, f64)> {
+    run_detached(py, move || {
+        let side = match side.as_str() {
+            "left" => Side::Left,
+            "right" => Side::Right,
+            other => {
+                return Err(LocoError::param(
+                    "side",
+                    format!("must be \"left\" or \"right\", got {other:?}"),
+                ))
+            }
+        };
+        let motion = WheelsetMotion {
+            speed,
+            lateral_velocity,
+            vertical_velocity: 0.0,
+            yaw,
+            yaw_rate,
+            roll_rate,
+            spin_rate,
+        };
+        let contact = WheelContact {
+            side,
+            lateral_position,
+            rolling_radius,
+            contact_angle,
+        };
+        let c = motion.creepages_checked(&contact)?;
+        Ok((c.longitudinal, c.lateral, c.spin))
+    })
+}
+
+/// Adds this file's functions to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(hertz_contact, m)?)?;
+    m.add_function(wrap_pyfunction!(hertz_stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(kalker_coefficients, m)?)?;
+    m.add_function(wrap_pyfunction!(linear_creep_forces, m)?)?;
+    m.add_function(wrap_pyfunction!(fastsim, m)?)?;
+    m.add_function(wrap_pyfunction!(wheelset_creepages, m)?)?;
+    Ok(())
+}
