@@ -45,21 +45,26 @@ fn reference(case: usize) -> Option<Vec<[f64; 4]>> {
     )
 }
 
-/// Ignored until the contact geometry reproduces the standard's Δr: with gauge 1435 mm at 14 mm
-/// Δr(y) comes out 10–20 % above the `dr_E*.dat` functions on the tread and flange contact starts
-/// about 0.3 mm earlier (E1: 1.417 mm vs 1.236 mm at y = 3 mm); a gauge of 1435.5 mm matches them
-/// within 3 %, which points at the rail placement (gauge point) rather than at the conicity
-/// method, which passes E1–E9 from the given Δr (`conicity` unit tests). Run with `--ignored`.
+/// Ignored until the contact geometry reproduces the standard's Δr near flange contact. With this
+/// set-up the tread region agrees (tan γe at 3 mm: E1 0.187 vs 0.188, E3 0.246 vs 0.245, E5
+/// 0.272 vs 0.261, E9 0.122 vs 0.132), but from y ≈ 5.5 mm Δr rises faster than `dr_E1.dat`
+/// (6.4 mm: 8.9 mm vs 5.7 mm), so amplitudes from about 6.3 mm and a few at sharp transitions (E2
+/// near 3 mm, E4 at the edge of its neutral zone) fall outside the limits: 146 of 594. The
+/// conicity method itself passes E1–E9 from the given Δr (`conicity` unit tests). Run with
+/// `--ignored`.
+#[ignore = "contact-geometry Δr rises faster than the EN 15302 reference Δr near flange contact"]
 #[test]
-#[ignore = "contact-geometry Δr differs from the EN 15302 reference Δr (rail placement)"]
 fn reference_profiles_give_the_reference_conicities() {
     let Some(rail_path) = support::shared_file("en15302/SUIC519A.dat") else {
         return;
     };
     let rail = load_profile(&rail_path, Some(ProfileKind::Rail), false).unwrap();
+    // The file's gauge point is its first point, 14 mm below its z = 0, while the head's highest
+    // point is at z = max(z) (see `contact::profile`): measure the gauge that far below the top.
+    let top = rail.z().iter().copied().fold(f64::MIN, f64::max);
     let track = TrackSetup {
-        gauge: 1.435,
-        gauge_height: 0.014,
+        gauge: 1.43516,
+        gauge_height: 0.014 + top,
         rail_inclination: 0.0,
     };
     let ys: Vec<f64> = (0..=180).map(|i| -0.009 + 1e-4 * i as f64).collect();
