@@ -171,6 +171,7 @@ def wheelset_creepages(
     lateral_position: float,
     rolling_radius: float,
     contact_angle: float,
+) -> tuple[float, float, float]: ...
 
 # --- track (track.rs) ---------------------------------------------------------------------------
 
