@@ -14,7 +14,8 @@
 //! 3. flange root arc R18,
 //! 4. tread band: an arc of radius `band_radius` through the taping line, where its slope is
 //!    `tread_slope`; it runs 30 mm past the taping line,
-//! 5. a 35 mm straight outer tread (to the wheel's field side).
+//! 5. an R50 arc back to the 1:20 of the new tread and a 30 mm straight outer tread (to the
+//!    wheel's field side).
 //!
 //! The face length and where the band starts are solved so that the flange height and thickness
 //! take their values exactly. Band radius R500 for the new wheel is the usual order of the tread
@@ -57,8 +58,12 @@ const THICKNESS_DEPTH: f64 = 0.012;
 const FLANGE_BACK: f64 = -0.070;
 /// Arc length of the tread band outside the taping line (m).
 const BAND_OUTER_LENGTH: f64 = 0.030;
+/// Slope of the straight outer tread (-): the 1:20 of the new tread.
+const OUTER_SLOPE: f64 = 1.0 / 20.0;
+/// Radius of the arc joining the tread band to the outer tread (m).
+const OUTER_RADIUS: f64 = 0.050;
 /// Length of the straight outer tread (m).
-const OUTER_LENGTH: f64 = 0.035;
+const OUTER_LENGTH: f64 = 0.030;
 /// Sampling of the arcs and lines (m of path length).
 const SPACING: f64 = 1.0e-4;
 
@@ -123,8 +128,13 @@ pub fn jm3(name: &str, state: &TreadState) -> Result<Profile> {
             .ok_or_else(|| LocoError::param(name, "flange face does not reach the gauge depth"))?;
         let thickness_error = thickness - state.flange_thickness;
         if height_error.abs() < 1e-10 && thickness_error.abs() < 1e-10 {
+            // Outer tread: back to the new tread's 1:20 through a tangent arc, so that a worn
+            // band does not leave an exaggerated false flange at the field side.
+            let band_end = state.tread_slope.atan() - BAND_OUTER_LENGTH / state.band_radius;
+            let outer_turn = OUTER_SLOPE.atan() - band_end;
             let full = to_taping
                 .arc(state.band_radius, -BAND_OUTER_LENGTH / state.band_radius)
+                .arc(OUTER_RADIUS, outer_turn)
                 .line(OUTER_LENGTH);
             let (ys, zs) = full.points(SPACING)?;
             let (ys, zs): (Vec<f64>, Vec<f64>) =
