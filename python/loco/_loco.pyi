@@ -100,6 +100,17 @@ def rolling_radius_difference(
     nominal_radius_right: float,
 ) -> npt.NDArray[np.float64]: ...
 
+# --- conicity (conicity.rs) ---------------------------------------------------------------------
+
+__all__ += ["conicity_from_delta_r", "kinematic_swing"]
+
+def conicity_from_delta_r(
+    y: npt.ArrayLike, dr: npt.ArrayLike, amplitudes: npt.ArrayLike, method: str = "nonlinear"
+) -> npt.NDArray[np.float64]: ...
+def kinematic_swing(
+    y: npt.ArrayLike, dr: npt.ArrayLike, amplitude: float
+) -> tuple[float, float, float]: ...
+
 # --- creep (creep.rs) ---------------------------------------------------------------------------
 
 __all__ += [

@@ -4,6 +4,7 @@
 //! `loco-core` through [`errors::run_detached`] (GIL released, errors mapped, panics caught) and
 //! returns numpy arrays by moving their buffers. No physics lives here.
 
+mod conicity;
 mod contact;
 mod creep;
 mod dampers;
@@ -20,6 +21,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     errors::register(m)?;
     contact::register(m)?;
+    conicity::register(m)?;
     creep::register(m)?;
     track::register(m)?;
     metrics::register(m)?;

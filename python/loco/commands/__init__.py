@@ -5,6 +5,7 @@ Each module listed here defines ``NAME`` (the subcommand), ``HELP`` (one line),
 """
 
 COMMAND_MODULES: list[str] = [
+    "contact_report",
     "info",
     "damper_bench",
 ]

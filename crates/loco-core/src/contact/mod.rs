@@ -4,11 +4,19 @@
 //!   [`profile_io`]: text and SIMPACK loaders.
 //! - [`geometry`]: the rigid contact search of a wheelset on a track; [`table`]: contact tables
 //!   for the time loop; [`builtin`]: the registry of built-in profiles.
+//! - [`delta_r`]: a sampled rolling radius difference Δr(y); [`conicity`]: equivalent conicity by
+//!   the nonlinear kinematic method of EN 15302; [`conicity_harmonic`]: by harmonic
+//!   linearisation.
 //! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables: normal and creep forces.
 
 pub mod builtin;
+pub mod conicity;
+pub mod conicity_harmonic;
 pub mod creepage;
+pub mod delta_r;
 pub mod elliptic;
+#[cfg(test)]
+mod en15302_data;
 pub mod fastsim;
 pub mod fastsim_table;
 pub mod geometry;
@@ -19,6 +27,7 @@ pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;
 pub mod profile_simpack;
+mod quadrature;
 pub mod setup;
 mod side;
 mod spline;

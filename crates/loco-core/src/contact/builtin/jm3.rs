@@ -1,0 +1,181 @@
+//! A JM3-type wearing tread for 1250 mm locomotive wheels, in three states (new, thin flange,
+//! worn), built from tangent arcs and lines.
+//!
+//! # What is documented and what is chosen
+//!
+//! JM3 coordinate tables are not public here (SPEC §2). Documented characteristics of Chinese
+//! wearing treads (LM for coaches, JM/JM3 for locomotives, TB/T 449): a tread sloping 1:20 at the
+//! taping line (70 mm from the flange back), a flange about 28 mm high and 33 mm thick
+//! (measured 12 mm below the taping line), a flange angle of about 70°, and a tread made of arcs
+//! that join the flange root tangentially. The shape here follows that: from the flange back,
+//!
+//! 1. flange tip arc R13 turning from the back face (−75°) to the flange face (+70°),
+//! 2. straight flange face at 70°,
+//! 3. flange root arc R18,
+//! 4. tread band: an arc of radius `band_radius` through the taping line, where its slope is
+//!    `tread_slope`; it runs 30 mm past the taping line,
+//! 5. an R50 arc back to the 1:20 of the new tread and a 30 mm straight outer tread (to the
+//!    wheel's field side).
+//!
+//! The face length and where the band starts are solved so that the flange height and thickness
+//! take their values exactly. Band radius R500 for the new wheel is the usual order of the tread
+//! arcs of Chinese wearing treads near the rolling circle; it is a design choice, not a table.
+//!
+//! # States, and the tuned parameters
+//!
+//! The study (SPEC §2) defines its scenarios by the equivalent conicity at 3 mm (EN 15302,
+//! nonlinear method) on CN60 inclined 1:40, 1435 mm gauge, 1493 mm between contact points.
+//! Only parameters in which worn or thin-flange wheels really differ from new ones are tuned:
+//!
+//! - `jm3-new`: the documented geometry, nothing tuned (tan γe ≈ 0.12 for a target of 0.10).
+//! - `jm3-thin-flange`: flange thickness 26 mm (worn flange, near the service limit) and the
+//!   tread at the taping line worn flatter, to a slope of 1:28 (**tuned**: tread slope) for 0.04.
+//! - `jm3-worn`: hollow-worn tread: the running band worn to a radius of 130 mm conforming to the
+//!   rail's R80 shoulder, steepened to 1:10 at the taping line (**tuned**: band radius and tread
+//!   slope) for 0.70.
+//!
+//! `tests` of the module `builtin` assert the resulting conicities.
+
+use crate::contact::profile::{Profile, ProfileKind};
+use crate::contact::profile_builder::ProfileBuilder;
+use crate::error::{LocoError, Result};
+use std::f64::consts::PI;
+
+const DEG: f64 = PI / 180.0;
+/// Flange height below the taping line (m).
+const FLANGE_HEIGHT: f64 = 0.028;
+/// Flange angle from the horizontal (rad).
+const FLANGE_ANGLE: f64 = 70.0 * DEG;
+/// Direction of the flange back where the profile starts (rad).
+const BACK_DIRECTION: f64 = -75.0 * DEG;
+/// Flange tip radius (m).
+const TIP_RADIUS: f64 = 0.013;
+/// Flange root radius (m).
+const ROOT_RADIUS: f64 = 0.018;
+/// Depth below the taping line where the flange thickness is measured (m).
+const THICKNESS_DEPTH: f64 = 0.012;
+/// Lateral position of the flange back relative to the taping line (m).
+const FLANGE_BACK: f64 = -0.070;
+/// Arc length of the tread band outside the taping line (m).
+const BAND_OUTER_LENGTH: f64 = 0.030;
+/// Slope of the straight outer tread (-): the 1:20 of the new tread.
+const OUTER_SLOPE: f64 = 1.0 / 20.0;
+/// Radius of the arc joining the tread band to the outer tread (m).
+const OUTER_RADIUS: f64 = 0.050;
+/// Length of the straight outer tread (m).
+const OUTER_LENGTH: f64 = 0.030;
+/// Sampling of the arcs and lines (m of path length).
+const SPACING: f64 = 1.0e-4;
+
+/// The shape parameters that differ between wheel states.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TreadState {
+    /// Flange thickness 12 mm below the taping line, from the flange back (m).
+    pub flange_thickness: f64,
+    /// Tread slope at the taping line (-), 1:20 for the new profile.
+    pub tread_slope: f64,
+    /// Radius of the tread band through the taping line (m).
+    pub band_radius: f64,
+}
+
+/// New JM3-type profile: documented dimensions, nothing tuned.
+pub const NEW: TreadState = TreadState {
+    flange_thickness: 0.033,
+    tread_slope: 1.0 / 20.0,
+    band_radius: 0.500,
+};
+
+/// Thin flange: 26 mm flange; tread slope 1:28 tuned for tan γe = 0.04 at 3 mm.
+pub const THIN_FLANGE: TreadState = TreadState {
+    flange_thickness: 0.026,
+    tread_slope: 1.0 / 28.0,
+    band_radius: 0.500,
+};
+
+/// Hollow-worn tread: band radius 130 mm and slope 1:10 tuned for tan γe = 0.70 at 3 mm.
+pub const WORN: TreadState = TreadState {
+    flange_thickness: 0.033,
+    tread_slope: 1.0 / 10.0,
+    band_radius: 0.130,
+};
+
+/// The path for a given face length and inner band length (m), origin at the back-side start.
+fn path(state: &TreadState, face: f64, inner_band: f64) -> ProfileBuilder {
+    let at_taping = state.tread_slope.atan();
+    let band_start = at_taping + inner_band / state.band_radius;
+    ProfileBuilder::new(0.0, 0.0, BACK_DIRECTION)
+        .arc(TIP_RADIUS, FLANGE_ANGLE - BACK_DIRECTION)
+        .line(face)
+        .arc(ROOT_RADIUS, -(FLANGE_ANGLE - band_start))
+        .arc(state.band_radius, -(band_start - at_taping))
+}
+
+/// The JM3-type wheel profile `name` in state `state` (profile frame, origin at the taping line).
+pub fn jm3(name: &str, state: &TreadState) -> Result<Profile> {
+    let (mut face, mut inner_band) = (0.010, 0.020);
+    for _ in 0..100 {
+        let to_taping = path(state, face, inner_band);
+        let (ty, tz, _) = to_taping.end()?;
+        let (ys, zs) = to_taping.points(SPACING)?;
+        let (ys, zs): (Vec<f64>, Vec<f64>) =
+            ys.iter().zip(&zs).map(|(y, z)| (y - ty, z - tz)).unzip();
+        let tip = (0..zs.len())
+            .min_by(|&a, &b| zs[a].total_cmp(&zs[b]))
+            .unwrap_or(0);
+        let height_error = -zs[tip] - FLANGE_HEIGHT;
+        let thickness = face_position(&ys[tip..], &zs[tip..], -THICKNESS_DEPTH)
+            .map(|y| y - FLANGE_BACK)
+            .ok_or_else(|| LocoError::param(name, "flange face does not reach the gauge depth"))?;
+        let thickness_error = thickness - state.flange_thickness;
+        if height_error.abs() < 1e-10 && thickness_error.abs() < 1e-10 {
+            // Outer tread: back to the new tread's 1:20 through a tangent arc, so that a worn
+            // band does not leave an exaggerated false flange at the field side.
+            let band_end = state.tread_slope.atan() - BAND_OUTER_LENGTH / state.band_radius;
+            let outer_turn = OUTER_SLOPE.atan() - band_end;
+            let full = to_taping
+                .arc(state.band_radius, -BAND_OUTER_LENGTH / state.band_radius)
+                .arc(OUTER_RADIUS, outer_turn)
+                .line(OUTER_LENGTH);
+            let (ys, zs) = full.points(SPACING)?;
+            let (ys, zs): (Vec<f64>, Vec<f64>) =
+                ys.iter().zip(&zs).map(|(y, z)| (y - ty, z - tz)).unzip();
+            return Profile::new(name, ProfileKind::Wheel, &ys, &zs);
+        }
+        // A longer face deepens the tip; a longer inner band moves the flange away from the
+        // taping line (thinner flange measured from the fixed flange back).
+        face -= height_error / FLANGE_ANGLE.sin();
+        inner_band += thickness_error;
+    }
+    Err(LocoError::param(
+        name,
+        "flange height and thickness did not converge",
+    ))
+}
+
+/// y (m) where the rising flange face (`ys`, `zs` from the tip on) first reaches height `z`.
+fn face_position(ys: &[f64], zs: &[f64], z: f64) -> Option<f64> {
+    let k = zs.windows(2).position(|w| w[0] < z && w[1] >= z)?;
+    let w = (z - zs[k]) / (zs[k + 1] - zs[k]);
+    Some(ys[k] + w * (ys[k + 1] - ys[k]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flange_dimensions_hold_in_every_state() {
+        for (state, name) in [(NEW, "new"), (THIN_FLANGE, "thin"), (WORN, "worn")] {
+            let wheel = jm3(name, &state).unwrap();
+            let z = wheel.z();
+            let tip = z.iter().copied().fold(f64::MAX, f64::min);
+            assert!((tip + FLANGE_HEIGHT).abs() < 1e-7, "{name}: tip {tip}");
+            assert!(wheel.height(0.0).unwrap().abs() < 1e-9, "{name}");
+            let slope = wheel.slope(0.0).unwrap();
+            assert!(
+                (slope - state.tread_slope).abs() < 2e-3,
+                "{name}: slope {slope}"
+            );
+        }
+    }
+}
