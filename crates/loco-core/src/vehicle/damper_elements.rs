@@ -2,8 +2,8 @@
 //! module, its internal states inside the integrator's state vector and its discrete state.
 
 use super::elements::{BodyStates, Wrenches};
-use super::suspension::{DamperPlacement, DamperRole};
 use super::kinematics::dot;
+use super::suspension::{DamperPlacement, DamperRole};
 use crate::dampers::{Damper, DamperDiscreteState, FsdDamper, MaxwellDamper, MaxwellParams};
 use crate::error::Result;
 
@@ -35,9 +35,11 @@ impl DamperElement {
     pub fn apply(&self, states: &BodyStates, force: f64, wrenches: &mut Wrenches) {
         let n = self.placement.direction;
         // Tension pulls the second end (B) back toward the first.
-        self.placement
-            .at
-            .apply_pair(states, [-force * n[0], -force * n[1], -force * n[2]], wrenches);
+        self.placement.at.apply_pair(
+            states,
+            [-force * n[0], -force * n[1], -force * n[2]],
+            wrenches,
+        );
     }
 }
 

@@ -15,7 +15,10 @@ impl Lu {
     /// Factorises `a` (n×n, row-major); fails on a (numerically) singular matrix, naming `what`.
     pub fn new(mut a: Vec<f64>, n: usize, what: &str) -> Result<Self> {
         if a.len() != n * n {
-            return Err(LocoError::input(what, format!("expected {n}×{n} entries, got {}", a.len())));
+            return Err(LocoError::input(
+                what,
+                format!("expected {n}×{n} entries, got {}", a.len()),
+            ));
         }
         let scale = a.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut pivot: Vec<usize> = (0..n).collect();
@@ -26,7 +29,9 @@ impl Lu {
             if !(max > 1e-14 * scale) {
                 return Err(LocoError::input(
                     what,
-                    format!("matrix is singular (column {k}): a body or coordinate is unrestrained"),
+                    format!(
+                        "matrix is singular (column {k}): a body or coordinate is unrestrained"
+                    ),
                 ));
             }
             if p != k {

@@ -11,18 +11,18 @@
 //! - [`integrator`]: fixed-step RK4.
 
 pub mod bodies;
+pub mod damper_elements;
 pub mod elements;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
+pub mod linalg;
 pub mod mass;
 pub mod parameters;
-pub mod structure;
-pub mod suspension;
-pub mod linalg;
-pub mod damper_elements;
 pub mod run;
+pub mod scenario;
 pub mod simulation;
 pub mod statics;
+pub mod structure;
+pub mod suspension;
 pub mod wheel_rail;
-pub mod scenario;

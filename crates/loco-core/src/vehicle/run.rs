@@ -119,7 +119,9 @@ pub fn run(
     check_positive("step", settings.step)?;
     check_positive("output_rate", settings.output_rate)?;
     check_positive("duration", settings.duration)?;
-    let steps_per_sample = (1.0 / (settings.output_rate * settings.step)).round().max(1.0) as usize;
+    let steps_per_sample = (1.0 / (settings.output_rate * settings.step))
+        .round()
+        .max(1.0) as usize;
     let dt = 1.0 / (settings.output_rate * steps_per_sample as f64);
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let probes = probes(system)?;
@@ -209,7 +211,11 @@ fn record(
         for f in &system.wheel_forces[w] {
             push(f.vertical);
             push(f.lateral);
-            push(if f.vertical > 0.0 { f.lateral / f.vertical } else { 0.0 });
+            push(if f.vertical > 0.0 {
+                f.lateral / f.vertical
+            } else {
+                0.0
+            });
         }
     }
     for &i in probes.yaw_dampers.iter().chain(&probes.lateral_dampers) {

@@ -27,8 +27,8 @@ use std::sync::Arc;
 /// speed; the contact tables and creep model are not meant for more).
 pub const MAX_SPEED: f64 = 400.0 / 3.6;
 
-/// Track distance before the vehicle's origin at t = 0, m: the rear wheelset starts on the track.
-const START_DISTANCE: f64 = 10.0;
+/// Half range of the contact tables, m.
+pub const TABLE_HALF_RANGE: f64 = 0.025;
 
 /// The wheel and rail of a study scenario (SPEC §2): (wheel, rail) built-in profile names.
 pub fn scenario_profiles(name: &str) -> Result<(&'static str, &'static str)> {
@@ -117,22 +117,33 @@ impl Scenario {
         if !self.initial_lateral_offset.is_finite() || self.initial_lateral_offset.abs() > 0.01 {
             return Err(LocoError::param(
                 "initial_lateral_offset",
-                format!("must be finite and within ±0.01 m, got {}", self.initial_lateral_offset),
+                format!(
+                    "must be finite and within ±0.01 m, got {}",
+                    self.initial_lateral_offset
+                ),
             ));
         }
         Ok(())
     }
 
     /// Track length a run needs, m.
-    pub fn track_length(&self, structure: &VehicleStructure) -> f64 {
-        let front = structure.layout.wheelset_x[0];
-        START_DISTANCE + self.distance + front + 20.0
+    pub fn track_length(&self, _structure: &VehicleStructure) -> f64 {
+        self.distance + 20.0
     }
+}
+
+/// Track distance of the vehicle's origin at t = 0, m: the leading wheelset starts at s = 0, so
+/// every wheelset enters the track through its run-in (the track is perfect before s = 0).
+pub fn start_distance(structure: &VehicleStructure) -> f64 {
+    -structure.layout.wheelset_x[0]
 }
 
 /// Builds the wheel-rail contact (contact table and FASTSIM) of a scenario for a vehicle.
 pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
-    let r0 = check_positive("track.wheel_rolling_radius", parameters.get("track.wheel_rolling_radius")?)?;
+    let r0 = check_positive(
+        "track.wheel_rolling_radius",
+        parameters.get("track.wheel_rolling_radius")?,
+    )?;
     let half = check_positive(
         "track.contact_point_half_distance",
         parameters.get("track.contact_point_half_distance")?,
@@ -150,22 +161,43 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
         &wheelset,
         &ContactSearchParams::default(),
     )?;
-    let table = ContactTable::build(&geometry, &ContactTableParams::default())?;
-    let e = check_positive("track.young_modulus", parameters.get("track.young_modulus")?)?;
+    // ±25 mm covers flange contact of every study wheel (the thin flange leaves ±15 mm of
+    // flangeway clearance) and the flange climbing beyond it.
+    let table = ContactTable::build(
+        &geometry,
+        &ContactTableParams {
+            y_min: -TABLE_HALF_RANGE,
+            y_max: TABLE_HALF_RANGE,
+            ..ContactTableParams::default()
+        },
+    )?;
+    let e = check_positive(
+        "track.young_modulus",
+        parameters.get("track.young_modulus")?,
+    )?;
     let nu = parameters.get("track.poisson_ratio")?;
     if !(0.0..0.5).contains(&nu) {
-        return Err(LocoError::param("track.poisson_ratio", format!("must be in [0, 0.5), got {nu}")));
+        return Err(LocoError::param(
+            "track.poisson_ratio",
+            format!("must be in [0, 0.5), got {nu}"),
+        ));
     }
     let fastsim = Fastsim::new(FastsimParams {
         poisson_ratio: nu,
-        shear_modulus: check_positive("track.shear_modulus", parameters.get("track.shear_modulus")?)?,
+        shear_modulus: check_positive(
+            "track.shear_modulus",
+            parameters.get("track.shear_modulus")?,
+        )?,
         ..scenario.fastsim
     })?;
     Ok(WheelRail::new(
         table,
         fastsim,
         WheelRailSettings {
-            friction: check_positive("track.wheel_rail_friction", parameters.get("track.wheel_rail_friction")?)?,
+            friction: check_positive(
+                "track.wheel_rail_friction",
+                parameters.get("track.wheel_rail_friction")?,
+            )?,
             contact_modulus: e / (2.0 * (1.0 - nu * nu)),
             normal_damping: crate::error::check_non_negative(
                 "contact.normal_contact_damping",
@@ -203,12 +235,13 @@ pub fn simulate_prepared(
     cancel: Option<&AtomicBool>,
 ) -> Result<RunOutput> {
     scenario.validate()?;
+    let start = start_distance(&structure);
     let mut system = VehicleSystem::new(
         structure,
         wheel_rail,
         track,
         scenario.speed,
-        START_DISTANCE,
+        start,
         scenario.yaw_damper.as_ref(),
         scenario.run.step,
     )?;

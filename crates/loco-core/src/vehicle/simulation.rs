@@ -12,7 +12,7 @@ use super::structure::VehicleStructure;
 use super::wheel_rail::{WheelForces, WheelRail};
 use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
 use crate::error::{LocoError, Result};
-use crate::track::TrackIrregularity;
+use crate::track::{RailIrregularity, TrackIrregularity};
 use std::sync::Arc;
 
 /// The system integrated in time: vehicle, dampers, contact, track and speed.
@@ -124,19 +124,19 @@ impl VehicleSystem {
             let n = damper.law.n_states();
             let o = damper.state_offset;
             let mut rates = [0.0; MAX_STATES];
-            let force = damper.law.evaluate(
-                x,
-                v,
-                &y[o..o + n],
-                &self.discrete[i],
-                &mut rates[..n],
-            );
+            let force = damper
+                .law
+                .evaluate(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
             dy[o..o + n].copy_from_slice(&rates[..n]);
             damper.apply(&self.body_states, force, &mut self.wrenches);
             self.damper_forces[i] = force;
         }
         for w in 0..N_WHEELSETS {
-            let rails = self.track.at(self.wheelset_distance(w, t));
+            let rails = if statics {
+                RailIrregularity::default()
+            } else {
+                self.track.at(self.wheelset_distance(w, t))
+            };
             let result = self.wheel_rail.apply(
                 w,
                 t,

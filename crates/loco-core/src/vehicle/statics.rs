@@ -3,7 +3,8 @@
 //! Newton's method on `Q(q, q̇ = 0) = 0` with a finite-difference Jacobian and a backtracking line
 //! search. Nothing rolls in the static state, so creep forces are replaced by a tangential contact
 //! stiffness that holds each wheel where it stands (patches do not slide), which also fixes the
-//! otherwise free longitudinal position of the vehicle. Dampers carry no static force: their
+//! otherwise free longitudinal position of the vehicle. The equilibrium is that on perfect track
+//! (runs start before the irregularities' run-in). Dampers carry no static force: their
 //! elongation in equilibrium becomes their reference.
 
 use super::layout::{body_wheelset, wheelset, N_DOF, N_WHEELSETS, Z};
@@ -38,6 +39,7 @@ pub fn static_equilibrium(system: &mut VehicleSystem) -> Result<Vec<f64>> {
     let mut r = vec![0.0; N_DOF];
     let mut r_trial = vec![0.0; N_DOF];
     let mut norm = residual(system, &q, &mut y, &mut r);
+
     let mut converged = false;
     for _iteration in 0..50 {
         if norm < 1e-8 * weight {
@@ -87,7 +89,9 @@ pub fn static_equilibrium(system: &mut VehicleSystem) -> Result<Vec<f64>> {
     y[..N_DOF].copy_from_slice(&q);
     // Dampers: the equilibrium elongation is their rest length.
     let qd = vec![0.0; N_DOF];
-    system.structure.body_states(&q, &qd, &mut system.body_states);
+    system
+        .structure
+        .body_states(&q, &qd, &mut system.body_states);
     for damper in &mut system.dampers {
         damper.static_elongation = 0.0;
         let (x, _) = damper.stroke(&system.body_states);

@@ -119,11 +119,7 @@ impl WheelRail {
         let mut u_lever = u;
         u_lever[PITCH] = 0.0;
         // Wheel angular velocity: spin about the rolled and yawed axle, plus roll and yaw rates.
-        let angular = [
-            v[ROLL] - spin * u[YAW],
-            spin,
-            v[YAW] + spin * u[ROLL],
-        ];
+        let angular = [v[ROLL] - spin * u[YAW], spin, v[YAW] + spin * u[ROLL]];
         let velocity = BodyVelocity {
             velocity: [speed + v[0], v[1], v[2]],
             angular_velocity: angular,
@@ -153,17 +149,14 @@ impl WheelRail {
             let mut forces = WheelForces::default();
             for point in pose.wheels[side_index].points.iter().flatten() {
                 let l = point.lateral;
-                let interference = pose.rise + pose.roll * l + rail_z[side_index]
-                    - u[2]
-                    - u[ROLL] * l
-                    - point.gap;
+                let interference =
+                    pose.rise + pose.roll * l + rail_z[side_index] - u[2] - u[ROLL] * l - point.gap;
                 if interference <= 0.0 {
                     continue;
                 }
                 let cg = point.contact_angle.cos();
                 let approach = interference * cg;
-                let approach_rate =
-                    (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
+                let approach_rate = (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
                 let hertz = self.hertz.coefficients(
                     0.5 / point.rolling_radius,
                     // A conformal point (flange root on the gauge corner) has a lateral relative
