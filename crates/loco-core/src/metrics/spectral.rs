@@ -179,6 +179,32 @@ pub fn dominant_frequency(
     })
 }
 
+/// Splits a one-sided power spectrum (`power[k]` at `k·df`, k ≥ 1; DC ignored) into lines:
+/// lobes between local minima, each reported once as `line(energy, frequency)` with its summed
+/// power (unit²) and power-weighted mean frequency (Hz). The leakage of a sine, which decreases
+/// monotonically away from its peak for a Hann window, stays in its lobe, so a sine is one line
+/// of energy A²/2 at its own frequency, on or off a bin.
+pub(crate) fn spectral_lines(power: &[f64], df: f64, mut line: impl FnMut(f64, f64)) {
+    let (mut energy, mut moment) = (0.0, 0.0);
+    let mut emit = |energy: f64, moment: f64| {
+        if energy > 0.0 {
+            line(energy, moment / energy);
+        }
+    };
+    for k in 1..power.len() {
+        let is_minimum =
+            k > 1 && k + 1 < power.len() && power[k] <= power[k - 1] && power[k] < power[k + 1];
+        if is_minimum {
+            emit(energy, moment);
+            energy = 0.0;
+            moment = 0.0;
+        }
+        energy += power[k];
+        moment += power[k] * k as f64 * df;
+    }
+    emit(energy, moment);
+}
+
 /// Reusable buffers for the energy-correct one-sided power spectrum of fixed-length segments.
 pub(crate) struct SegmentSpectrum {
     window: Vec<f64>,

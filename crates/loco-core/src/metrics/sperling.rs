@@ -27,7 +27,7 @@
 //! Segments: a record of T s gets ⌈T/5⌉ segments of 5 s spread evenly from its start to its
 //! end (overlapping when T is not a multiple of 5 s), so that no sample is discarded.
 
-use super::spectral::{check_record, SegmentSpectrum};
+use super::spectral::{check_record, spectral_lines, SegmentSpectrum};
 use crate::error::{check_positive, LocoError, Result};
 
 /// Direction of a carbody acceleration, selecting the Sperling weighting.
@@ -152,30 +152,13 @@ pub(crate) fn segment_starts(n: usize, len: usize) -> Vec<usize> {
 /// Combined index of one segment from its power per bin.
 fn segment_index(power: &[f64], df: f64, direction: Direction, params: &SperlingParams) -> f64 {
     let mut sum_w10 = 0.0;
-    let mut add_line = |energy: f64, moment: f64| {
-        if energy <= 0.0 {
-            return;
-        }
-        let f = moment / energy;
+    spectral_lines(power, df, |energy, f| {
         if f >= params.f_min && f <= params.f_max {
             let a = (2.0 * energy).sqrt();
             // W¹⁰ = 3.57¹⁰ · A³ F / f, summed without the 1/10 power per line.
             sum_w10 += 3.57f64.powi(10) * a.powi(3) * sperling_weighting(direction, f) / f;
         }
-    };
-    let (mut energy, mut moment) = (0.0, 0.0);
-    for k in 1..power.len() {
-        let is_minimum =
-            k > 1 && k + 1 < power.len() && power[k] <= power[k - 1] && power[k] < power[k + 1];
-        if is_minimum {
-            add_line(energy, moment);
-            energy = 0.0;
-            moment = 0.0;
-        }
-        energy += power[k];
-        moment += power[k] * k as f64 * df;
-    }
-    add_line(energy, moment);
+    });
     sum_w10.powf(0.1)
 }
 
