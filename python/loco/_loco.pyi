@@ -83,9 +83,7 @@ def load_track(
 def track_spectrum_psd(
     spectrum: str, channel: str, f: NDArray[np.float64]
 ) -> NDArray[np.float64]: ...
-def track_spectrum_variance(
-    spectrum: str, channel: str, f_lo: float, f_hi: float
-) -> float: ...
+def track_spectrum_variance(spectrum: str, channel: str, f_lo: float, f_hi: float) -> float: ...
 
 # --- metrics (metrics.rs) -----------------------------------------------------------------------
 

@@ -126,7 +126,9 @@ class Track:
             keep = f > 0
             ax_f.loglog(f[keep], p[keep], lw=0.8, label="Welch PSD")
             if self.spectrum is not None:
-                ax_f.loglog(f[keep], target_psd(self.spectrum, name, f[keep]), "k--", label=self.spectrum)
+                ax_f.loglog(
+                    f[keep], target_psd(self.spectrum, name, f[keep]), "k--", label=self.spectrum
+                )
             ax_f.set_ylabel("PSD (m²/(1/m))")
             ax_f.legend(fontsize="small")
         axes[-1][0].set_xlabel("distance (m)")
