@@ -2,7 +2,10 @@
 //! under 1 ms) and of the track lookup the vehicle model calls every step.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use loco_core::metrics::{RunMetrics, RunMetricsParams, RunRecords};
+use loco_core::metrics::{
+    bogie_stability, sperling, weighted_rms, ComfortWeighting, Direction, RunMetrics,
+    RunMetricsParams, RunRecords, SperlingParams, StabilityParams,
+};
 use loco_core::track::{synthesize, SynthesisParams};
 use std::f64::consts::PI;
 use std::hint::black_box;
@@ -43,6 +46,31 @@ fn bench_run_metrics(c: &mut Criterion) {
     let params = RunMetricsParams::default();
     c.bench_function("run_metrics_9s_500Hz", |b| {
         b.iter(|| RunMetrics::compute(black_box(&records), &params).unwrap())
+    });
+    // The parts, to see where the time goes.
+    c.bench_function("sperling_9s", |b| {
+        b.iter(|| {
+            sperling(
+                black_box(&ayc),
+                fs,
+                Direction::Lateral,
+                &SperlingParams::default(),
+            )
+        })
+    });
+    c.bench_function("weighted_rms_9s", |b| {
+        b.iter(|| weighted_rms(black_box(&ayc), fs, ComfortWeighting::Wd))
+    });
+    c.bench_function("bogie_stability_9s", |b| {
+        b.iter(|| {
+            bogie_stability(
+                black_box(&ayb),
+                fs,
+                55.6,
+                12_000.0,
+                &StabilityParams::default(),
+            )
+        })
     });
 }
 

@@ -28,19 +28,34 @@ impl Biquad {
         (self.b[0] + self.b[1] + self.b[2]) / (1.0 + self.a[0] + self.a[1])
     }
 
-    /// Filters `x` in place starting from the steady state of input `x[0]`.
-    fn run(&self, x: &mut [f64]) {
-        let Some(&u0) = x.first() else { return };
-        let y0 = self.dc_gain() * u0;
-        let mut z1 = y0 - self.b[0] * u0;
-        let mut z2 = self.b[2] * u0 - self.a[1] * y0;
-        for v in x.iter_mut() {
-            let u = *v;
-            let y = self.b[0] * u + z1;
-            z1 = self.b[1] * u - self.a[0] * y + z2;
-            z2 = self.b[2] * u - self.a[1] * y;
-            *v = y;
+    /// State (z1, z2) of the steady state for a constant input `u`.
+    fn steady_state(&self, u: f64) -> [f64; 2] {
+        let y = self.dc_gain() * u;
+        [y - self.b[0] * u, self.b[2] * u - self.a[1] * y]
+    }
+}
+
+/// Runs `x` in place through the cascade `sections`, every section starting in the steady
+/// state of input `x[0]`. One pass over the samples with all sections inside: the recursions
+/// of different sections are independent chains the processor can overlap.
+fn run_cascade(sections: &[Biquad], x: &mut [f64]) {
+    let Some(&first) = x.first() else { return };
+    let mut state = [[0.0f64; 2]; 16];
+    let mut u = first;
+    for (s, z) in sections.iter().zip(state.iter_mut()) {
+        *z = s.steady_state(u);
+        u *= s.dc_gain();
+    }
+    let state = &mut state[..sections.len()];
+    for v in x.iter_mut() {
+        let mut u = *v;
+        for (s, z) in sections.iter().zip(state.iter_mut()) {
+            let y = s.b[0] * u + z[0];
+            z[0] = s.b[1] * u - s.a[0] * y + z[1];
+            z[1] = s.b[2] * u - s.a[1] * y;
+            u = y;
         }
+        *v = u;
     }
 }
 
@@ -135,13 +150,9 @@ impl Filter {
         ext.extend((1..=pad).rev().map(|i| 2.0 * x[0] - x[i]));
         ext.extend_from_slice(x);
         ext.extend((1..=pad).map(|i| 2.0 * x[n - 1] - x[n - 1 - i]));
-        for s in &self.sections {
-            s.run(&mut ext);
-        }
+        run_cascade(&self.sections, &mut ext);
         ext.reverse();
-        for s in &self.sections {
-            s.run(&mut ext);
-        }
+        run_cascade(&self.sections, &mut ext);
         ext.reverse();
         ext.drain(..pad);
         ext.truncate(n);

@@ -14,11 +14,31 @@ use crate::error::{check_all_finite, check_positive, LocoError, Result};
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 use std::cell::RefCell;
+use std::collections::HashMap;
+use std::rc::Rc;
 use std::sync::Arc;
 
 thread_local! {
     /// One planner per thread: plans (twiddles) are cached, so a batch does not re-plan.
     static PLANNER: RefCell<FftPlanner<f64>> = RefCell::new(FftPlanner::new());
+    /// Hann windows by length, with 1/(N Σw²), for the same reason.
+    static WINDOWS: RefCell<HashMap<usize, (Rc<[f64]>, f64)>> = RefCell::new(HashMap::new());
+}
+
+/// The periodic Hann window of length `n` and its normalisation 1/(N Σw²), cached per thread.
+fn hann(n: usize) -> (Rc<[f64]>, f64) {
+    WINDOWS.with(|w| {
+        w.borrow_mut()
+            .entry(n)
+            .or_insert_with(|| {
+                let window: Rc<[f64]> = (0..n)
+                    .map(|j| 0.5 * (1.0 - (2.0 * std::f64::consts::PI * j as f64 / n as f64).cos()))
+                    .collect();
+                let sum_sq: f64 = window.iter().map(|w| w * w).sum();
+                (window, 1.0 / (n as f64 * sum_sq))
+            })
+            .clone()
+    })
 }
 
 /// The forward FFT of length `n`, from this thread's plan cache.
@@ -207,7 +227,7 @@ pub(crate) fn spectral_lines(power: &[f64], df: f64, mut line: impl FnMut(f64, f
 
 /// Reusable buffers for the energy-correct one-sided power spectrum of fixed-length segments.
 pub(crate) struct SegmentSpectrum {
-    window: Vec<f64>,
+    window: Rc<[f64]>,
     /// 1 / (N Σ w²).
     norm: f64,
     fft: Arc<dyn Fft<f64>>,
@@ -219,14 +239,11 @@ pub(crate) struct SegmentSpectrum {
 impl SegmentSpectrum {
     /// Buffers for segments of `n` samples.
     pub(crate) fn new(n: usize) -> Self {
-        let window: Vec<f64> = (0..n)
-            .map(|j| 0.5 * (1.0 - (2.0 * std::f64::consts::PI * j as f64 / n as f64).cos()))
-            .collect();
-        let sum_sq: f64 = window.iter().map(|w| w * w).sum();
+        let (window, norm) = hann(n);
         let fft = forward_fft(n);
         let scratch = vec![Complex64::new(0.0, 0.0); fft.get_inplace_scratch_len()];
         Self {
-            norm: 1.0 / (n as f64 * sum_sq),
+            norm,
             window,
             fft,
             buffer: vec![Complex64::new(0.0, 0.0); n],
@@ -240,7 +257,7 @@ impl SegmentSpectrum {
     pub(crate) fn power(&mut self, segment: &[f64]) -> &[f64] {
         let n = self.window.len();
         let mean = segment.iter().sum::<f64>() / n as f64;
-        for ((b, &x), &w) in self.buffer.iter_mut().zip(segment).zip(&self.window) {
+        for ((b, &x), &w) in self.buffer.iter_mut().zip(segment).zip(self.window.iter()) {
             *b = Complex64::new((x - mean) * w, 0.0);
         }
         self.fft
