@@ -18,15 +18,18 @@ use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
 
+/// A window and its normalisation 1/(N Σw²).
+type Window = (Rc<[f64]>, f64);
+
 thread_local! {
     /// One planner per thread: plans (twiddles) are cached, so a batch does not re-plan.
     static PLANNER: RefCell<FftPlanner<f64>> = RefCell::new(FftPlanner::new());
     /// Hann windows by length, with 1/(N Σw²), for the same reason.
-    static WINDOWS: RefCell<HashMap<usize, (Rc<[f64]>, f64)>> = RefCell::new(HashMap::new());
+    static WINDOWS: RefCell<HashMap<usize, Window>> = RefCell::new(HashMap::new());
 }
 
 /// The periodic Hann window of length `n` and its normalisation 1/(N Σw²), cached per thread.
-fn hann(n: usize) -> (Rc<[f64]>, f64) {
+fn hann(n: usize) -> Window {
     WINDOWS.with(|w| {
         w.borrow_mut()
             .entry(n)
