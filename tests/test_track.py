@@ -67,6 +67,10 @@ def test_bad_arguments_raise_parameter_errors() -> None:
         track.synthetic(length=100.0, band=(50.0, 20.0))
     with pytest.raises(loco.ParameterError, match="length"):
         track.synthetic(length=-1.0)
+    with pytest.raises(loco.ParameterError, match="grid points"):
+        track.synthetic(length=100.0, band=(2.0, 1e12))
+    with pytest.raises(loco.ParameterError, match="seed"):
+        track.synthetic(length=100.0, seed=-1)
 
 
 def test_measured_file_round_trip(tmp_path: Path) -> None:

@@ -154,6 +154,10 @@ def synthetic(
     Reproducible bit for bit from (``seed``, ``stream``) and the other arguments; a batch can
     give run i the stream i.
     """
+    if seed < 0 or stream < 0:
+        raise _loco.ParameterError(
+            f"invalid parameter `seed`/`stream`: must be >= 0, got {seed}/{stream}"
+        )
     lo, hi = band
     native = _loco.synthesize_track(spectrum, length, seed, stream, lo, hi, step, run_in)
     return Track(native)

@@ -75,8 +75,9 @@ pub const BLOCK_SECONDS: f64 = 5.0;
 /// Frequency-weighted rms of acceleration `acc` (m/s²) sampled at `fs` Hz.
 pub fn weighted_rms(acc: &[f64], fs: f64, weighting: ComfortWeighting) -> Result<WeightedRms> {
     check_positive("fs", fs)?;
-    let len = (BLOCK_SECONDS * fs).round() as usize;
-    check_record("acc", acc, fs, len.max(16))?;
+    // At least 16 samples per block (fs ≥ 3.2 Hz) so that a block has a spectrum.
+    let len = ((BLOCK_SECONDS * fs).round() as usize).max(16);
+    check_record("acc", acc, fs, len)?;
     let df = fs / len as f64;
     let mut spectrum = SegmentSpectrum::new(len);
     let blocks: Vec<f64> = segment_starts(acc.len(), len)

@@ -117,7 +117,16 @@ pub fn sperling(
     check_positive("f_min", params.f_min)?;
     check_positive("f_max", params.f_max)?;
     let len = (params.segment_duration * fs).round() as usize;
-    check_record("acc", acc, fs, len.max(16))?;
+    if len < 16 {
+        return Err(LocoError::param(
+            "segment_duration",
+            format!(
+                "{} s at {fs} Hz gives {len} samples per segment, needs at least 16",
+                params.segment_duration
+            ),
+        ));
+    }
+    check_record("acc", acc, fs, len)?;
     let starts = segment_starts(acc.len(), len);
     let mut spectrum = SegmentSpectrum::new(len);
     let df = fs / len as f64;
@@ -292,6 +301,13 @@ mod tests {
         );
         assert!(err.unwrap_err().to_string().contains("too short"));
         assert!(Direction::from_name("up").is_err());
+        let tiny = SperlingParams {
+            segment_duration: 1e-9,
+            ..Default::default()
+        };
+        let acc = sine(0.1, 1.0, 100.0, 9.0);
+        let err = sperling(&acc, 100.0, Direction::Lateral, &tiny).unwrap_err();
+        assert!(err.to_string().contains("segment_duration"));
         assert_eq!(segment_starts(4500, 2500), vec![0, 2000]);
         assert_eq!(segment_starts(2500, 2500), vec![0]);
         assert_eq!(segment_starts(7500, 2500), vec![0, 2500, 5000]);

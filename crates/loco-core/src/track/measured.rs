@@ -120,7 +120,14 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
         Some(h) => check_positive("step", h)?,
         None => median_spacing(&distance),
     };
-    let nodes = (length / step).floor() as usize + 1;
+    let nodes = (length / step).floor() + 1.0;
+    if nodes > 5.0e7 {
+        return Err(LocoError::param(
+            "step",
+            format!("{step} m over {length} m needs {nodes:.0} grid points (max 5e7)"),
+        ));
+    }
+    let nodes = nodes as usize;
     if nodes < 2 {
         return Err(LocoError::param(
             "step",

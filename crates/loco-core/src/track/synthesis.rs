@@ -87,7 +87,7 @@ impl SynthesisParams {
                 ),
             ));
         }
-        let nodes = self.length / self.step;
+        let nodes = (self.length / self.step).max(2.0 * self.wavelength_max / self.step);
         if nodes > 5.0e7 {
             return Err(LocoError::param(
                 "length",
