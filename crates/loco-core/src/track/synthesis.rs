@@ -209,11 +209,22 @@ mod tests {
         // One bin scatters by about 1/√K; an octave band of m bins by 1/√(K m) if bins were
         // independent. Taking only K/2 effective averages (overlap, window correlation), the
         // three-sigma tolerance is 3/√(K m / 2): 15 % for the 4-bin lowest octave, 4 % at the top.
-        let track = synthesize(&SynthesisParams {
-            length: 40_000.0,
-            ..params(0.0, 11)
-        })
-        .unwrap();
+        for spectrum in [
+            TrackSpectrum::CnHsr,
+            TrackSpectrum::GermanLow,
+            TrackSpectrum::GermanHigh,
+        ] {
+            let track = synthesize(&SynthesisParams {
+                spectrum,
+                length: 40_000.0,
+                ..params(0.0, 11)
+            })
+            .unwrap();
+            check_welch_against_target(&track, spectrum);
+        }
+    }
+
+    fn check_welch_against_target(track: &TrackIrregularity, spectrum: TrackSpectrum) {
         let segment = 4096;
         let welch = WelchParams {
             segment_len: Some(segment),
@@ -235,13 +246,14 @@ mod tests {
                 let measured: f64 = bins.iter().map(|&i| psd.density[i]).sum::<f64>();
                 let target: f64 = bins
                     .iter()
-                    .map(|&i| TrackSpectrum::CnHsr.psd(c, psd.frequency[i]))
+                    .map(|&i| spectrum.psd(c, psd.frequency[i]))
                     .sum::<f64>();
                 let tolerance = 3.0 / ((averages * bins.len()) as f64 / 2.0).sqrt();
                 assert!(bins.len() >= 4);
                 assert!(
                     (measured / target - 1.0).abs() < tolerance,
-                    "{c:?} {a:.3}-{b:.3} 1/m: {measured:e} vs {target:e} (tol {tolerance:.3})"
+                    "{spectrum:?} {c:?} {a:.3}-{b:.3} 1/m: {measured:e} vs {target:e} \
+                     (tol {tolerance:.3})"
                 );
             }
         }
