@@ -1,7 +1,8 @@
 """loco: railway vehicle dynamics toolkit (Rust core, Python front end).
 
 The native module ``loco._loco`` is private; use the submodules of this package:
-``loco.profiles``, ``loco.contact``, ``loco.track``, ``loco.metrics``, ``loco.dampers``.
+``loco.profiles``, ``loco.contact``, ``loco.track``, ``loco.metrics``, ``loco.dampers``, and the
+vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`simulate`.
 """
 
 from loco._loco import (
@@ -16,6 +17,8 @@ from loco._loco import (
     SimulationError,
     __version__,
 )
+from loco.simulation import Scenario, SimulationResult, simulate
+from loco.vehicle import Locomotive
 
 __all__ = [
     "ContactError",
@@ -24,8 +27,12 @@ __all__ = [
     "InternalError",
     "LocoError",
     "LocoIOError",
+    "Locomotive",
     "ParameterError",
     "ProfileFormatError",
+    "Scenario",
     "SimulationError",
+    "SimulationResult",
     "__version__",
+    "simulate",
 ]

@@ -365,3 +365,53 @@ def damper_bench_sweep(
     samples_per_cycle: int,
 ) -> _BenchTuple: ...
 def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _BenchTuple: ...
+
+# --- vehicle (vehicle.rs) -----------------------------------------------------------------------
+
+__all__ += [
+    "body_names",
+    "default_vehicle_toml",
+    "dof_names",
+    "simulate",
+    "study_parameters",
+    "vehicle_parameters",
+    "vehicle_total_mass",
+]
+
+def default_vehicle_toml() -> str: ...
+def vehicle_parameters(
+    toml_text: str | None = None,
+    origin: str = "<vehicle>",
+    overrides: dict[str, float] = ...,
+) -> list[tuple[str, float, str, str]]: ...
+def vehicle_total_mass(
+    toml_text: str | None = None,
+    origin: str = "<vehicle>",
+    overrides: dict[str, float] = ...,
+) -> float: ...
+def study_parameters() -> list[tuple[str, str]]: ...
+def dof_names() -> list[str]: ...
+def body_names() -> list[str]: ...
+def simulate(
+    wheel: Profile,
+    rail: Profile,
+    speed: float,
+    distance: float,
+    *,
+    toml_text: str | None = None,
+    origin: str = "<vehicle>",
+    overrides: dict[str, float] = ...,
+    track: Track | None = None,
+    track_kind: str = "synthetic",
+    spectrum: str = "cn-hsr",
+    seed: int = 0,
+    band: tuple[float, float] = (2.0, 200.0),
+    yaw_damper: Damper | None = None,
+    step: float = 5e-4,
+    output_rate: float = 500.0,
+    fastsim_grid: tuple[int, int] = (10, 10),
+    initial_lateral_offset: float = 0.0,
+    gauge: float = 1.435,
+    gauge_height: float = 0.016,
+    rail_inclination: float | None = None,
+) -> tuple[NDArray[np.float64], list[str], NDArray[np.float64], list[str], NDArray[np.float64]]: ...

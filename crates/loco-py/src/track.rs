@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 /// A track irregularity on a uniform grid (SI units: m, m/m).
 #[pyclass(name = "Track", module = "loco._loco", frozen)]
 pub struct PyTrack {
-    inner: TrackIrregularity,
+    pub inner: TrackIrregularity,
 }
 
 #[pymethods]

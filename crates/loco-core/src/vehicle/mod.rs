@@ -20,6 +20,7 @@ pub mod linalg;
 pub mod mass;
 pub mod parameters;
 pub mod run;
+pub mod run_metrics;
 pub mod scenario;
 pub mod simulation;
 pub mod statics;

@@ -1,7 +1,7 @@
 //! Time integration of one run and the output channels it records.
 //!
-//! Channels (SI): carbody floor lateral acceleration at the two Sperling points (floor above each
-//! bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
+//! Channels (SI): carbody floor lateral and vertical acceleration at the two Sperling points (floor
+//! above each bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
 //! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
 //! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the forces of the yaw and secondary
 //! lateral dampers and the frequency-valve scale factor of each yaw damper (0 open, 1 closed).
@@ -60,8 +60,8 @@ impl RunOutput {
 
 /// Where the acceleration channels are measured.
 struct Probes {
-    /// (name, body, point from the body's centre of gravity, m).
-    lateral_acceleration: Vec<(String, usize, [f64; 3])>,
+    /// (name, body, point from the body's centre of gravity, m, component 0..3).
+    acceleration: Vec<(String, usize, [f64; 3], usize)>,
     yaw_dampers: Vec<usize>,
     lateral_dampers: Vec<usize>,
 }
@@ -71,24 +71,28 @@ fn probes(system: &VehicleSystem) -> Result<Probes> {
     let p = &s.parameters;
     let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
     let side = p.get("carbody.sperling_point_lateral_offset")?;
-    let mut lateral_acceleration = Vec::new();
+    let mut acceleration = Vec::new();
     for (b, tag) in ["front", "rear"].iter().enumerate() {
         let x = s.layout.bogie_x[b];
-        lateral_acceleration.push((
-            format!("carbody_floor_ay_{tag}"),
-            BODY_CARBODY,
-            [x, side, floor],
-        ));
+        for (axis, component) in [("ay", Y), ("az", Z)] {
+            acceleration.push((
+                format!("carbody_floor_{axis}_{tag}"),
+                BODY_CARBODY,
+                [x, side, floor],
+                component,
+            ));
+        }
     }
     for b in 0..N_BOGIES {
         let body = body_frame(b);
-        lateral_acceleration.push((format!("frame{}_ay_centre", b + 1), body, [0.0; 3]));
+        acceleration.push((format!("frame{}_ay_centre", b + 1), body, [0.0; 3], Y));
         for w in 2 * b..2 * b + 2 {
             let dx = s.layout.wheelset_x[w] - s.layout.bogie_x[b];
-            lateral_acceleration.push((
+            acceleration.push((
                 format!("frame{}_ay_wheelset{}", b + 1, w + 1),
                 body,
                 [dx, 0.0, 0.0],
+                Y,
             ));
         }
     }
@@ -102,7 +106,7 @@ fn probes(system: &VehicleSystem) -> Result<Probes> {
             .collect::<Vec<_>>()
     };
     Ok(Probes {
-        lateral_acceleration,
+        acceleration,
         yaw_dampers: by_role(DamperRole::Yaw),
         lateral_dampers: by_role(DamperRole::SecondaryLateral),
     })
@@ -126,11 +130,7 @@ pub fn run(
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let probes = probes(system)?;
 
-    let mut names: Vec<String> = probes
-        .lateral_acceleration
-        .iter()
-        .map(|p| p.0.clone())
-        .collect();
+    let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
     for w in 0..N_WHEELSETS {
         names.push(format!("wheelset{}_y", w + 1));
         names.push(format!("wheelset{}_yaw", w + 1));
@@ -199,9 +199,9 @@ fn record(
         channels[c].push(v);
         c += 1;
     };
-    for (_, body, point) in &probes.lateral_acceleration {
+    for (_, body, point, component) in &probes.acceleration {
         let a = s.bodies[*body].map.apply(acc);
-        push(point_motion(&a, *point)[1]);
+        push(point_motion(&a, *point)[*component]);
     }
     for w in 0..N_WHEELSETS {
         push(y[wheelset(w) + Y]);

@@ -226,6 +226,13 @@ pub fn build_track(scenario: &Scenario, structure: &VehicleStructure) -> Result<
     }
 }
 
+/// A run's channels and metrics.
+#[derive(Debug, Clone)]
+pub struct SimulationResult {
+    pub output: RunOutput,
+    pub metrics: crate::metrics::RunMetrics,
+}
+
 /// Simulates a scenario with prepared contact and track (batches share them across samples).
 pub fn simulate_prepared(
     structure: Arc<VehicleStructure>,
@@ -233,9 +240,10 @@ pub fn simulate_prepared(
     track: Arc<TrackIrregularity>,
     scenario: &Scenario,
     cancel: Option<&AtomicBool>,
-) -> Result<RunOutput> {
+) -> Result<SimulationResult> {
     scenario.validate()?;
     let start = start_distance(&structure);
+    let bogie_mass = structure.parameters.get("bogie_frame.mass")?;
     let mut system = VehicleSystem::new(
         structure,
         wheel_rail,
@@ -255,11 +263,13 @@ pub fn simulate_prepared(
         duration: scenario.distance / scenario.speed,
         ..scenario.run
     };
-    run(&mut system, &mut y, &settings, cancel)
+    let output = run(&mut system, &mut y, &settings, cancel)?;
+    let metrics = super::run_metrics::run_metrics(&output, scenario.speed, bogie_mass)?;
+    Ok(SimulationResult { output, metrics })
 }
 
 /// Simulates a scenario for a vehicle parameter set: builds the vehicle, contact and track.
-pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<RunOutput> {
+pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<SimulationResult> {
     scenario.validate()?;
     let structure = Arc::new(VehicleStructure::new(parameters)?);
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);

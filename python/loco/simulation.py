@@ -1,0 +1,145 @@
+"""Simulating the locomotive: scenarios, a single run and its result.
+
+>>> import loco
+>>> result = loco.simulate(loco.Locomotive.default(), loco.Scenario(scenario="S_high", speed=200 / 3.6))
+>>> result.metrics["wy_max"], result.channel("frame1_ay_wheelset1").max()  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from loco import _loco
+from loco.dampers import Damper
+from loco.profiles import Profile, builtin
+from loco.track import Track
+from loco.vehicle import Locomotive
+
+if TYPE_CHECKING:
+    import xarray
+
+__all__ = ["SCENARIOS", "Scenario", "SimulationResult", "simulate"]
+
+FloatArray = npt.NDArray[np.float64]
+
+#: The study's scenarios (SPEC §2): name -> (wheel, rail) built-in profiles.
+SCENARIOS: dict[str, tuple[str, str]] = {
+    "S_low": ("jm3-thin-flange", "cn60"),
+    "S_norm": ("jm3-new", "cn60"),
+    "S_high": ("jm3-worn", "cn60"),
+}
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """What a run is: wheel and rail, speed (m/s), distance (m), track, yaw damper, settings.
+
+    Give either ``scenario`` (``"S_low"``, ``"S_norm"``, ``"S_high"``) or ``wheel`` (a
+    :class:`loco.profiles.Profile` or a built-in name) with an optional ``rail`` (default
+    ``cn60``). The track is ``track`` when given, perfect when ``perfect_track`` is true, and
+    otherwise synthesised from ``spectrum`` (``"cn-hsr"``, ``"german-low"``, ``"german-high"``),
+    ``seed`` and the wavelength ``band`` (m).
+    """
+
+    scenario: str | None = None
+    wheel: Profile | str | None = None
+    rail: Profile | str = "cn60"
+    speed: float = 200.0 / 3.6
+    distance: float = 500.0
+    track: Track | None = None
+    perfect_track: bool = False
+    spectrum: str = "cn-hsr"
+    seed: int = 0
+    band: tuple[float, float] = (2.0, 200.0)
+    yaw_damper: Damper | None = None
+    step: float = 5e-4
+    output_rate: float = 500.0
+    fastsim_grid: tuple[int, int] = (10, 10)
+    initial_lateral_offset: float = 0.0
+
+    def profiles(self) -> tuple[Profile, Profile]:
+        """The wheel and rail profiles of the run."""
+        if self.scenario is not None:
+            if self.scenario not in SCENARIOS:
+                raise _loco.ParameterError(
+                    f"invalid parameter `scenario`: unknown '{self.scenario}', "
+                    f"expected one of {sorted(SCENARIOS)}"
+                )
+            wheel_name, rail_name = SCENARIOS[self.scenario]
+            return builtin(wheel_name), builtin(rail_name)
+        if self.wheel is None:
+            raise _loco.ParameterError("invalid parameter `wheel`: give a wheel or a scenario")
+        wheel = builtin(self.wheel) if isinstance(self.wheel, str) else self.wheel
+        rail = builtin(self.rail) if isinstance(self.rail, str) else self.rail
+        return wheel, rail
+
+
+@dataclass(frozen=True)
+class SimulationResult:
+    """Time histories (SI) and metrics of one run."""
+
+    time: FloatArray
+    channel_names: list[str]
+    channels: FloatArray
+    metrics: dict[str, float]
+    sampling_rate: float
+    parameters: dict[str, Any] = field(default_factory=dict)
+
+    def channel(self, name: str) -> FloatArray:
+        """The channel called ``name`` (see ``channel_names``)."""
+        try:
+            return self.channels[self.channel_names.index(name)]
+        except ValueError:
+            raise _loco.ParameterError(
+                f"invalid parameter `name`: no channel '{name}'; available: {self.channel_names}"
+            ) from None
+
+    def to_xarray(self) -> xarray.Dataset:
+        """The channels as an ``xarray.Dataset`` on a ``time`` coordinate, metrics as attributes."""
+        import xarray
+
+        data = {n: ("time", self.channels[i]) for i, n in enumerate(self.channel_names)}
+        attrs: dict[str, Any] = {f"metric_{k}": v for k, v in self.metrics.items()}
+        attrs["sampling_rate_hz"] = self.sampling_rate
+        attrs["loco_version"] = _loco.__version__
+        return xarray.Dataset(data, coords={"time": self.time}, attrs=attrs)
+
+
+def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
+    """Runs the locomotive through a scenario (static equilibrium, then RK4 in time).
+
+    Raises :class:`loco.ParameterError` for non-physical inputs, :class:`loco.DivergenceError`
+    or :class:`loco.DerailmentError` when the run fails (the message says when and where).
+    """
+    wheel, rail = scenario.profiles()
+    time, names, channels, metric_names, metric_values = _loco.simulate(
+        wheel,
+        rail,
+        float(scenario.speed),
+        float(scenario.distance),
+        toml_text=vehicle.toml_text,
+        origin=vehicle.origin,
+        overrides=dict(vehicle.overrides),
+        track=None if scenario.track is None else scenario.track.native,
+        track_kind="perfect" if scenario.perfect_track else "synthetic",
+        spectrum=scenario.spectrum,
+        seed=int(scenario.seed),
+        band=(float(scenario.band[0]), float(scenario.band[1])),
+        yaw_damper=scenario.yaw_damper,
+        step=float(scenario.step),
+        output_rate=float(scenario.output_rate),
+        fastsim_grid=(int(scenario.fastsim_grid[0]), int(scenario.fastsim_grid[1])),
+        initial_lateral_offset=float(scenario.initial_lateral_offset),
+    )
+    return SimulationResult(
+        time=time,
+        channel_names=list(names),
+        channels=channels,
+        metrics=dict(zip(metric_names, metric_values.tolist(), strict=True)),
+        sampling_rate=float(scenario.output_rate),
+        parameters={"speed": scenario.speed, "distance": scenario.distance},
+    )
