@@ -381,12 +381,12 @@ __all__ += [
 def default_vehicle_toml() -> str: ...
 def vehicle_parameters(
     toml_text: str | None = None,
-    origin: str = "<vehicle>",
+    origin: str = ...,
     overrides: dict[str, float] = ...,
 ) -> list[tuple[str, float, str, str]]: ...
 def vehicle_total_mass(
     toml_text: str | None = None,
-    origin: str = "<vehicle>",
+    origin: str = ...,
     overrides: dict[str, float] = ...,
 ) -> float: ...
 def study_parameters() -> list[tuple[str, str]]: ...
@@ -399,17 +399,17 @@ def simulate(
     distance: float,
     *,
     toml_text: str | None = None,
-    origin: str = "<vehicle>",
+    origin: str = ...,
     overrides: dict[str, float] = ...,
     track: Track | None = None,
-    track_kind: str = "synthetic",
-    spectrum: str = "cn-hsr",
+    track_kind: str = ...,
+    spectrum: str = ...,
     seed: int = 0,
-    band: tuple[float, float] = (2.0, 200.0),
+    band: tuple[float, float] = ...,
     yaw_damper: Damper | None = None,
     step: float = 5e-4,
     output_rate: float = 500.0,
-    fastsim_grid: tuple[int, int] = (10, 10),
+    fastsim_grid: tuple[int, int] = ...,
     initial_lateral_offset: float = 0.0,
     gauge: float = 1.435,
     gauge_height: float = 0.016,

@@ -1,7 +1,8 @@
 """Simulating the locomotive: scenarios, a single run and its result.
 
 >>> import loco
->>> result = loco.simulate(loco.Locomotive.default(), loco.Scenario(scenario="S_high", speed=200 / 3.6))
+>>> scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6)
+>>> result = loco.simulate(loco.Locomotive.default(), scenario)  # doctest: +SKIP
 >>> result.metrics["wy_max"], result.channel("frame1_ay_wheelset1").max()  # doctest: +SKIP
 """
 

@@ -92,11 +92,14 @@ fn inertia3(p: &ParameterSet, section: &str, names: [&str; 3]) -> Result<[f64; 3
     ])
 }
 
+/// (name, mass, inertia, position, spin momentum per speed) while building.
+type BodyRecord = (String, f64, [f64; 3], [f64; 3], f64);
+
 /// Builds the 25 bodies in body-number order.
 pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
     let r0 = layout.wheel_radius;
     let mut dense: Vec<DenseMap> = Vec::with_capacity(N_BODIES);
-    let mut bodies: Vec<(String, f64, [f64; 3], [f64; 3], f64)> = Vec::with_capacity(N_BODIES);
+    let mut bodies: Vec<BodyRecord> = Vec::with_capacity(N_BODIES);
     let names = body_names();
     let standard = ["roll_inertia", "pitch_inertia", "yaw_inertia"];
 

@@ -10,7 +10,7 @@
 /// A first-order system `ẏ = f(t, y)` with discrete updates between steps.
 pub trait OdeSystem {
     /// Number of continuous states.
-    fn len(&self) -> usize;
+    fn dimension(&self) -> usize;
     /// Writes `f(t, y)` into `dydt`.
     fn derivatives(&mut self, t: f64, y: &[f64], dydt: &mut [f64]);
     /// Called after each accepted step with the new time and state (discrete updates, checks).
@@ -41,22 +41,20 @@ impl Rk4Workspace {
 
     /// Advances `y` from `t` to `t + dt` (s) in one RK4 step.
     pub fn step<S: OdeSystem>(&mut self, system: &mut S, t: f64, dt: f64, y: &mut [f64]) {
-        let n = y.len();
+        fn stage(out: &mut [f64], y: &[f64], h: f64, k: &[f64]) {
+            for ((o, yi), ki) in out.iter_mut().zip(y).zip(k) {
+                *o = yi + h * ki;
+            }
+        }
         system.derivatives(t, y, &mut self.k1);
-        for i in 0..n {
-            self.stage[i] = y[i] + 0.5 * dt * self.k1[i];
-        }
+        stage(&mut self.stage, y, 0.5 * dt, &self.k1);
         system.derivatives(t + 0.5 * dt, &self.stage, &mut self.k2);
-        for i in 0..n {
-            self.stage[i] = y[i] + 0.5 * dt * self.k2[i];
-        }
+        stage(&mut self.stage, y, 0.5 * dt, &self.k2);
         system.derivatives(t + 0.5 * dt, &self.stage, &mut self.k3);
-        for i in 0..n {
-            self.stage[i] = y[i] + dt * self.k3[i];
-        }
+        stage(&mut self.stage, y, dt, &self.k3);
         system.derivatives(t + dt, &self.stage, &mut self.k4);
-        for i in 0..n {
-            y[i] += dt / 6.0 * (self.k1[i] + 2.0 * self.k2[i] + 2.0 * self.k3[i] + self.k4[i]);
+        for (i, yi) in y.iter_mut().enumerate() {
+            *yi += dt / 6.0 * (self.k1[i] + 2.0 * self.k2[i] + 2.0 * self.k3[i] + self.k4[i]);
         }
         system.after_step(t + dt, dt, y);
     }
@@ -72,7 +70,7 @@ mod tests {
     }
 
     impl OdeSystem for Oscillator {
-        fn len(&self) -> usize {
+        fn dimension(&self) -> usize {
             2
         }
         fn derivatives(&mut self, _t: f64, y: &[f64], dydt: &mut [f64]) {

@@ -37,6 +37,8 @@ impl DenseMap {
     /// vehicle axes), with its centre of gravity at `r_cg` (m, from the joint). `inherit[k]` says
     /// whether rotation k (roll, pitch, yaw) follows the parent; `relative` lists
     /// (motion component 0..6, coordinate index) of the body's own coordinates.
+    // Each index addresses the same column of several rows at once.
+    #[allow(clippy::needless_range_loop)]
     pub fn attached(
         parent: &DenseMap,
         r_joint: [f64; 3],

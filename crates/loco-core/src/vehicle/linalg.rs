@@ -26,7 +26,7 @@ impl Lu {
             let (p, max) = (k..n)
                 .map(|i| (i, a[i * n + k].abs()))
                 .fold((k, -1.0), |acc, x| if x.1 > acc.1 { x } else { acc });
-            if !(max > 1e-14 * scale) {
+            if max.is_nan() || max <= 1e-14 * scale {
                 return Err(LocoError::input(
                     what,
                     format!(

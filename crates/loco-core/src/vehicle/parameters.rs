@@ -107,8 +107,13 @@ impl ParameterSet {
     pub fn set(&mut self, name: &str, value: f64) -> Result<()> {
         let key = resolve_name(name);
         if !value.is_finite() {
+            let label = if key == name {
+                key.to_string()
+            } else {
+                format!("{name} ({key})")
+            };
             return Err(LocoError::param(
-                key,
+                label,
                 format!("must be finite, got {value}"),
             ));
         }

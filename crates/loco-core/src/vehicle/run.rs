@@ -151,8 +151,8 @@ pub fn run(
     let mut channels: Vec<Vec<f64>> = vec![Vec::with_capacity(n_samples); names.len()];
     let mut time = Vec::with_capacity(n_samples);
 
-    let mut workspace = Rk4Workspace::new(system.len());
-    let mut dy = vec![0.0; system.len()];
+    let mut workspace = Rk4Workspace::new(system.dimension());
+    let mut dy = vec![0.0; system.dimension()];
     let mut t = 0.0;
     let total_steps = (n_samples - 1) * steps_per_sample;
     for step in 0..=total_steps {

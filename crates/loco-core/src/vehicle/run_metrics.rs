@@ -31,3 +31,42 @@ pub fn run_metrics(output: &RunOutput, speed: f64, bogie_mass: f64) -> Result<Ru
         &RunMetricsParams::default(),
     )
 }
+
+/// Metrics of a run too short to evaluate (under one 5 s Sperling segment): NaN, flags false.
+pub fn undefined_metrics() -> RunMetrics {
+    RunMetrics {
+        wy_mean: f64::NAN,
+        wy_max: f64::NAN,
+        wz_mean: f64::NAN,
+        wz_max: f64::NAN,
+        ayc_rms: f64::NAN,
+        ayc_peak: f64::NAN,
+        ayc_dominant_hz: f64::NAN,
+        ayc_psd_peak: f64::NAN,
+        ayc_wd_p95: f64::NAN,
+        azc_wb_p95: f64::NAN,
+        nmv: f64::NAN,
+        ayb_rms: f64::NAN,
+        ayb_peak_lp: f64::NAN,
+        ayb_gbt_cycles: f64::NAN,
+        ayb_gbt_unstable: false,
+        ayb_f0_hz: f64::NAN,
+        ayb_psd_peak: f64::NAN,
+        ayb_en_rms: f64::NAN,
+        ayb_en_limit: f64::NAN,
+        ayb_en_unstable: false,
+    }
+}
+
+/// [`run_metrics`], or [`undefined_metrics`] when the run is shorter than the metrics need.
+pub fn run_metrics_or_undefined(
+    output: &RunOutput,
+    speed: f64,
+    bogie_mass: f64,
+) -> Result<RunMetrics> {
+    let needed = crate::metrics::SperlingParams::default().segment_duration;
+    if (output.time.len() as f64) < needed * output.sampling_rate {
+        return Ok(undefined_metrics());
+    }
+    run_metrics(output, speed, bogie_mass)
+}

@@ -264,7 +264,8 @@ pub fn simulate_prepared(
         ..scenario.run
     };
     let output = run(&mut system, &mut y, &settings, cancel)?;
-    let metrics = super::run_metrics::run_metrics(&output, scenario.speed, bogie_mass)?;
+    let metrics =
+        super::run_metrics::run_metrics_or_undefined(&output, scenario.speed, bogie_mass)?;
     Ok(SimulationResult { output, metrics })
 }
 

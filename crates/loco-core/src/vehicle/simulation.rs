@@ -37,7 +37,8 @@ pub struct VehicleSystem {
     pub(crate) body_states: BodyStates,
     wrenches: Wrenches,
     gen_force: Vec<f64>,
-    pub(crate) wheel_forces: [[WheelForces; 2]; N_WHEELSETS],
+    /// Wheel-rail forces of the last evaluation, per wheelset `[left, right]`.
+    pub wheel_forces: [[WheelForces; 2]; N_WHEELSETS],
     pub(crate) damper_forces: Vec<f64>,
 }
 
@@ -194,7 +195,7 @@ impl VehicleSystem {
 }
 
 impl OdeSystem for VehicleSystem {
-    fn len(&self) -> usize {
+    fn dimension(&self) -> usize {
         self.n_states
     }
 

@@ -194,12 +194,11 @@ impl WheelRail {
                         &creep,
                     )
                 };
-                let mut f = [0.0; 3];
-                for k in 0..3 {
-                    f[k] = normal * frame.normal[k]
+                let f: [f64; 3] = std::array::from_fn(|k| {
+                    normal * frame.normal[k]
                         + tangential.fx * frame.longitudinal[k]
-                        + tangential.fy * frame.lateral[k];
-                }
+                        + tangential.fy * frame.lateral[k]
+                });
                 add_force(wrenches, body, &u_lever, offset, f);
                 for k in 0..3 {
                     wrenches[body][3 + k] += tangential.mz * frame.normal[k];

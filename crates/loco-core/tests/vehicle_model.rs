@@ -1,0 +1,315 @@
+//! Verification of the 90-DOF locomotive against independent results: static equilibrium, rest
+//! on perfect track, symmetry, Klingel's kinematic wavelength, stability, determinism.
+
+use loco_core::contact::hertz_table::HertzShapeTable;
+use loco_core::contact::kalker::KalkerTable;
+use loco_core::contact::profile::ProfileKind;
+use loco_core::contact::profile_builder::ProfileBuilder;
+use loco_core::dampers::Damper;
+use loco_core::track::TrackIrregularity;
+use loco_core::vehicle::integrator::OdeSystem;
+use loco_core::vehicle::layout::*;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
+};
+use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::statics::{static_equilibrium, STATIC_TANGENTIAL_STIFFNESS};
+use loco_core::vehicle::structure::VehicleStructure;
+use std::sync::Arc;
+
+fn perfect(name: &str, speed: f64, distance: f64) -> Scenario {
+    let mut s = Scenario::study(name, speed, distance, 0).unwrap();
+    s.track = TrackSpec::Perfect;
+    s
+}
+
+fn system(parameters: ParameterSet, scenario: &Scenario) -> VehicleSystem {
+    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
+    let wr = Arc::new(build_wheel_rail(&structure.parameters, scenario).unwrap());
+    let track = Arc::new(build_track(scenario, &structure).unwrap());
+    let start = start_distance(&structure);
+    VehicleSystem::new(structure, wr, track, scenario.speed, start, None, 5e-4).unwrap()
+}
+
+#[test]
+fn static_wheel_loads_carry_the_weight_equally() {
+    let scenario = perfect("S_norm", 50.0, 100.0);
+    let mut sys = system(ParameterSet::default_vehicle(), &scenario);
+    let y = static_equilibrium(&mut sys).unwrap();
+    // Evaluate as the static search does (wheels held, nothing rolling).
+    sys.static_stiffness = STATIC_TANGENTIAL_STIFFNESS;
+    let mut dy = vec![0.0; sys.dimension()];
+    sys.derivatives(0.0, &y, &mut dy);
+    let weight = sys.structure.total_mass() * sys.structure.gravity;
+    let loads: Vec<f64> = sys
+        .wheel_forces
+        .iter()
+        .flatten()
+        .map(|f| f.vertical)
+        .collect();
+    let total: f64 = loads.iter().sum();
+    assert!(
+        (total - weight).abs() < 1e-6 * weight,
+        "{total} vs {weight}"
+    );
+    let mean = total / 8.0;
+    for q in &loads {
+        assert!(
+            (q - mean).abs() < 1e-3 * mean,
+            "unequal wheel loads {loads:?}"
+        );
+    }
+    // In equilibrium nothing accelerates.
+    let max_acc = dy[N_DOF..2 * N_DOF]
+        .iter()
+        .fold(0.0_f64, |m, a| m.max(a.abs()));
+    assert!(max_acc < 1e-6, "residual acceleration {max_acc}");
+}
+
+#[test]
+fn vehicle_on_perfect_track_stays_at_rest() {
+    let result = simulate(
+        ParameterSet::default_vehicle(),
+        &perfect("S_high", 200.0 / 3.6, 300.0),
+    )
+    .unwrap();
+    for name in [
+        "carbody_floor_ay_front",
+        "frame1_ay_wheelset1",
+        "wheelset1_y",
+        "wheelset4_yaw",
+    ] {
+        let peak = result
+            .output
+            .channel(name)
+            .unwrap()
+            .iter()
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
+        assert!(peak < 1e-9, "{name} moved: {peak}");
+    }
+}
+
+#[test]
+fn symmetric_vertical_input_gives_no_lateral_response() {
+    // Vertical profile only (both rails up and down together): the vehicle is symmetric about
+    // its centre plane, so no lateral motion may appear.
+    let n = 2700;
+    let step = 0.1;
+    let profile: Vec<f64> = (0..n)
+        .map(|i| 2e-3 * (i as f64 * step * 2.0 * std::f64::consts::PI / 13.0).sin())
+        .collect();
+    let slope: Vec<f64> = (0..n)
+        .map(|i| {
+            2e-3 * 2.0 * std::f64::consts::PI / 13.0
+                * (i as f64 * step * 2.0 * std::f64::consts::PI / 13.0).cos()
+        })
+        .collect();
+    let zeros = vec![0.0; n];
+    let values = [profile, zeros.clone(), zeros.clone(), zeros.clone()];
+    let slopes = [slope, zeros.clone(), zeros.clone(), zeros];
+    let track = TrackIrregularity::from_channels(step, &values, &slopes, 10.0, None).unwrap();
+    let mut scenario = perfect("S_norm", 160.0 / 3.6, 240.0);
+    scenario.track = TrackSpec::Given(Arc::new(track));
+    let result = simulate(ParameterSet::default_vehicle(), &scenario).unwrap();
+    let vertical = result
+        .output
+        .channel("carbody_floor_az_front")
+        .unwrap()
+        .iter()
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    assert!(
+        vertical > 1e-3,
+        "the input must excite the vehicle vertically ({vertical})"
+    );
+    for name in ["carbody_floor_ay_front", "frame1_ay_centre", "wheelset2_y"] {
+        let peak = result
+            .output
+            .channel(name)
+            .unwrap()
+            .iter()
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
+        assert!(peak < 1e-9, "{name}: {peak}");
+    }
+}
+
+#[test]
+fn same_inputs_give_bit_identical_results() {
+    let scenario = Scenario::study("S_high", 200.0 / 3.6, 300.0, 7).unwrap();
+    let a = simulate(ParameterSet::default_vehicle(), &scenario).unwrap();
+    let b = simulate(ParameterSet::default_vehicle(), &scenario).unwrap();
+    assert_eq!(a.output, b.output);
+    assert_eq!(a.metrics.values(), b.metrics.values());
+}
+
+/// A conical wheel (conicity `lambda`, no flange) on a rail with a sharp (10 mm) crown, the
+/// textbook set-up of Klingel's analysis: the contact stays at the crown, the contact angle is the
+/// cone's, so Δr = 2·λ_eff·y (λ_eff includes the wheelset's roll) and no gravitational stiffness
+/// from a changing contact angle enters.
+fn conical_scenario(lambda: f64, speed: f64, distance: f64) -> Scenario {
+    let wheel = ProfileBuilder::new(-0.065, -0.065 * lambda, lambda.atan())
+        .line(0.14)
+        .build("cone", ProfileKind::Wheel, 5e-4)
+        .unwrap();
+    let flank = 80f64.to_radians();
+    let rail = ProfileBuilder::new(-0.02, -0.04, flank)
+        .line(0.03)
+        .arc(0.01, -2.0 * flank)
+        .line(0.03)
+        .build("sharp crown", ProfileKind::Rail, 2e-4)
+        .unwrap();
+    let mut s = perfect("S_norm", speed, distance);
+    s.wheel = wheel;
+    s.rail = rail;
+    s.initial_lateral_offset = 2e-3;
+    s
+}
+
+/// Wavelength (m) of a decaying or steady oscillation from its upward zero crossings.
+fn wavelength(signal: &[f64], fs: f64, speed: f64) -> f64 {
+    let crossings: Vec<f64> = signal
+        .windows(2)
+        .enumerate()
+        .filter(|(_, w)| w[0] < 0.0 && w[1] >= 0.0)
+        .map(|(i, w)| (i as f64 + w[0] / (w[0] - w[1])) / fs)
+        .collect();
+    assert!(crossings.len() >= 3, "too few cycles: {}", crossings.len());
+    let periods = crossings.len() - 1;
+    speed * (crossings[periods] - crossings[0]) / periods as f64
+}
+
+/// Kinematic quantities of the conical contact from its table: effective conicity λ (Δr/2y),
+/// half distance between contact points e (m), centred rolling radius r0 (m), roll per lateral
+/// displacement φ' (rad/m) and the ratio C22/C11 of Kalker's coefficients of the static contact.
+struct Kinematics {
+    lambda: f64,
+    e: f64,
+    r0: f64,
+    roll_slope: f64,
+    c22_over_c11: f64,
+}
+
+fn kinematics(parameters: &ParameterSet, scenario: &Scenario) -> Kinematics {
+    let wr = build_wheel_rail(parameters, scenario).unwrap();
+    let y = 1e-3;
+    let c = wr.table().lookup(y);
+    let centre = wr.table().lookup(0.0);
+    let point = centre.wheels[0].touching().unwrap();
+    // Static wheel load and its Hertz ellipse give a/b, hence Kalker's C11, C22.
+    let structure = VehicleStructure::new(parameters.clone()).unwrap();
+    let load = structure.total_mass() * structure.gravity / 8.0;
+    let e_star = 2.1e11 / (2.0 * (1.0 - 0.28 * 0.28));
+    let hertz = HertzShapeTable::new()
+        .coefficients(
+            0.5 / point.rolling_radius,
+            0.5 * (point.wheel_curvature + point.rail_curvature),
+            e_star,
+        )
+        .unwrap()
+        .contact(load);
+    let k = KalkerTable::new(0.28)
+        .unwrap()
+        .coefficients(hertz.semi_axis_long / hertz.semi_axis_lat);
+    Kinematics {
+        lambda: c.rolling_radius_difference() / (2.0 * y),
+        e: point.lateral,
+        r0: wr.centred_radius(),
+        roll_slope: c.roll / y,
+        c22_over_c11: k.c22 / k.c11,
+    }
+}
+
+#[test]
+fn free_wheelset_reproduces_klingels_wavelength() {
+    // Primary positioning and the drive's coupling made negligible: each wheelset runs free, and
+    // at 5 m/s creep dominates inertia, so the motion is kinematic. Klingel: L = 2π√(r0·e/λ).
+    // The contact point also moves sideways with the wheelset's roll (r·φ̇, φ = φ'·y), so
+    // creep-free rolling has (1 + r0·φ')·ẏ = V·ψ and L = 2π√(r0·e·(1 + r0·φ')/λ).
+    let mut p = ParameterSet::default_vehicle();
+    for key in ["K_px", "K_py"] {
+        p.set(key, 1e3).unwrap();
+    }
+    for key in [
+        "hollow_shaft.coupling_lateral_stiffness",
+        "hollow_shaft.coupling_angular_stiffness",
+    ] {
+        p.set(key, 1.0).unwrap();
+    }
+    let speed = 5.0;
+    let scenario = conical_scenario(0.05, speed, 150.0);
+    let k = kinematics(&p, &scenario);
+    let klingel =
+        2.0 * std::f64::consts::PI * (k.r0 * k.e * (1.0 + k.r0 * k.roll_slope) / k.lambda).sqrt();
+    let result = simulate(p, &scenario).unwrap();
+    let measured = wavelength(result.output.channel("wheelset1_y").unwrap(), 500.0, speed);
+    assert!(
+        (measured / klingel - 1.0).abs() < 0.01,
+        "measured {measured:.2} m, Klingel {klingel:.2} m (λ = {:.4}, r0·φ' = {:.4})",
+        k.lambda,
+        k.r0 * k.roll_slope
+    );
+}
+
+#[test]
+fn rigid_bogie_reproduces_its_wavelength_formula() {
+    // Stiff primary positioning, soft secondary suspension: each bogie is a rigid truck whose
+    // kinematic wavelength (creep equilibrium of lateral force and yaw moment, Wickens) is
+    // L = 2π√(r0·(1 + r0·φ')·(e/λ)·(1 + (C22/C11)·(b/e)²·(1 + r0·φ'))), b the half wheelbase;
+    // with C22 = C11 and no roll term this is the textbook L_wheelset·√(1 + (b/e)²).
+    let mut p = ParameterSet::default_vehicle();
+    p.set("K_px", 1e9).unwrap();
+    p.set("K_py", 1e9).unwrap();
+    p.set("C_sx", 1e4).unwrap();
+    p.set("C_sy", 1e4).unwrap();
+    for key in [
+        "secondary.flexicoil_longitudinal_stiffness",
+        "secondary.flexicoil_lateral_stiffness",
+        "secondary.flexicoil_bending_stiffness",
+    ] {
+        p.set(key, 1.0).unwrap();
+    }
+    for key in [
+        "hollow_shaft.coupling_lateral_stiffness",
+        "hollow_shaft.coupling_angular_stiffness",
+    ] {
+        p.set(key, 1.0).unwrap();
+    }
+    let speed = 5.0;
+    let scenario = conical_scenario(0.05, speed, 250.0);
+    let k = kinematics(&p, &scenario);
+    let b = p.get("layout.half_wheelbase").unwrap();
+    let roll = 1.0 + k.r0 * k.roll_slope;
+    let expected = 2.0
+        * std::f64::consts::PI
+        * (k.r0 * roll * k.e / k.lambda * (1.0 + k.c22_over_c11 * (b / k.e).powi(2) * roll)).sqrt();
+    let result = simulate(p, &scenario).unwrap();
+    let measured = wavelength(result.output.channel("wheelset1_y").unwrap(), 500.0, speed);
+    assert!(
+        (measured / expected - 1.0).abs() < 0.02,
+        "measured {measured:.2} m, formula {expected:.2} m (C22/C11 = {:.3})",
+        k.c22_over_c11
+    );
+}
+
+#[test]
+fn disturbance_decays_below_and_persists_above_the_critical_speed() {
+    let amplitude = |speed_kmh: f64| {
+        let mut s = perfect("S_high", speed_kmh / 3.6, speed_kmh / 3.6 * 6.0);
+        s.yaw_damper = Some(Damper::yd1());
+        s.initial_lateral_offset = 3e-3;
+        let r = simulate(ParameterSet::default_vehicle(), &s).unwrap();
+        let y = r.output.channel("wheelset1_y").unwrap();
+        let tail = &y[y.len() - 500..];
+        tail.iter().fold(0.0_f64, |m, v| m.max(v.abs()))
+    };
+    let slow = amplitude(80.0);
+    let fast = amplitude(300.0);
+    assert!(
+        slow < 3e-4,
+        "at 80 km/h the disturbance should decay: {slow}"
+    );
+    assert!(
+        fast > 2e-3,
+        "at 300 km/h a limit cycle should remain: {fast}"
+    );
+}

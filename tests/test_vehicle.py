@@ -1,0 +1,77 @@
+"""The vehicle API: parameters with sources, overrides, input checks, one simulated run."""
+
+import math
+
+import numpy as np
+import pytest
+
+import loco
+
+
+def test_default_vehicle_parameters_have_sources_and_units() -> None:
+    params = loco.Locomotive.default().parameters()
+    assert params["carbody.mass"].value == 42e3
+    assert params["secondary.yaw_damper_damping"].value == 800e3
+    for p in params.values():
+        assert p.source.strip() and p.unit.strip(), p.name
+    assert len(loco.vehicle.dof_names()) == 90
+    assert len(loco.vehicle.body_names()) == 25
+    assert loco.Locomotive.default().total_mass() == pytest.approx(75_418.0)
+
+
+def test_overrides_by_key_and_study_alias() -> None:
+    base = loco.Locomotive.default()
+    soft = base.replace(C_sx=2e5, K_py=5e6)
+    assert soft["secondary.yaw_damper_damping"] == 2e5
+    assert soft["K_py"] == 5e6
+    assert base["C_sx"] == 800e3  # immutable
+    other = base.replace({"carbody.cog_height": 1.8})
+    assert other["carbody.cog_height"] == 1.8
+
+
+@pytest.mark.parametrize(
+    ("overrides", "name"),
+    [
+        ({"bogie_frame.mass": -1.0}, "bogie_frame.mass"),
+        ({"K_px": math.nan}, "K_px"),
+        ({"secondary.no_such_thing": 1.0}, "secondary.no_such_thing"),
+    ],
+)
+def test_non_physical_parameters_are_refused_by_name(overrides: dict, name: str) -> None:
+    with pytest.raises(loco.ParameterError, match=name):
+        loco.Locomotive(overrides=overrides)
+
+
+def test_bad_scenarios_raise_typed_errors() -> None:
+    vehicle = loco.Locomotive.default()
+    with pytest.raises(loco.ParameterError, match="speed"):
+        loco.simulate(vehicle, loco.Scenario(scenario="S_high", speed=0.0, distance=50.0))
+    with pytest.raises(loco.ParameterError, match="speed"):
+        loco.simulate(vehicle, loco.Scenario(scenario="S_high", speed=200.0, distance=50.0))
+    with pytest.raises(loco.ParameterError, match="scenario"):
+        loco.simulate(vehicle, loco.Scenario(scenario="S_nope"))
+
+
+def test_short_run_on_perfect_track_returns_channels() -> None:
+    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=40.0, perfect_track=True)
+    result = loco.simulate(loco.Locomotive.default(), scenario)
+    assert result.channels.shape == (len(result.channel_names), result.time.size)
+    assert result.time[1] - result.time[0] == pytest.approx(1 / 500)
+    assert np.max(np.abs(result.channel("wheelset1_y"))) < 1e-9
+    # Under one 5 s Sperling segment the metrics are undefined, not invented.
+    assert math.isnan(result.metrics["wy_max"])
+    ds = result.to_xarray()
+    assert "frame1_ay_wheelset1" in ds
+    with pytest.raises(loco.ParameterError, match="no channel"):
+        result.channel("nothing")
+
+
+def test_full_run_gives_metrics_and_fsd_valve_state() -> None:
+    scenario = loco.Scenario(
+        scenario="S_high", speed=200 / 3.6, distance=300.0, seed=3, yaw_damper=loco.dampers.FSD
+    )
+    result = loco.simulate(loco.Locomotive.default(), scenario)
+    assert 0.5 < result.metrics["wy_max"] < 5.0
+    assert result.metrics["ayb_peak_lp"] > 0.0
+    valve = result.channel("yaw_damper_bogie1_left_valve")
+    assert np.all((valve >= 0.0) & (valve <= 1.0))
