@@ -96,3 +96,12 @@ def test_setup_errors_name_the_parameter(
         contact.geometry(rail, rail, [0.0])
     with pytest.raises(loco.ContactError):
         contact.geometry(wheel, rail, [0.2], **BENCHMARK_SETUP)  # type: ignore[arg-type]
+
+
+def test_contact_module_exposes_conicity_and_creep() -> None:
+    import loco.contact
+
+    tan_gamma = loco.contact.equivalent_conicity("jm3-worn", "cn60", amplitude=0.003)
+    assert 0.35 < tan_gamma < 1.05
+    forces = loco.contact.fastsim(6e-3, 5e-3, 1e5, 0.0, 1e-3, 0.0)
+    assert forces.fy < 0.0  # opposes the positive lateral creepage

@@ -198,3 +198,19 @@ def rolling_radius_difference(
         nominal_radius_left=kwargs["nominal_radius_left"],
         nominal_radius_right=kwargs["nominal_radius_right"],
     )
+
+
+# The contact API of the issue in one place: conicity (EN 15302) and Hertz/creep live in their own
+# modules, imported last because `loco.conicity` builds on this module.
+from loco.conicity import ConicityCurve, conicity_curve, equivalent_conicity  # noqa: E402
+from loco.creep import fastsim, hertz, kalker_coefficients, linear_creep_forces  # noqa: E402
+
+__all__ += [
+    "ConicityCurve",
+    "conicity_curve",
+    "equivalent_conicity",
+    "fastsim",
+    "hertz",
+    "kalker_coefficients",
+    "linear_creep_forces",
+]
