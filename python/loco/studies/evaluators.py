@@ -31,7 +31,7 @@ FloatArray = npt.NDArray[np.float64]
 class Evaluator(Protocol):
     """``(params (n, k) in SI, parameter names) -> metrics (n, m)``, NaN for failed samples."""
 
-    def __call__(self, params: FloatArray, names: Sequence[str]) -> FloatArray: ...
+    def __call__(self, params: FloatArray, names: Sequence[str], /) -> FloatArray: ...
 
 
 def evaluate_checked(
