@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -83,3 +84,18 @@ def test_spread_and_verification() -> None:
     off = verify_points(res, idx, biased)
     np.testing.assert_allclose(off["f2_error"], -0.1, atol=1e-12)
     assert list(off["pareto_index"]) == list(idx)
+
+
+def test_failed_points_are_infeasible() -> None:
+    box = [StudyParameter(f"z{i}", 0.0, 1.0, "-", "-", 1.0) for i in range(3)]
+
+    def failing_zdt1(x: F64, names: Sequence[str]) -> F64:
+        f = zdt1(x, names)
+        f[x[:, 0] > 0.8] = np.nan  # a failed simulation
+        return f
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        res = nsga2(failing_zdt1, ["f1", "f2"], box, pop_size=30, n_gen=30, seed=0, progress=False)
+    assert np.isfinite(res.f).all() and np.all(res.x[:, 0] <= 0.8)
+    assert res.f[:, 0].max() > 0.6

@@ -82,9 +82,10 @@ def nsga2(
     """Minimise every column of ``evaluate`` over the parameters' box with NSGA-II.
 
     pymoo's defaults: binary tournament, SBX crossover, polynomial mutation, duplicates
-    eliminated. The run is deterministic for a given ``seed`` (pymoo seeds its generators from
-    it). A NaN objective (failed sample) is treated as +inf, i.e. dominated. A progress bar
-    counts generations.
+    eliminated. The run is deterministic for a given ``seed`` (pymoo seeds its own generator
+    from it). A point with a NaN objective (failed sample) is made infeasible through one
+    inequality constraint (g = 1 failed, −1 ok): Deb's constraint domination ranks it behind every
+    feasible point, and it never enters the returned set. A progress bar counts generations.
     """
     from pymoo.algorithms.moo.nsga2 import NSGA2
     from pymoo.core.callback import Callback
@@ -97,11 +98,19 @@ def nsga2(
 
     class _Problem(Problem):
         def __init__(self) -> None:
-            super().__init__(n_var=len(parameters), n_obj=n_obj, xl=bounds[:, 0], xu=bounds[:, 1])
+            super().__init__(
+                n_var=len(parameters),
+                n_obj=n_obj,
+                n_ieq_constr=1,
+                xl=bounds[:, 0],
+                xu=bounds[:, 1],
+            )
 
         def _evaluate(self, x: FloatArray, out: dict[str, Any], *args: Any, **kw: Any) -> None:
             f = evaluate_checked(evaluate, x, column_names, n_obj)
-            out["F"] = np.where(np.isnan(f), np.inf, f)
+            failed = np.asarray(~np.isfinite(f).all(axis=1), dtype=bool)
+            out["F"] = np.where(failed[:, None], 0.0, f)
+            out["G"] = np.where(failed, 1.0, -1.0)[:, None]
 
     bar = tqdm(total=n_gen, desc="NSGA-II generations", disable=not progress)
 
@@ -121,6 +130,8 @@ def nsga2(
         )
     finally:
         bar.close()
+    if res.X is None:
+        raise RuntimeError("nsga2: every evaluated point failed (NaN objectives)")
     x = np.atleast_2d(np.asarray(res.X, dtype=np.float64))
     f = np.atleast_2d(np.asarray(res.F, dtype=np.float64))
     order = np.argsort(f[:, 0], kind="stable")
