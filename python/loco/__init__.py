@@ -18,6 +18,7 @@ from loco._loco import (
     __version__,
 )
 from loco.simulation import Scenario, SimulationResult, simulate
+from loco.stability import critical_speed, eigen
 from loco.vehicle import Locomotive
 
 __all__ = [
@@ -34,5 +35,7 @@ __all__ = [
     "SimulationError",
     "SimulationResult",
     "__version__",
+    "critical_speed",
+    "eigen",
     "simulate",
 ]

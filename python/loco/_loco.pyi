@@ -372,6 +372,7 @@ __all__ += [
     "body_names",
     "default_vehicle_toml",
     "dof_names",
+    "linearise",
     "simulate",
     "study_parameters",
     "vehicle_parameters",
@@ -407,7 +408,7 @@ def simulate(
     seed: int = 0,
     band: tuple[float, float] = ...,
     yaw_damper: Damper | None = None,
-    step: float = 5e-4,
+    step: float = 1e-3,
     output_rate: float = 500.0,
     fastsim_grid: tuple[int, int] = ...,
     initial_lateral_offset: float = 0.0,
@@ -415,3 +416,14 @@ def simulate(
     gauge_height: float = 0.016,
     rail_inclination: float | None = None,
 ) -> tuple[NDArray[np.float64], list[str], NDArray[np.float64], list[str], NDArray[np.float64]]: ...
+def linearise(
+    wheel: Profile,
+    rail: Profile,
+    speed: float,
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+    yaw_damper: Damper | None = None,
+    fastsim_grid: tuple[int, int] = ...,
+) -> NDArray[np.float64]: ...

@@ -57,7 +57,7 @@ class Scenario:
     seed: int = 0
     band: tuple[float, float] = (2.0, 200.0)
     yaw_damper: Damper | None = None
-    step: float = 5e-4
+    step: float = 1e-3
     output_rate: float = 500.0
     fastsim_grid: tuple[int, int] = (10, 10)
     initial_lateral_offset: float = 0.0

@@ -11,7 +11,7 @@ use loco_core::track::{SynthesisParams, TrackSpectrum};
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
 use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunSettings;
-use loco_core::vehicle::scenario::{simulate as core_simulate, Scenario, TrackSpec};
+use loco_core::vehicle::scenario::{linearised, simulate as core_simulate, Scenario, TrackSpec};
 use loco_core::vehicle::structure::VehicleStructure;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
@@ -110,7 +110,7 @@ type SimulationTuple<'py> = (
 #[pyo3(signature = (
     wheel, rail, speed, distance, *, toml_text=None, origin="<vehicle>".to_string(),
     overrides=BTreeMap::new(), track=None, track_kind="synthetic".to_string(),
-    spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=5e-4,
+    spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
     output_rate=500.0, fastsim_grid=(10, 10), initial_lateral_offset=0.0,
     gauge=1.435, gauge_height=0.016, rail_inclination=None
 ))]
@@ -203,6 +203,54 @@ fn simulate<'py>(
     ))
 }
 
+/// The state matrix of the vehicle linearised about its static equilibrium at `speed` (m/s) on
+/// perfect track (see `loco.eigen`): a square numpy array over (coordinates, velocities, damper
+/// internal states).
+#[pyfunction]
+#[pyo3(signature = (
+    wheel, rail, speed, *, toml_text=None, origin="<vehicle>".to_string(),
+    overrides=BTreeMap::new(), yaw_damper=None, fastsim_grid=(10, 10)
+))]
+#[allow(clippy::too_many_arguments)]
+fn linearise<'py>(
+    py: Python<'py>,
+    wheel: PyRef<'py, PyProfile>,
+    rail: PyRef<'py, PyProfile>,
+    speed: f64,
+    toml_text: Option<String>,
+    origin: String,
+    overrides: BTreeMap<String, f64>,
+    yaw_damper: Option<PyRef<'py, PyDamper>>,
+    fastsim_grid: (usize, usize),
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let wheel = wheel.inner.clone();
+    let rail = rail.inner.clone();
+    let yaw_damper = yaw_damper.map(|d| d.inner);
+    let (a, n) = run_detached(py, move || {
+        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
+        let scenario = Scenario {
+            wheel,
+            rail,
+            track_setup: TrackSetup::default(),
+            speed,
+            distance: 1.0,
+            track: TrackSpec::Perfect,
+            yaw_damper,
+            run: RunSettings::default(),
+            fastsim: FastsimParams {
+                nx: fastsim_grid.0,
+                ny: fastsim_grid.1,
+                ..FastsimParams::default()
+            },
+            initial_lateral_offset: 0.0,
+        };
+        linearised(set, &scenario)
+    })?;
+    let matrix = numpy::ndarray::Array2::from_shape_vec((n, n), a)
+        .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
+    Ok(matrix.into_pyarray(py))
+}
+
 /// Adds this file's functions to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(default_vehicle_toml, m)?)?;
@@ -212,5 +260,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(dof_names, m)?)?;
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(linearise, m)?)?;
     Ok(())
 }

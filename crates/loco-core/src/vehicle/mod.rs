@@ -17,6 +17,7 @@ pub mod integrator;
 pub mod kinematics;
 pub mod layout;
 pub mod linalg;
+pub mod linearise;
 pub mod mass;
 pub mod parameters;
 pub mod run;

@@ -28,7 +28,7 @@ pub struct RunSettings {
 impl Default for RunSettings {
     fn default() -> Self {
         Self {
-            step: 5e-4,
+            step: 1e-3,
             output_rate: 500.0,
             duration: 9.0,
         }

@@ -269,6 +269,32 @@ pub fn simulate_prepared(
     Ok(SimulationResult { output, metrics })
 }
 
+/// The state matrix of the vehicle linearised about its static equilibrium at the scenario's
+/// speed on perfect track (row-major n×n), with n (coordinates, velocities, damper states).
+pub fn linearised(parameters: ParameterSet, scenario: &Scenario) -> Result<(Vec<f64>, usize)> {
+    scenario.validate()?;
+    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+    let perfect = Scenario {
+        track: TrackSpec::Perfect,
+        ..scenario.clone()
+    };
+    let track = Arc::new(build_track(&perfect, &structure)?);
+    let start = start_distance(&structure);
+    let mut system = VehicleSystem::new(
+        structure,
+        wheel_rail,
+        track,
+        scenario.speed,
+        start,
+        scenario.yaw_damper.as_ref(),
+        scenario.run.step,
+    )?;
+    let (a, _) = super::linearise::linearise(&mut system)?;
+    let n = system.len_states();
+    Ok((a, n))
+}
+
 /// Simulates a scenario for a vehicle parameter set: builds the vehicle, contact and track.
 pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<SimulationResult> {
     scenario.validate()?;

@@ -1,0 +1,56 @@
+//! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated) and one evaluation of its
+//! right-hand side.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use loco_core::vehicle::integrator::OdeSystem;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
+};
+use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::statics::static_equilibrium;
+use loco_core::vehicle::structure::VehicleStructure;
+use std::hint::black_box;
+use std::sync::Arc;
+
+fn bench_vehicle(c: &mut Criterion) {
+    let scenario = Scenario::study("S_high", 200.0 / 3.6, 500.0, 1).unwrap();
+    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
+    let track = Arc::new(build_track(&scenario, &structure).unwrap());
+
+    let mut group = c.benchmark_group("vehicle");
+    group.sample_size(10);
+    group.bench_function("run_500m_200kmh", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                wheel_rail.clone(),
+                track.clone(),
+                black_box(&scenario),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    group.finish();
+
+    let mut system = VehicleSystem::new(
+        structure.clone(),
+        wheel_rail,
+        track,
+        scenario.speed,
+        start_distance(&structure),
+        None,
+        scenario.run.step,
+    )
+    .unwrap();
+    let y = static_equilibrium(&mut system).unwrap();
+    let mut dy = vec![0.0; y.len()];
+    c.bench_function("vehicle_right_hand_side", |b| {
+        b.iter(|| system.derivatives(0.1, black_box(&y), &mut dy))
+    });
+}
+
+criterion_group!(benches, bench_vehicle);
+criterion_main!(benches);
