@@ -15,8 +15,10 @@ back-to-back 1353 mm, 70 mm, 625 mm.
 
 from __future__ import annotations
 
+import importlib
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -201,16 +203,20 @@ def rolling_radius_difference(
 
 
 # The contact API of the issue in one place: conicity (EN 15302) and Hertz/creep live in their own
-# modules, imported last because `loco.conicity` builds on this module.
-from loco.conicity import ConicityCurve, conicity_curve, equivalent_conicity  # noqa: E402
-from loco.creep import fastsim, hertz, kalker_coefficients, linear_creep_forces  # noqa: E402
+# modules; `loco.conicity` builds on this module, so they are resolved on first access.
+_REEXPORTS = {
+    "ConicityCurve": "loco.conicity",
+    "conicity_curve": "loco.conicity",
+    "equivalent_conicity": "loco.conicity",
+    "fastsim": "loco.creep",
+    "hertz": "loco.creep",
+    "kalker_coefficients": "loco.creep",
+    "linear_creep_forces": "loco.creep",
+}
+__all__ += sorted(_REEXPORTS)
 
-__all__ += [
-    "ConicityCurve",
-    "conicity_curve",
-    "equivalent_conicity",
-    "fastsim",
-    "hertz",
-    "kalker_coefficients",
-    "linear_creep_forces",
-]
+
+def __getattr__(name: str) -> Any:
+    if name in _REEXPORTS:
+        return getattr(importlib.import_module(_REEXPORTS[name]), name)
+    raise AttributeError(f"module 'loco.contact' has no attribute '{name}'")
