@@ -2,7 +2,8 @@
 
 The native module ``loco._loco`` is private; use the submodules of this package:
 ``loco.profiles``, ``loco.contact``, ``loco.track``, ``loco.metrics``, ``loco.dampers``, and the
-vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`simulate`.
+vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`simulate`,
+:func:`run_batch`.
 """
 
 from loco._loco import (
@@ -17,11 +18,13 @@ from loco._loco import (
     SimulationError,
     __version__,
 )
+from loco.batch import BatchResult, run_batch
 from loco.simulation import Scenario, SimulationResult, simulate
 from loco.stability import critical_speed, eigen
 from loco.vehicle import Locomotive
 
 __all__ = [
+    "BatchResult",
     "ContactError",
     "DerailmentError",
     "DivergenceError",
@@ -37,5 +40,6 @@ __all__ = [
     "__version__",
     "critical_speed",
     "eigen",
+    "run_batch",
     "simulate",
 ]

@@ -3,6 +3,7 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
+from collections.abc import Callable
 from typing import Any, final
 
 import numpy as _np
@@ -366,6 +367,42 @@ def damper_bench_sweep(
 ) -> _BenchTuple: ...
 def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _BenchTuple: ...
 
+# --- scenario (scenario.rs) -----------------------------------------------------------------------
+
+__all__ += ["RunScenario"]
+
+@final
+class RunScenario:
+    """A checked run scenario (SI units)."""
+
+    def __new__(
+        cls,
+        wheel: Profile,
+        rail: Profile,
+        speed: float,
+        distance: float,
+        *,
+        track: Track | None = None,
+        track_kind: str = ...,
+        spectrum: str = ...,
+        seed: int = 0,
+        band: tuple[float, float] = ...,
+        yaw_damper: Damper | None = None,
+        step: float = 1e-3,
+        output_rate: float = 500.0,
+        fastsim_grid: tuple[int, int] = ...,
+        initial_lateral_offset: float = 0.0,
+        gauge: float = 1.435,
+        gauge_height: float = 0.016,
+        rail_inclination: float | None = None,
+    ) -> RunScenario: ...
+    @property
+    def speed(self) -> float: ...
+    @property
+    def distance(self) -> float: ...
+    @property
+    def output_rate(self) -> float: ...
+
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
@@ -394,36 +431,41 @@ def study_parameters() -> list[tuple[str, str]]: ...
 def dof_names() -> list[str]: ...
 def body_names() -> list[str]: ...
 def simulate(
-    wheel: Profile,
-    rail: Profile,
-    speed: float,
-    distance: float,
+    scenario: RunScenario,
     *,
     toml_text: str | None = None,
     origin: str = ...,
     overrides: dict[str, float] = ...,
-    track: Track | None = None,
-    track_kind: str = ...,
-    spectrum: str = ...,
-    seed: int = 0,
-    band: tuple[float, float] = ...,
-    yaw_damper: Damper | None = None,
-    step: float = 1e-3,
-    output_rate: float = 500.0,
-    fastsim_grid: tuple[int, int] = ...,
-    initial_lateral_offset: float = 0.0,
-    gauge: float = 1.435,
-    gauge_height: float = 0.016,
-    rail_inclination: float | None = None,
 ) -> tuple[NDArray[np.float64], list[str], NDArray[np.float64], list[str], NDArray[np.float64]]: ...
 def linearise(
-    wheel: Profile,
-    rail: Profile,
-    speed: float,
+    scenario: RunScenario,
     *,
     toml_text: str | None = None,
     origin: str = ...,
     overrides: dict[str, float] = ...,
-    yaw_damper: Damper | None = None,
-    fastsim_grid: tuple[int, int] = ...,
 ) -> NDArray[np.float64]: ...
+
+# --- batch (batch.rs) -----------------------------------------------------------------------------
+
+__all__ += ["batch_status_names", "run_batch"]
+
+def run_batch(
+    scenario: RunScenario,
+    params: NDArray[np.float64],
+    names: list[str],
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+    threads: int = 0,
+    per_sample_track: bool = False,
+    histories: list[int] = ...,
+    progress: Callable[[int, int], object] | None = None,
+) -> tuple[
+    list[str],
+    NDArray[np.float64],
+    NDArray[np.int32],
+    list[str],
+    list[tuple[int, NDArray[np.float64], list[str], NDArray[np.float64]]],
+]: ...
+def batch_status_names() -> list[str]: ...

@@ -78,6 +78,31 @@ class Scenario:
         rail = builtin(self.rail) if isinstance(self.rail, str) else self.rail
         return wheel, rail
 
+    def native(self, *, seed: int | None = None) -> _loco.RunScenario:
+        """The checked native scenario (``seed`` replaces the track seed when given).
+
+        Raises :class:`loco.ParameterError` naming the field for a non-physical value."""
+        wheel, rail = self.profiles()
+        track_seed = int(self.seed if seed is None else seed)
+        if track_seed < 0:
+            raise _loco.ParameterError(f"invalid parameter `seed`: must be >= 0, got {track_seed}")
+        return _loco.RunScenario(
+            wheel,
+            rail,
+            float(self.speed),
+            float(self.distance),
+            track=None if self.track is None else self.track.native,
+            track_kind="perfect" if self.perfect_track else "synthetic",
+            spectrum=self.spectrum,
+            seed=track_seed,
+            band=(float(self.band[0]), float(self.band[1])),
+            yaw_damper=self.yaw_damper,
+            step=float(self.step),
+            output_rate=float(self.output_rate),
+            fastsim_grid=(int(self.fastsim_grid[0]), int(self.fastsim_grid[1])),
+            initial_lateral_offset=float(self.initial_lateral_offset),
+        )
+
 
 @dataclass(frozen=True)
 class SimulationResult:
@@ -116,25 +141,11 @@ def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
     Raises :class:`loco.ParameterError` for non-physical inputs, :class:`loco.DivergenceError`
     or :class:`loco.DerailmentError` when the run fails (the message says when and where).
     """
-    wheel, rail = scenario.profiles()
     time, names, channels, metric_names, metric_values = _loco.simulate(
-        wheel,
-        rail,
-        float(scenario.speed),
-        float(scenario.distance),
+        scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
-        track=None if scenario.track is None else scenario.track.native,
-        track_kind="perfect" if scenario.perfect_track else "synthetic",
-        spectrum=scenario.spectrum,
-        seed=int(scenario.seed),
-        band=(float(scenario.band[0]), float(scenario.band[1])),
-        yaw_damper=scenario.yaw_damper,
-        step=float(scenario.step),
-        output_rate=float(scenario.output_rate),
-        fastsim_grid=(int(scenario.fastsim_grid[0]), int(scenario.fastsim_grid[1])),
-        initial_lateral_offset=float(scenario.initial_lateral_offset),
     )
     return SimulationResult(
         time=time,

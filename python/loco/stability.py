@@ -68,16 +68,11 @@ def _body_shares(vector: npt.NDArray[np.complex128], names: list[str]) -> dict[s
 def eigen(vehicle: Locomotive, scenario: Scenario) -> Eigen:
     """Eigenvalues of the vehicle linearised about equilibrium at ``scenario.speed`` (m/s) with
     the scenario's wheel/rail pair (and so its equivalent conicity) and yaw damper."""
-    wheel, rail = scenario.profiles()
     a = _loco.linearise(
-        wheel,
-        rail,
-        float(scenario.speed),
+        scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
-        yaw_damper=scenario.yaw_damper,
-        fastsim_grid=(int(scenario.fastsim_grid[0]), int(scenario.fastsim_grid[1])),
     )
     values, vectors = np.linalg.eig(a)
     names = dof_names()

@@ -10,7 +10,9 @@
 //! - [`metrics`]: PSD, Sperling ride index, bogie frame stability criteria, comfort.
 //! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
 //! - [`vehicle`]: the 90-DOF locomotive: parameters, bodies, suspension, equations of motion.
+//! - [`batch`]: many runs in parallel (rayon), failed samples flagged, deterministic.
 
+pub mod batch;
 pub mod contact;
 pub mod dampers;
 pub mod error;

@@ -9,6 +9,10 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt};
 use pyo3::prelude::*;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::sync::Mutex;
+use std::time::Duration;
 
 create_exception!(
     _loco,
@@ -66,7 +70,6 @@ create_exception!(
 );
 
 /// Converts a core error into the Python exception of its class.
-#[allow(dead_code)] // used by the binding files as they land
 pub fn to_py_err(err: CoreError) -> PyErr {
     let msg = err.to_string();
     match err {
@@ -82,17 +85,12 @@ pub fn to_py_err(err: CoreError) -> PyErr {
     }
 }
 
-/// Runs `work` with the GIL released, turns a core error into its Python exception and a panic
-/// into `InternalError`, so that no Rust panic ever unwinds into Python.
-///
-/// Inputs must already be copied into owned Rust values (the closure cannot touch Python objects).
-#[allow(dead_code)] // used by the binding files as they land
-pub fn run_detached<T, F>(py: Python<'_>, work: F) -> PyResult<T>
-where
-    T: Send,
-    F: FnOnce() -> Result<T, CoreError> + Send,
-{
-    let outcome = py.detach(move || catch_unwind(AssertUnwindSafe(work)));
+/// What a detached computation gave: its result, or the payload of a panic.
+type Outcome<T> = std::thread::Result<Result<T, CoreError>>;
+
+/// Maps a detached computation's outcome to Python: core errors to their exception class, a
+/// panic to `InternalError`.
+fn map_outcome<T>(outcome: Outcome<T>) -> PyResult<T> {
     match outcome {
         Ok(result) => result.map_err(to_py_err),
         Err(panic) => {
@@ -106,6 +104,68 @@ where
             )))
         }
     }
+}
+
+/// Runs `work` with the GIL released, turns a core error into its Python exception and a panic
+/// into `InternalError`, so that no Rust panic ever unwinds into Python.
+///
+/// Inputs must already be copied into owned Rust values (the closure cannot touch Python objects).
+pub fn run_detached<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+where
+    T: Send,
+    F: FnOnce() -> Result<T, CoreError> + Send,
+{
+    map_outcome(py.detach(move || catch_unwind(AssertUnwindSafe(work))))
+}
+
+/// [`run_detached`] for long computations: `work` runs on a worker thread while this thread,
+/// every 100 ms, takes the GIL to check for signals (Ctrl-C) and to call `poll` (progress). A
+/// signal or an error from `poll` sets `cancel`, waits for `work` to stop and is raised.
+pub fn run_detached_monitored<T, F, P>(
+    py: Python<'_>,
+    work: F,
+    cancel: &AtomicBool,
+    mut poll: P,
+) -> PyResult<T>
+where
+    T: Send + 'static,
+    F: FnOnce() -> Result<T, CoreError> + Send + 'static,
+    P: FnMut(Python<'_>) -> PyResult<()>,
+{
+    let (sender, receiver) = mpsc::channel::<Outcome<T>>();
+    // A Mutex makes the receiver shareable with the detached closure; only this thread locks it.
+    let receiver = Mutex::new(receiver);
+    let worker = std::thread::spawn(move || {
+        // The receiver only disappears if this function unwound; nothing is left to tell then.
+        let _ = sender.send(catch_unwind(AssertUnwindSafe(work)));
+    });
+    let mut stopped_by: Option<PyErr> = None;
+    let outcome = loop {
+        let received = py.detach(|| match receiver.lock() {
+            Ok(r) => r.recv_timeout(Duration::from_millis(100)),
+            Err(_) => Err(RecvTimeoutError::Disconnected),
+        });
+        match received {
+            Ok(outcome) => break outcome,
+            Err(RecvTimeoutError::Disconnected) => {
+                break Err(Box::new("worker thread ended without a result"))
+            }
+            Err(RecvTimeoutError::Timeout) => {}
+        }
+        if stopped_by.is_none() {
+            if let Err(e) = py.check_signals().and_then(|()| poll(py)) {
+                cancel.store(true, Ordering::Relaxed);
+                stopped_by = Some(e);
+            }
+        }
+    };
+    // The worker has sent its outcome; joining only reaps the thread.
+    let _ = py.detach(|| worker.join());
+    if let Some(e) = stopped_by {
+        return Err(e);
+    }
+    poll(py)?;
+    map_outcome(outcome)
 }
 
 /// Adds the exception classes to the module.

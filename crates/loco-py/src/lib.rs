@@ -4,12 +4,14 @@
 //! `loco-core` through [`errors::run_detached`] (GIL released, errors mapped, panics caught) and
 //! returns numpy arrays by moving their buffers. No physics lives here.
 
+mod batch;
 mod conicity;
 mod contact;
 mod creep;
 mod dampers;
 mod errors;
 mod metrics;
+mod scenario;
 mod track;
 mod vehicle;
 
@@ -26,6 +28,8 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     track::register(m)?;
     metrics::register(m)?;
     dampers::register(m)?;
+    scenario::register(m)?;
     vehicle::register(m)?;
+    batch::register(m)?;
     Ok(())
 }

@@ -24,6 +24,9 @@ use crate::contact::table::ContactTable;
 use crate::error::{LocoError, Result};
 use crate::track::RailIrregularity;
 
+/// Lateral wheelset speed (m/s) beyond which leaving the contact table is taken as numerical
+/// divergence, not flange climbing: hunting at 400 km/h with 10 mm amplitude at 5 Hz reaches 0.3 m/s.
+const RUNAWAY_LATERAL_SPEED: f64 = 5.0;
 /// Settings of the wheel-rail contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WheelRailSettings {
@@ -136,6 +139,20 @@ impl WheelRail {
             let y_rel = u[1] - rail_y[side_index];
             let (lo, hi) = self.table.y_range();
             if !(lo..=hi).contains(&y_rel) {
+                // A climbing flange leaves the table slowly and just past its edge; a jump far
+                // beyond it, or at a lateral speed no wheelset reaches, is numerical divergence.
+                let runaway = y_rel.abs() > 2.0 * lo.abs().max(hi.abs())
+                    || v[1].abs() > RUNAWAY_LATERAL_SPEED;
+                if runaway || !y_rel.is_finite() {
+                    return Err(LocoError::Diverged {
+                        time: t,
+                        location: format!("wheelset{} {}", w + 1, side_name(*side)),
+                        reason: format!(
+                            "runaway lateral motion: {y_rel:.4e} m from the rail at {:.4e} m/s",
+                            v[1]
+                        ),
+                    });
+                }
                 return Err(LocoError::Derailed {
                     time: t,
                     location: format!("wheelset{} {}", w + 1, side_name(*side)),

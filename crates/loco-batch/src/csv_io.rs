@@ -1,0 +1,133 @@
+//! The batch binary's CSV files: samples in, metrics and status out, time histories out.
+//!
+//! Numbers are written with Rust's shortest round-trip formatting, so a reader that parses them
+//! back (Python's `float`, pandas) gets the same `f64` bit for bit.
+
+use loco_core::batch::BatchOutput;
+use loco_core::vehicle::run::RunOutput;
+use loco_core::{LocoError, Result};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// A samples file: a header of column names and one row of values (SI) per sample.
+pub struct Samples {
+    pub names: Vec<String>,
+    /// Row-major values.
+    pub values: Vec<f64>,
+}
+
+/// Reads a samples CSV (comma separated, `#` comments and blank lines skipped). Errors name
+/// the file and line.
+pub fn read_samples(path: &Path) -> Result<Samples> {
+    let label = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
+        path: label.clone(),
+        reason: e.to_string(),
+    })?;
+    let parse_error = |line: usize, reason: String| LocoError::Parse {
+        path: label.clone(),
+        line,
+        reason,
+    };
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let (_, header) = lines.next().ok_or_else(|| {
+        parse_error(
+            0,
+            "empty file: a header of parameter names is needed".into(),
+        )
+    })?;
+    let names: Vec<String> = header.split(',').map(|s| s.trim().to_string()).collect();
+    if names.iter().any(String::is_empty) {
+        return Err(parse_error(1, "empty column name in the header".into()));
+    }
+    let mut values = Vec::new();
+    for (line, text) in lines {
+        let cells: Vec<&str> = text.split(',').map(str::trim).collect();
+        if cells.len() != names.len() {
+            return Err(parse_error(
+                line,
+                format!("{} values for {} columns", cells.len(), names.len()),
+            ));
+        }
+        for (cell, name) in cells.iter().zip(&names) {
+            let value: f64 = cell.parse().map_err(|_| {
+                parse_error(line, format!("column '{name}': '{cell}' is not a number"))
+            })?;
+            values.push(value);
+        }
+    }
+    if values.is_empty() {
+        return Err(parse_error(0, "no sample rows".into()));
+    }
+    Ok(Samples { names, values })
+}
+
+fn write(path: &Path, text: &str) -> Result<()> {
+    std::fs::write(path, text).map_err(|e| LocoError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })
+}
+
+/// Writes one row per sample: `sample`, the parameters, the metrics, `status`, `message`.
+pub fn write_metrics(path: &Path, samples: &Samples, output: &BatchOutput) -> Result<()> {
+    let mut text = String::from("sample");
+    for name in samples
+        .names
+        .iter()
+        .map(String::as_str)
+        .chain(output.metric_names.iter().copied())
+    {
+        let _ = write!(text, ",{name}");
+    }
+    text.push_str(",status,message\n");
+    let k = samples.names.len();
+    for i in 0..output.n_samples {
+        let _ = write!(text, "{i}");
+        for v in samples.values[i * k..(i + 1) * k]
+            .iter()
+            .chain(output.row(i))
+        {
+            let _ = write!(text, ",{v}");
+        }
+        // Messages are free text: quote them and double inner quotes (RFC 4180).
+        let message = output.messages[i].replace('"', "\"\"").replace('\n', " ");
+        let _ = writeln!(text, ",{},\"{message}\"", output.status[i].name());
+    }
+    write(path, &text)
+}
+
+/// Writes the time histories of one sample: `time` then the channels (all, or those named).
+pub fn write_history(path: &Path, run: &RunOutput, channels: Option<&[String]>) -> Result<()> {
+    let selected: Vec<usize> = match channels {
+        None => (0..run.names.len()).collect(),
+        Some(wanted) => wanted
+            .iter()
+            .map(|w| {
+                run.names.iter().position(|n| n == w).ok_or_else(|| {
+                    LocoError::param(
+                        "output.channels",
+                        format!("no channel '{w}'; available: {}", run.names.join(", ")),
+                    )
+                })
+            })
+            .collect::<Result<_>>()?,
+    };
+    let mut text = String::from("time");
+    for &c in &selected {
+        let _ = write!(text, ",{}", run.names[c]);
+    }
+    text.push('\n');
+    for (s, t) in run.time.iter().enumerate() {
+        let _ = write!(text, "{t}");
+        for &c in &selected {
+            let _ = write!(text, ",{}", run.channels[c][s]);
+        }
+        text.push('\n');
+    }
+    write(path, &text)
+}

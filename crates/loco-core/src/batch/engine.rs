@@ -1,0 +1,287 @@
+//! Running a batch: one simulation per row of the parameter matrix, in parallel with rayon on an
+//! explicit number of threads.
+//!
+//! Determinism: every sample is a function of (base vehicle, scenario, its row, seed, its index)
+//! alone. Shared inputs (contact tables, the synthesised track) are built once before the
+//! parallel part and only read; with `per_sample_track` the track of sample `i` is synthesised
+//! from ChaCha stream `i` of the seed. Results are collected in row order, so a batch gives the
+//! same numbers bit for bit on any thread count and in any scheduling order.
+
+use super::columns::{
+    check_matrix, check_rows, resolve_columns, row_parameters, row_speed, Column,
+};
+use super::status::SampleStatus;
+use crate::error::{LocoError, Result};
+use crate::metrics::RunMetrics;
+use crate::track::TrackIrregularity;
+use crate::vehicle::parameters::ParameterSet;
+use crate::vehicle::run::RunOutput;
+use crate::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate_prepared, Scenario, TrackSpec,
+};
+use crate::vehicle::structure::VehicleStructure;
+use crate::vehicle::wheel_rail::WheelRail;
+use rayon::prelude::*;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Arc;
+
+/// What a batch runs: a base vehicle and scenario, and a matrix of per-sample values.
+#[derive(Debug, Clone)]
+pub struct BatchSpec {
+    /// Vehicle parameters every sample starts from.
+    pub base: ParameterSet,
+    /// Wheel, rail, speed, distance, track, yaw damper and settings of every sample.
+    pub scenario: Scenario,
+    /// Column names: vehicle file keys, study names (`K_px` …) or `speed` (m/s).
+    pub names: Vec<String>,
+    /// Row-major values, `n_samples × names.len()`, SI units.
+    pub values: Vec<f64>,
+    /// Synthesise a different track for every sample (ChaCha stream = sample index) instead of
+    /// one track shared by all samples (common random numbers, the default for studies).
+    pub per_sample_track: bool,
+    /// Indices of the samples whose time histories are returned.
+    pub histories: Vec<usize>,
+}
+
+/// Counters shared with the caller while a batch runs: progress to show, and a flag to cancel.
+#[derive(Debug, Default)]
+pub struct BatchMonitor {
+    /// Samples finished (successfully or not).
+    pub done: AtomicUsize,
+    /// Samples that failed.
+    pub failed: AtomicUsize,
+    /// Set to stop the batch: running samples end with `Interrupted`, the rest are not started.
+    pub cancel: AtomicBool,
+}
+
+/// The result of a batch, rows in sample order.
+#[derive(Debug, Clone)]
+pub struct BatchOutput {
+    /// Number of samples.
+    pub n_samples: usize,
+    /// Names of the metric columns ([`RunMetrics::names`]).
+    pub metric_names: Vec<&'static str>,
+    /// Row-major metrics, `n_samples × metric_names.len()`; NaN for failed samples.
+    pub metrics: Vec<f64>,
+    /// Outcome of each sample.
+    pub status: Vec<SampleStatus>,
+    /// Error message of each failed sample (empty for successful ones).
+    pub messages: Vec<String>,
+    /// Time histories of the samples asked for, `(index, output)` in ascending index order.
+    pub histories: Vec<(usize, RunOutput)>,
+}
+
+impl BatchOutput {
+    /// Number of samples that did not finish with [`SampleStatus::Ok`].
+    pub fn n_failed(&self) -> usize {
+        self.status
+            .iter()
+            .filter(|s| **s != SampleStatus::Ok)
+            .count()
+    }
+
+    /// How many samples ended in each status that occurred, in code order.
+    pub fn summary(&self) -> Vec<(SampleStatus, usize)> {
+        SampleStatus::ALL
+            .iter()
+            .map(|&s| (s, self.status.iter().filter(|&&t| t == s).count()))
+            .filter(|(_, n)| *n > 0)
+            .collect()
+    }
+
+    /// Metrics of sample `i`.
+    pub fn row(&self, i: usize) -> &[f64] {
+        let m = self.metric_names.len();
+        &self.metrics[i * m..(i + 1) * m]
+    }
+}
+
+/// What every sample shares, built once.
+struct Shared {
+    columns: Vec<Column>,
+    /// Contact of the base vehicle, or None when a column changes the contact.
+    wheel_rail: Option<Arc<WheelRail>>,
+    /// The shared track, or None when every sample gets its own.
+    track: Option<Arc<TrackIrregularity>>,
+}
+
+/// Runs a batch on `threads` threads (0: one per core). Input errors (unknown column, NaN, a
+/// non-physical row) are returned before anything runs and name the row and column; a sample
+/// that fails while running gets a status and NaN metrics and the batch goes on.
+pub fn run_batch(spec: &BatchSpec, threads: usize, monitor: &BatchMonitor) -> Result<BatchOutput> {
+    let n = check_matrix(&spec.names, &spec.values)?;
+    let columns = resolve_columns(&spec.base, &spec.names)?;
+    spec.scenario.validate()?;
+    if let Some(&i) = spec.histories.iter().find(|&&i| i >= n) {
+        return Err(LocoError::input(
+            "histories",
+            format!("sample index {i} is out of range for {n} samples"),
+        ));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| LocoError::param("threads", e.to_string()))?;
+    pool.install(|| {
+        check_rows(&spec.base, &spec.names, &columns, &spec.values)?;
+        let shared = prepare(spec, columns)?;
+        let k = spec.names.len();
+        let results: Vec<SampleResult> = spec
+            .values
+            .par_chunks(k)
+            .enumerate()
+            .map(|(i, row)| {
+                let result = run_sample_caught(spec, &shared, i, row, monitor);
+                if result.status != SampleStatus::Ok {
+                    monitor.failed.fetch_add(1, Ordering::Relaxed);
+                }
+                monitor.done.fetch_add(1, Ordering::Relaxed);
+                result
+            })
+            .collect();
+        if monitor.cancel.load(Ordering::Relaxed) {
+            return Err(LocoError::Interrupted);
+        }
+        Ok(collect(n, results))
+    })
+}
+
+fn prepare(spec: &BatchSpec, columns: Vec<Column>) -> Result<Shared> {
+    let base = Arc::new(VehicleStructure::new(spec.base.clone())?);
+    let wheel_rail = if columns.iter().any(Column::changes_contact) {
+        None
+    } else {
+        Some(Arc::new(build_wheel_rail(
+            &base.parameters,
+            &spec.scenario,
+        )?))
+    };
+    let track = match (&spec.scenario.track, spec.per_sample_track) {
+        (TrackSpec::Synthetic(_), true) => None,
+        _ => Some(Arc::new(build_track(&spec.scenario, &base)?)),
+    };
+    Ok(Shared {
+        columns,
+        wheel_rail,
+        track,
+    })
+}
+
+struct SampleResult {
+    status: SampleStatus,
+    message: String,
+    metrics: Option<RunMetrics>,
+    history: Option<RunOutput>,
+}
+
+fn run_sample_caught(
+    spec: &BatchSpec,
+    shared: &Shared,
+    i: usize,
+    row: &[f64],
+    monitor: &BatchMonitor,
+) -> SampleResult {
+    if monitor.cancel.load(Ordering::Relaxed) {
+        return failure(
+            SampleStatus::Interrupted,
+            "not run: the batch was cancelled",
+        );
+    }
+    match catch_unwind(AssertUnwindSafe(|| {
+        run_sample(spec, shared, i, row, monitor)
+    })) {
+        Ok(Ok((metrics, output))) => SampleResult {
+            status: SampleStatus::Ok,
+            message: String::new(),
+            metrics: Some(metrics),
+            history: spec.histories.contains(&i).then_some(output),
+        },
+        Ok(Err(e)) => failure(SampleStatus::from_error(&e), &e.to_string()),
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            failure(
+                SampleStatus::Internal,
+                &format!("internal error (panic): {what}"),
+            )
+        }
+    }
+}
+
+fn failure(status: SampleStatus, message: &str) -> SampleResult {
+    SampleResult {
+        status,
+        message: message.to_string(),
+        metrics: None,
+        history: None,
+    }
+}
+
+fn run_sample(
+    spec: &BatchSpec,
+    shared: &Shared,
+    i: usize,
+    row: &[f64],
+    monitor: &BatchMonitor,
+) -> Result<(RunMetrics, RunOutput)> {
+    let parameters = row_parameters(&spec.base, &shared.columns, row)?;
+    let scenario = Scenario {
+        speed: row_speed(&shared.columns, row, spec.scenario.speed),
+        track: match &spec.scenario.track {
+            TrackSpec::Synthetic(p) if spec.per_sample_track => {
+                TrackSpec::Synthetic(crate::track::SynthesisParams {
+                    stream: i as u64,
+                    ..*p
+                })
+            }
+            other => other.clone(),
+        },
+        ..spec.scenario.clone()
+    };
+    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let wheel_rail = match &shared.wheel_rail {
+        Some(w) => Arc::clone(w),
+        None => Arc::new(build_wheel_rail(&structure.parameters, &scenario)?),
+    };
+    let track = match &shared.track {
+        Some(t) => Arc::clone(t),
+        None => Arc::new(build_track(&scenario, &structure)?),
+    };
+    let result = simulate_prepared(
+        structure,
+        wheel_rail,
+        track,
+        &scenario,
+        Some(&monitor.cancel),
+    )?;
+    Ok((result.metrics, result.output))
+}
+
+fn collect(n: usize, results: Vec<SampleResult>) -> BatchOutput {
+    let metric_names = RunMetrics::names().to_vec();
+    let m = metric_names.len();
+    let mut out = BatchOutput {
+        n_samples: n,
+        metric_names,
+        metrics: Vec::with_capacity(n * m),
+        status: Vec::with_capacity(n),
+        messages: Vec::with_capacity(n),
+        histories: Vec::new(),
+    };
+    for (i, r) in results.into_iter().enumerate() {
+        match r.metrics {
+            Some(metrics) => out.metrics.extend(metrics.values()),
+            None => out.metrics.extend(std::iter::repeat_n(f64::NAN, m)),
+        }
+        out.status.push(r.status);
+        out.messages.push(r.message);
+        if let Some(h) = r.history {
+            out.histories.push((i, h));
+        }
+    }
+    out
+}
