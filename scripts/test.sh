@@ -19,6 +19,9 @@ cargo clippy --workspace --all-targets --release -- -D warnings
 step "cargo test"
 cargo test --workspace --release
 
+step "loco-batch binary (compared with loco.run_batch by pytest)"
+cargo build --release -p loco-batch
+
 step "ruff"
 python3 -m ruff check python tests scripts
 python3 -m ruff format --check python tests scripts

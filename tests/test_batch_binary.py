@@ -1,0 +1,102 @@
+"""The standalone ``loco-batch`` binary gives the same numbers as ``loco.run_batch``."""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import loco
+
+ROOT = Path(__file__).resolve().parents[1]
+BINARY = Path(os.environ.get("LOCO_BATCH_BIN", ROOT / "target" / "release" / "loco-batch"))
+
+pytestmark = pytest.mark.skipif(
+    not BINARY.is_file(),
+    reason=f"loco-batch binary not built ({BINARY}); `cargo build --release -p loco-batch`",
+)
+
+STUDY = """
+[vehicle.overrides]
+C_sy = 3.0e4
+
+[scenario]
+name = "S_high"
+speed_kmh = 200.0
+distance = 295.0
+seed = 5
+yaw_damper = "FSD"
+
+[output]
+histories = [1]
+channels = ["frame1_ay_wheelset1", "yaw_damper_bogie1_left_valve"]
+"""
+
+PARAMS = np.array([[1.5e7, 3.5e6], [3.0e7, 6.0e6], [1.5e7, 3.5e13]])
+NAMES = ["K_px", "K_py"]
+
+
+def _write_inputs(tmp: Path) -> tuple[Path, Path]:
+    study = tmp / "study.toml"
+    study.write_text(STUDY, encoding="utf-8")
+    samples = tmp / "samples.csv"
+    rows = [",".join(NAMES)] + [",".join(repr(float(v)) for v in row) for row in PARAMS]
+    samples.write_text("# two study parameters, SI\n" + "\n".join(rows) + "\n", encoding="utf-8")
+    return study, samples
+
+
+def test_binary_matches_python_bit_for_bit(tmp_path: Path) -> None:
+    study, samples = _write_inputs(tmp_path)
+    out = tmp_path / "metrics.csv"
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "2", "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    with out.open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+
+    vehicle = loco.Locomotive.default().replace(C_sy=3.0e4)
+    scenario = loco.Scenario(
+        scenario="S_high", speed=200 / 3.6, distance=295.0, seed=5, yaw_damper=loco.dampers.FSD
+    )
+    expected = loco.run_batch(
+        PARAMS, NAMES, vehicle=vehicle, scenario=scenario, threads=1, progress=False, histories=[1]
+    )
+    assert [r["status"] for r in rows] == ["ok", "ok", expected.to_frame()["status"][2]]
+    for i, row in enumerate(rows):
+        got = np.array([float(row[m]) for m in expected.metric_names])
+        assert np.array_equal(got, expected.metrics[i], equal_nan=True), (i, row["message"])
+
+    history = np.genfromtxt(tmp_path / "metrics_history_1.csv", delimiter=",", names=True)
+    kept = expected.histories[1]
+    assert np.array_equal(history["time"], kept.time)
+    assert np.array_equal(history["frame1_ay_wheelset1"], kept.channel("frame1_ay_wheelset1"))
+
+
+def test_binary_reports_malformed_samples_with_file_and_line(tmp_path: Path) -> None:
+    study, samples = _write_inputs(tmp_path)
+    samples.write_text("K_px,K_py\n1.5e7,3.5e6\n1.5e7,abc\n", encoding="utf-8")
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(tmp_path / "m.csv"), "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode != 0
+    assert f"{samples}:3" in done.stderr and "K_py" in done.stderr
+
+    study.write_text("[scenario]\nname = 'S_high'\nspeed = 50.0\ndistanse = 10.0\n")
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode != 0 and "study.toml" in done.stderr
