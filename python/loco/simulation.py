@@ -65,6 +65,10 @@ class Scenario:
     def profiles(self) -> tuple[Profile, Profile]:
         """The wheel and rail profiles of the run."""
         if self.scenario is not None:
+            if self.wheel is not None:
+                raise _loco.ParameterError(
+                    "invalid parameter `wheel`: give either a scenario or a wheel, not both"
+                )
             if self.scenario not in SCENARIOS:
                 raise _loco.ParameterError(
                     f"invalid parameter `scenario`: unknown '{self.scenario}', "

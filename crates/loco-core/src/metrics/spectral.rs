@@ -162,6 +162,14 @@ impl Psd {
         let candidates = (1..self.frequency.len())
             .filter(|&k| self.frequency[k] >= f_min && self.frequency[k] <= f_max);
         let k = candidates.max_by(|&a, &b| self.density[a].total_cmp(&self.density[b]))?;
+        if self.density[k] <= 0.0 {
+            // A signal without power in the band (e.g. a vehicle at rest) has no dominant
+            // frequency; the last bin the search happened to keep would be a made-up answer.
+            return Some(Dominant {
+                frequency: f64::NAN,
+                peak_density: 0.0,
+            });
+        }
         let df = self.frequency.get(1).copied().unwrap_or(0.0);
         let mut frequency = self.frequency[k];
         if k >= 1 && k + 1 < self.density.len() {
@@ -283,6 +291,14 @@ mod tests {
         (0..n)
             .map(|j| a * (2.0 * PI * f * j as f64 / fs + 0.3).sin())
             .collect()
+    }
+
+    #[test]
+    fn a_silent_signal_has_no_dominant_frequency() {
+        let d =
+            dominant_frequency(&[0.0; 4096], 500.0, 0.2, 20.0, &WelchParams::default()).unwrap();
+        assert!(d.frequency.is_nan());
+        assert_eq!(d.peak_density, 0.0);
     }
 
     #[test]

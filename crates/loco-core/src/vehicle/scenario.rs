@@ -27,6 +27,9 @@ use std::sync::Arc;
 /// speed; the contact tables and creep model are not meant for more).
 pub const MAX_SPEED: f64 = 400.0 / 3.6;
 
+/// Longest run the model accepts, m (100 km: the output of one run stays within memory).
+pub const MAX_DISTANCE: f64 = 100_000.0;
+
 /// Half range of the contact tables, m.
 pub const TABLE_HALF_RANGE: f64 = 0.025;
 
@@ -114,6 +117,25 @@ impl Scenario {
         check_positive("distance", self.distance)?;
         check_positive("step", self.run.step)?;
         check_positive("output_rate", self.run.output_rate)?;
+        if self.distance > MAX_DISTANCE {
+            return Err(LocoError::param(
+                "distance",
+                format!(
+                    "{} m is beyond {MAX_DISTANCE} m: run long tracks as several runs",
+                    self.distance
+                ),
+            ));
+        }
+        // One output sample per step at most: a faster rate would silently shorten the step.
+        if self.run.output_rate * self.run.step > 1.0 + 1e-9 {
+            return Err(LocoError::param(
+                "output_rate",
+                format!(
+                    "{} Hz is faster than one sample per integration step ({} s)",
+                    self.run.output_rate, self.run.step
+                ),
+            ));
+        }
         if !self.initial_lateral_offset.is_finite() || self.initial_lateral_offset.abs() > 0.01 {
             return Err(LocoError::param(
                 "initial_lateral_offset",
