@@ -391,6 +391,7 @@ class RunScenario:
         step: float = 1e-3,
         output_rate: float = 500.0,
         fastsim_grid: tuple[int, int] = ...,
+        creep_table: bool = False,
         initial_lateral_offset: float = 0.0,
         gauge: float = 1.435,
         gauge_height: float = 0.016,

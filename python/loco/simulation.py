@@ -43,7 +43,9 @@ class Scenario:
     :class:`loco.profiles.Profile` or a built-in name) with an optional ``rail`` (default
     ``cn60``). The track is ``track`` when given, perfect when ``perfect_track`` is true, and
     otherwise synthesised from ``spectrum`` (``"cn-hsr"``, ``"german-low"``, ``"german-high"``),
-    ``seed`` and the wavelength ``band`` (m).
+    ``seed`` and the wavelength ``band`` (m). ``creep_table`` replaces FASTSIM at every
+    evaluation (the study's method) by FASTSIM tabulated once per run or batch: about 2 % of μN
+    force error for a faster time loop, worth it for large batches (the table takes ~0.5 s).
     """
 
     scenario: str | None = None
@@ -60,6 +62,7 @@ class Scenario:
     step: float = 1e-3
     output_rate: float = 500.0
     fastsim_grid: tuple[int, int] = (10, 10)
+    creep_table: bool = False
     initial_lateral_offset: float = 0.0
 
     def profiles(self) -> tuple[Profile, Profile]:
@@ -104,6 +107,7 @@ class Scenario:
             step=float(self.step),
             output_rate=float(self.output_rate),
             fastsim_grid=(int(self.fastsim_grid[0]), int(self.fastsim_grid[1])),
+            creep_table=bool(self.creep_table),
             initial_lateral_offset=float(self.initial_lateral_offset),
         )
 

@@ -20,6 +20,7 @@
 //! step = 1e-3                      # s
 //! output_rate = 500.0              # Hz
 //! per_sample_track = false
+//! creep_table = false              # tabulated FASTSIM instead of FASTSIM at every evaluation
 //!
 //! [output]
 //! histories = [0]                  # samples whose time histories are written
@@ -29,6 +30,7 @@
 //! Relative paths are relative to the study file.
 
 use loco_core::contact::builtin::{builtin_names, builtin_profile};
+use loco_core::contact::fastsim_table::FastsimTableParams;
 use loco_core::contact::profile::{Profile, ProfileKind};
 use loco_core::contact::profile_io::load_profile;
 use loco_core::dampers::Damper;
@@ -80,6 +82,8 @@ pub struct ScenarioSection {
     pub output_rate: Option<f64>,
     #[serde(default)]
     pub per_sample_track: bool,
+    #[serde(default)]
+    pub creep_table: bool,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -216,6 +220,9 @@ fn scenario(s: &ScenarioSection, dir: &Path) -> Result<Scenario> {
     }
     if let Some(rate) = s.output_rate {
         scenario.run.output_rate = rate;
+    }
+    if s.creep_table {
+        scenario.creep_table = Some(FastsimTableParams::default());
     }
     Ok(scenario)
 }

@@ -6,6 +6,7 @@ use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
 use loco_core::contact::fastsim::FastsimParams;
+use loco_core::contact::fastsim_table::FastsimTableParams;
 use loco_core::contact::setup::TrackSetup;
 use loco_core::track::{SynthesisParams, TrackSpectrum};
 use loco_core::vehicle::run::RunSettings;
@@ -14,7 +15,8 @@ use pyo3::prelude::*;
 use std::sync::Arc;
 
 /// A checked run scenario (SI units). The track is `track` when given, perfect when
-/// `track_kind == "perfect"`, else synthesised from `spectrum`, `seed` and `band` (m).
+/// `track_kind == "perfect"`, else synthesised from `spectrum`, `seed` and `band` (m);
+/// `creep_table` selects tabulated FASTSIM (default table resolution) instead of the direct one.
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
 pub struct PyRunScenario {
     pub inner: Scenario,
@@ -26,7 +28,7 @@ impl PyRunScenario {
     #[pyo3(signature = (
         wheel, rail, speed, distance, *, track=None, track_kind="synthetic".to_string(),
         spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
-        output_rate=500.0, fastsim_grid=(10, 10), initial_lateral_offset=0.0,
+        output_rate=500.0, fastsim_grid=(10, 10), creep_table=false, initial_lateral_offset=0.0,
         gauge=1.435, gauge_height=0.016, rail_inclination=None
     ))]
     #[allow(clippy::too_many_arguments)]
@@ -44,6 +46,7 @@ impl PyRunScenario {
         step: f64,
         output_rate: f64,
         fastsim_grid: (usize, usize),
+        creep_table: bool,
         initial_lateral_offset: f64,
         gauge: f64,
         gauge_height: f64,
@@ -89,6 +92,7 @@ impl PyRunScenario {
                 ny: fastsim_grid.1,
                 ..FastsimParams::default()
             },
+            creep_table: creep_table.then(FastsimTableParams::default),
             initial_lateral_offset,
         };
         inner.validate().map_err(to_py_err)?;

@@ -45,12 +45,28 @@ impl Rk4Workspace {
 
     /// Advances `y` from `t` to `t + dt` (s) in one RK4 step.
     pub fn step<S: OdeSystem>(&mut self, system: &mut S, t: f64, dt: f64, y: &mut [f64]) {
+        self.step_observed(system, t, dt, y, |_, _, _| {});
+    }
+
+    /// [`Self::step`], calling `observe(system, y, ẏ)` with the derivatives at the start of the
+    /// step, right after they are evaluated: outputs at the step's start come free with the first
+    /// stage instead of costing one more evaluation (and the system's last-evaluation fields,
+    /// such as the wheel forces, belong to that state).
+    pub fn step_observed<S: OdeSystem>(
+        &mut self,
+        system: &mut S,
+        t: f64,
+        dt: f64,
+        y: &mut [f64],
+        observe: impl FnOnce(&S, &[f64], &[f64]),
+    ) {
         fn stage(out: &mut [f64], y: &[f64], h: f64, k: &[f64]) {
             for ((o, yi), ki) in out.iter_mut().zip(y).zip(k) {
                 *o = yi + h * ki;
             }
         }
         system.derivatives(t, y, &mut self.k1);
+        observe(system, y, &self.k1);
         stage(&mut self.stage, y, 0.5 * dt, &self.k1);
         system.derivatives(t + 0.5 * dt, &self.stage, &mut self.k2);
         stage(&mut self.stage, y, 0.5 * dt, &self.k2);

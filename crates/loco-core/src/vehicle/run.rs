@@ -156,13 +156,14 @@ pub fn run(
     let mut t = 0.0;
     let total_steps = (n_samples - 1) * steps_per_sample;
     for step in 0..=total_steps {
-        if step % steps_per_sample == 0 {
-            // Accelerations at the sample time: one evaluation of the right-hand side.
-            system.derivatives(t, y, &mut dy);
-            record(system, &probes, y, &dy, &mut channels);
-            time.push(t);
-        }
+        let sample = step % steps_per_sample == 0;
         if step == total_steps {
+            if sample {
+                // Accelerations at the last sample time: one evaluation of the right-hand side.
+                system.derivatives(t, y, &mut dy);
+                record(system, &probes, y, &dy, &mut channels);
+                time.push(t);
+            }
             break;
         }
         if let Some(flag) = cancel {
@@ -170,7 +171,15 @@ pub fn run(
                 return Err(LocoError::Interrupted);
             }
         }
-        workspace.step(system, t, dt, y);
+        if sample {
+            // Accelerations at the sample time are the first RK4 stage of the step from it.
+            workspace.step_observed(system, t, dt, y, |system, y0, dy0| {
+                record(system, &probes, y0, dy0, &mut channels);
+            });
+            time.push(t);
+        } else {
+            workspace.step(system, t, dt, y);
+        }
         t = (step + 1) as f64 * dt;
         if let Some(e) = system.error.take() {
             return Err(e);

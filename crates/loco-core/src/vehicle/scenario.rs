@@ -10,9 +10,10 @@ use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
 use super::structure::VehicleStructure;
-use super::wheel_rail::{WheelRail, WheelRailSettings};
+use super::wheel_rail::{CreepSolver, WheelRail, WheelRailSettings};
 use crate::contact::builtin::builtin_profile;
 use crate::contact::fastsim::{Fastsim, FastsimParams};
+use crate::contact::fastsim_table::{FastsimTable, FastsimTableParams};
 use crate::contact::geometry::ContactGeometry;
 use crate::contact::profile::Profile;
 use crate::contact::setup::{ContactSearchParams, TrackSetup, WheelsetSetup};
@@ -75,6 +76,9 @@ pub struct Scenario {
     pub yaw_damper: Option<Damper>,
     pub run: RunSettings,
     pub fastsim: FastsimParams,
+    /// Tabulated FASTSIM with this resolution instead of FASTSIM at every evaluation (`None`,
+    /// the default and the study's method).
+    pub creep_table: Option<FastsimTableParams>,
     /// Lateral disturbance of every wheelset at t = 0, m (0: start from equilibrium).
     pub initial_lateral_offset: f64,
 }
@@ -97,6 +101,7 @@ impl Scenario {
             yaw_damper: None,
             run: RunSettings::default(),
             fastsim: FastsimParams::default(),
+            creep_table: None,
             initial_lateral_offset: 0.0,
         })
     }
@@ -204,14 +209,18 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
             format!("must be in [0, 0.5), got {nu}"),
         ));
     }
-    let fastsim = Fastsim::new(FastsimParams {
+    let fastsim_params = FastsimParams {
         poisson_ratio: nu,
         shear_modulus: check_positive(
             "track.shear_modulus",
             parameters.get("track.shear_modulus")?,
         )?,
         ..scenario.fastsim
-    })?;
+    };
+    let fastsim = match scenario.creep_table {
+        None => CreepSolver::Direct(Fastsim::new(fastsim_params)?),
+        Some(table) => CreepSolver::Tabulated(Arc::new(FastsimTable::new(fastsim_params, table)?)),
+    };
     Ok(WheelRail::new(
         table,
         fastsim,

@@ -17,12 +17,14 @@ use super::elements::{add_force, BodyStates, Wrenches};
 use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
 use crate::contact::creepage::{creepages, BodyVelocity, ContactFrame, Side};
 use crate::contact::fastsim::Fastsim;
+use crate::contact::fastsim_table::FastsimTable;
 use crate::contact::geometry::WheelsetContact;
 use crate::contact::hertz_table::HertzShapeTable;
-use crate::contact::kalker::CreepForces;
+use crate::contact::kalker::{CreepForces, Creepages};
 use crate::contact::table::ContactTable;
 use crate::error::{LocoError, Result};
 use crate::track::RailIrregularity;
+use std::sync::Arc;
 
 /// Lateral wheelset speed (m/s) beyond which leaving the contact table is taken as numerical
 /// divergence, not flange climbing: hunting at 400 km/h with 10 mm amplitude at 5 Hz reaches 0.3 m/s.
@@ -53,11 +55,31 @@ pub struct WheelForces {
     pub points_in_contact: u8,
 }
 
-/// The contact of all wheels with a given table, FASTSIM solver and settings.
+/// How the tangential creep forces are computed.
+#[derive(Debug, Clone)]
+pub enum CreepSolver {
+    /// FASTSIM at every evaluation (the study's method, exact for its grid).
+    Direct(Fastsim),
+    /// FASTSIM's normalised results interpolated from a table built once (faster per call;
+    /// force error about 2 % of μN, see `contact::fastsim_table`).
+    Tabulated(Arc<FastsimTable>),
+}
+
+impl CreepSolver {
+    #[inline]
+    fn creep_forces(&self, a: f64, b: f64, n: f64, mu: f64, creep: &Creepages) -> CreepForces {
+        match self {
+            CreepSolver::Direct(f) => f.creep_forces(a, b, n, mu, creep),
+            CreepSolver::Tabulated(t) => t.creep_forces(a, b, n, mu, creep),
+        }
+    }
+}
+
+/// The contact of all wheels with a given table, creep solver and settings.
 #[derive(Debug, Clone)]
 pub struct WheelRail {
     table: ContactTable,
-    fastsim: Fastsim,
+    fastsim: CreepSolver,
     settings: WheelRailSettings,
     /// Hertz shape functions, tabulated: curvatures change at every evaluation.
     hertz: HertzShapeTable,
@@ -69,8 +91,8 @@ pub struct WheelRail {
 const SIDES: [Side; 2] = [Side::Left, Side::Right];
 
 impl WheelRail {
-    /// Wraps a contact table and a FASTSIM solver.
-    pub fn new(table: ContactTable, fastsim: Fastsim, settings: WheelRailSettings) -> Self {
+    /// Wraps a contact table and a creep solver.
+    pub fn new(table: ContactTable, fastsim: CreepSolver, settings: WheelRailSettings) -> Self {
         let centre = table.lookup(0.0);
         let radius = |side: usize| {
             centre.wheels[side]
