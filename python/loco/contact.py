@@ -3,7 +3,10 @@
 :func:`geometry` solves, for each lateral displacement ``y`` of the wheelset (m, positive to the
 left), the roll and rise at which both wheels touch their rails, and returns per wheel up to two
 contact points (tread side and flange side, the second with its vertical gap).
-:func:`rolling_radius_difference` returns Δr = r_left − r_right for equivalent conicity.
+:func:`rolling_radius_difference` returns Δr = r_left − r_right for equivalent conicity as
+EN 15302 defines it: the wheelset translated without roll, each wheel touching its rail at its own
+lowest point (the standard's benchmark Δr functions are those; :func:`geometry` rolls the rigid
+wheelset, as the vehicle model does, which moves flange contact about r·φ ≈ 0.3 mm earlier).
 
 Track set-up keywords (SI units): ``gauge`` (m, measured ``gauge_height`` below the rail top),
 ``inclination`` (rad, rail cant toward the track centre; 0 for already canted rail profiles),
@@ -171,7 +174,8 @@ def rolling_radius_difference(
     flange_back_offset: float = 0.070,
     nominal_radius: float | tuple[float, float] = 0.625,
 ) -> _FloatArray:
-    """Δr = r_left − r_right (m) of the touching points at each lateral displacement ``y`` (m)."""
+    """Δr = r_left − r_right (m) at each lateral displacement ``y`` (m) of the wheelset translated
+    without roll (EN 15302's definition, see the module documentation)."""
     ys = np.atleast_1d(np.asarray(y, dtype=np.float64))
     profiles, kwargs = _setup(
         wheel,

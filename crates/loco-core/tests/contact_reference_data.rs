@@ -2,128 +2,22 @@
 //! contact benchmark A-2.2 (CONTACT's input and reference output, S1002 on UIC60) and the EN 15302
 //! reference profiles. Each test skips, saying so, when the data are absent.
 
+mod manchester;
 mod support;
 
 use loco_core::contact::*;
-use std::path::Path;
-
-/// One wheel's contact in CONTACT's output, converted to the profile frame of `loco` (mm, rad).
-#[derive(Debug, Clone, Copy)]
-struct RefContact {
-    wheel_y: f64,
-    rail_y: f64,
-    angle: f64,
-    radius: f64,
-    /// CONTACT's elastic approach of the bodies, mm.
-    approach: f64,
-    /// CONTACT's normal force FN, N, and peak pressure PMAX, MPa.
-    normal_force: f64,
-    peak_pressure: f64,
-}
-
-/// Lateral displacement Y_WS (mm), roll ROLL_WS (rad) and yaw (rad) per case, from the `.inp`.
-fn read_poses(text: &str) -> Vec<(f64, f64, f64)> {
-    text.lines()
-        .filter(|l| l.contains("S, Y, FZ, ROLL, YAW, PITCH"))
-        .map(|l| {
-            let v: Vec<f64> = l
-                .split_whitespace()
-                .take(6)
-                .map(|f| f.parse().unwrap())
-                .collect();
-            (v[1], v[3], v[4])
-        })
-        .collect()
-}
-
-/// Per case: (number of patches, first patch) from a `.ref_out`. `mirror` is −1 for the left
-/// wheel, whose profile coordinates CONTACT reports mirrored (its y axis points to the right).
-fn read_reference(text: &str, mirror: f64, nominal_radius_mm: f64) -> Vec<(usize, RefContact)> {
-    let lines: Vec<&str> = text.lines().collect();
-    let numbers = |i: usize| -> Vec<f64> {
-        lines[i]
-            .split_whitespace()
-            .map(|f| f.parse().unwrap())
-            .collect()
-    };
-    let mut out = Vec::new();
-    let mut patches = 0;
-    let mut tr: Option<Vec<f64>> = None;
-    let mut wheel: Option<Vec<f64>> = None;
-    let mut forces: Option<Vec<f64>> = None;
-    for (i, l) in lines.iter().enumerate() {
-        if l.contains("CONTACT PATCH") && l.contains("WHEEL-RAIL") {
-            patches = l.split_whitespace().rev().nth(2).unwrap().parse().unwrap();
-        } else if l.trim_start().starts_with("XCP(TR)") && tr.is_none() {
-            tr = Some(numbers(i + 1));
-        } else if l.trim_start().starts_with("XCP(W)") {
-            wheel = Some(numbers(i + 1));
-        } else if l.trim_start().starts_with("FN ") {
-            forces = Some(numbers(i + 1));
-        } else if l.trim_start().starts_with("FN/G") {
-            let approach = numbers(i + 1)[3];
-            let peak_pressure = numbers(i + 1)[4];
-            let normal_force = forces.take().map_or(f64::NAN, |f| f[0]);
-            if let (Some(t), Some(w)) = (tr.take(), wheel.take()) {
-                out.push((
-                    patches,
-                    RefContact {
-                        wheel_y: mirror * w[1],
-                        rail_y: mirror * t[4],
-                        // DELTCP is about CONTACT's x axis, y to the right: the left wheel's
-                        // angle has loco's sign, the right wheel's the opposite one.
-                        angle: -mirror * t[3],
-                        // ZCP(W) is the wheel profile's z (down) at the contact: r = r0 + z.
-                        radius: nominal_radius_mm + w[2],
-                        approach,
-                        normal_force,
-                        peak_pressure,
-                    },
-                ));
-            }
-        }
-    }
-    out
-}
 
 #[test]
 fn manchester_benchmark_a22_contact_positions() {
-    let files = [
-        "profiles/MBench_S1002_v3.prw",
-        "profiles/MBench_UIC60_v3.prr",
-        "profiles/mbench_a22_left.inp",
-        "profiles/mbench_a22_left.ref_out",
-        "profiles/mbench_a22_right.ref_out",
-    ];
-    let Some(paths) = files
-        .iter()
-        .map(|f| support::shared_file(f))
-        .collect::<Option<Vec<_>>>()
+    let Some(manchester::Benchmark {
+        poses,
+        flanging,
+        other,
+        geometry: g,
+    }) = manchester::load()
     else {
         return;
     };
-    let wheel = load_profile(&paths[0], Some(ProfileKind::Wheel), false).unwrap();
-    let rail = load_profile(&paths[1], Some(ProfileKind::Rail), false).unwrap();
-    let read = |p: &Path| std::fs::read_to_string(p).unwrap();
-    let poses = read_poses(&read(&paths[2]));
-    let left = read_reference(&read(&paths[3]), -1.0, 460.0);
-    let right = read_reference(&read(&paths[4]), 1.0, 460.0);
-    assert_eq!(poses.len(), 21);
-    assert_eq!((left.len(), right.len()), (21, 21));
-    // The benchmark's set-up (input file): gauge 1435 mm at 14 mm, rails already canted,
-    // back-to-back 1360 mm with the flange back 70 mm from the taping line, r0 = 460 mm.
-    let track = TrackSetup {
-        gauge: 1.435,
-        gauge_height: 0.014,
-        rail_inclination: 0.0,
-    };
-    let wheelset = WheelsetSetup {
-        back_to_back: 1.360,
-        flange_back_offset: 0.070,
-        nominal_radius: [0.46, 0.46],
-    };
-    let g =
-        ContactGeometry::symmetric(&wheel, &rail, &track, &wheelset, &Default::default()).unwrap();
     // CONTACT's y points to the right: its Y_WS > 0 pushes its right wheel into flange contact,
     // which is loco's left wheel for y > 0 (the problem is symmetric, so loco's y = Y_WS with
     // the wheels swapped).
@@ -139,7 +33,8 @@ fn manchester_benchmark_a22_contact_positions() {
     // - roll within 3 % + 1e-5 rad (the benchmark's rigid roll includes the yaw).
     println!("case  y    wheel  side  Δwheel_y  Δrail_y  Δangle   Δradius (mm, mm, rad, mm)");
     let mut worst = [0.0_f64; 4];
-    for (case, &(y_mm, roll_ref, yaw)) in poses.iter().enumerate() {
+    for (case, pose) in poses.iter().enumerate() {
+        let (y_mm, roll_ref, yaw) = (pose.y_mm, pose.roll, pose.yaw);
         let y = y_mm * 1e-3;
         let c = g.solve(y).unwrap();
         // CONTACT's roll is about its x axis with y right, z down: the opposite sign.
@@ -159,8 +54,8 @@ fn manchester_benchmark_a22_contact_positions() {
             -roll_ref
         );
         for (side, name, reference) in [
-            (LEFT, "flanging", &right[case]),
-            (RIGHT, "other", &left[case]),
+            (LEFT, "flanging", &flanging[case]),
+            (RIGHT, "other", &other[case]),
         ] {
             let (patches, r) = *reference;
             assert_eq!(patches, 1);
@@ -237,47 +132,24 @@ fn manchester_benchmark_a22_hertz_from_our_curvatures() {
     // and (b) the rigid point is within 1 mm of CONTACT's (not a flat, conformal gap); there
     // 5 % on both (the curvatures vary across patches up to 15 mm wide; worst seen 4.3 %).
     use loco_core::contact::hertz::{hertz_contact, ContactRadii, ElasticMaterial};
-    let files = [
-        "profiles/MBench_S1002_v3.prw",
-        "profiles/MBench_UIC60_v3.prr",
-        "profiles/mbench_a22_left.inp",
-        "profiles/mbench_a22_left.ref_out",
-        "profiles/mbench_a22_right.ref_out",
-    ];
-    let Some(paths) = files
-        .iter()
-        .map(|f| support::shared_file(f))
-        .collect::<Option<Vec<_>>>()
+    let Some(manchester::Benchmark {
+        poses,
+        flanging,
+        other,
+        geometry: g,
+    }) = manchester::load()
     else {
         return;
     };
-    let wheel = load_profile(&paths[0], Some(ProfileKind::Wheel), false).unwrap();
-    let rail = load_profile(&paths[1], Some(ProfileKind::Rail), false).unwrap();
-    let read = |p: &Path| std::fs::read_to_string(p).unwrap();
-    let poses = read_poses(&read(&paths[2]));
-    let left = read_reference(&read(&paths[3]), -1.0, 460.0);
-    let right = read_reference(&read(&paths[4]), 1.0, 460.0);
-    let track = TrackSetup {
-        gauge: 1.435,
-        gauge_height: 0.014,
-        rail_inclination: 0.0,
-    };
-    let wheelset = WheelsetSetup {
-        back_to_back: 1.360,
-        flange_back_offset: 0.070,
-        nominal_radius: [0.46, 0.46],
-    };
-    let g =
-        ContactGeometry::symmetric(&wheel, &rail, &track, &wheelset, &Default::default()).unwrap();
     // The benchmark's material: G = 82 GPa, ν = 0.28, so E = 2G(1 + ν).
     let material = ElasticMaterial {
         youngs_modulus: 2.0 * 82e9 * 1.28,
         poisson_ratio: 0.28,
     };
     let (mut checked, mut worst) = (0, [0.0_f64; 2]);
-    for (case, &(y_mm, _, _)) in poses.iter().enumerate() {
-        let c = g.solve(y_mm * 1e-3).unwrap();
-        for (side, reference) in [(LEFT, &right[case]), (RIGHT, &left[case])] {
+    for (case, pose) in poses.iter().enumerate() {
+        let c = g.solve(pose.y_mm * 1e-3).unwrap();
+        for (side, reference) in [(LEFT, &flanging[case]), (RIGHT, &other[case])] {
             let r = reference.1;
             let p = c.wheels[side].touching().unwrap();
             let isolated = c.wheels[side]

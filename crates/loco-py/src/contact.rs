@@ -305,7 +305,8 @@ fn contact_geometry<'py>(
     Ok(out)
 }
 
-/// Rolling radius difference r_left − r_right (m) of the touching points at each `ys` (m).
+/// Rolling radius difference r_left − r_right (m) at each `ys` (m), EN 15302's definition: the
+/// wheelset translated without roll (`loco_core::contact::rolling_radius_difference`).
 #[pyfunction(name = "rolling_radius_difference")]
 #[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, ys, *, gauge, gauge_height,
     rail_inclination, back_to_back, flange_back_offset, nominal_radius_left, nominal_radius_right))]

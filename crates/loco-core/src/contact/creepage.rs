@@ -200,6 +200,27 @@ impl WheelsetMotion {
     }
 }
 
+/// Longitudinal position (m, + forward) of the contact point of a yawed wheel relative to the
+/// vertical plane through its axle, to first order in the yaw ψ (rad):
+/// `x = s·r·tan(γ − s·ϕ)·ψ`, with s the side's sign, r the rolling radius (m), γ the contact angle
+/// in the track frame and ϕ the wheelset roll (rad; γ − s·ϕ is the profile's slope in the
+/// wheelset frame). The 2-D contact geometry puts the point under the axle (x = 0); on the tread
+/// the lead is a fraction of a mm, but a flange contact (γ ≈ 1.2 rad) yawed by 15 mrad leads by
+/// about 17 mm. There the wheel material moves vertically at Ω·x, which the steep contact plane
+/// turns into lateral creepage (Manchester benchmark, flange cases: 0.04 against 0.006
+/// without the lead; `tests/manchester_normal_force.rs`). [`WheelsetMotion::creepages`] and the
+/// vehicle model do not include it.
+pub fn contact_lead(
+    side: Side,
+    rolling_radius: f64,
+    contact_angle: f64,
+    roll: f64,
+    yaw: f64,
+) -> f64 {
+    let s = side.sign();
+    s * rolling_radius * (contact_angle - s * roll).tan() * yaw
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,6 +8,9 @@
 //! contact points: the touching minimum and a second, separate local minimum of the gap with its
 //! (vertical) gap, so that tread and flange contact are both represented.
 //!
+//! For the equivalent conicity of EN 15302 the wheelset is instead only translated (no roll), see
+//! [`ContactGeometry::rolling_radius_difference_unrolled`].
+//!
 //! Yaw is ignored: the problem is solved in the axle's vertical plane, exact for zero yaw. With
 //! yaw angle ψ the contact points lead or lag (by about `r·tan δ·ψ` longitudinally) and their
 //! lateral positions change by second-order amounts on the tread; in flange contact the effect is
@@ -217,6 +220,24 @@ impl ContactGeometry {
             roll,
             wheels,
         })
+    }
+
+    /// Rolling radius difference r_left − r_right (m) at lateral displacement `y` (m) of the
+    /// wheelset translated **without roll**, each wheel lowered onto its own rail: the Δr of
+    /// EN 15302 (see [`super::table::rolling_radius_difference`]). [`Self::solve`] instead rolls
+    /// the rigid wheelset until both wheels touch, as the vehicle model needs.
+    pub fn rolling_radius_difference_unrolled(
+        &self,
+        y: f64,
+        ws: &mut ContactWorkspace,
+    ) -> Result<f64> {
+        check_finite("y", y)?;
+        let mut radius = [0.0; 2];
+        for (s, r) in radius.iter_mut().enumerate() {
+            let (u_ws, phi) = side_pose(s, y, 0.0);
+            *r = self.sides[s].touching_radius(u_ws, phi, &mut ws.gap)?;
+        }
+        Ok(radius[LEFT] - radius[RIGHT])
     }
 
     /// Vertical gap (m) between wheel `side` (`LEFT`/`RIGHT`) and its rail at the wheel profile

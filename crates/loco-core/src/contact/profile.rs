@@ -30,7 +30,9 @@
 //! first point (−32.5, −14) mm is the gauge point, 14 mm below z = 0, while the head's highest
 //! point is at z = +0.49 mm. To reproduce that set-up use `rail_inclination = 0` and
 //! `gauge_height = 0.014 + max(z)` (the gauge point then lands on the file's first point) with
-//! gauge 1.435 m and back-to-back 1.360 m (1.43516 m in the standard's E1–E9 cases).
+//! gauge 1.435 m and back-to-back 1.360 m: the file's origin is then on the taping line, 750 mm
+//! from the track centre, as the standard's Δr functions confirm
+//! (`tests/conicity_en15302_profiles.rs`).
 //!
 //! # Interpolant
 //!

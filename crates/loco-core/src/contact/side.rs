@@ -184,6 +184,21 @@ impl Side {
         })
     }
 
+    /// Rolling radius (m) at the lowest point of the wheel over its rail for the pose: where a
+    /// wheel lowered onto its rail on its own touches. Fails when that point is at the end of a
+    /// profile (flange climbing past the rail) or the wheel does not overlap its rail.
+    pub(super) fn touching_radius(&self, u_ws: f64, phi: f64, gap: &mut Vec<f64>) -> Result<f64> {
+        self.sample(u_ws, phi, gap);
+        let (k, _) = gap
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(b.1))
+            .ok_or_else(|| LocoError::Contact("empty wheel profile".into()))?;
+        self.check_interior(k, gap, u_ws)?;
+        let (t, _) = self.refine(u_ws, phi, k, gap);
+        Ok(self.r0 - self.wheel.spline().eval(t).value)
+    }
+
     /// The minimum must lie inside the overlap of wheel and rail, else the wheel is off its rail.
     fn check_interior(&self, k: usize, gap: &[f64], u_ws: f64) -> Result<()> {
         let n = gap.len();

@@ -144,17 +144,22 @@ impl ContactTable {
     }
 }
 
-/// Rolling radius difference Δr = r_left − r_right (m) of the touching points at each lateral
-/// displacement in `ys` (m), solved exactly (no table). For EN 15302 equivalent conicity.
+/// Rolling radius difference Δr = r_left − r_right (m) at each lateral displacement in `ys` (m)
+/// as EN 15302 defines it for equivalent conicity: the wheelset is translated laterally without
+/// roll and each wheel touches its rail at its own lowest point
+/// ([`ContactGeometry::rolling_radius_difference_unrolled`]), solved exactly (no table).
+///
+/// Why not the rigidly rolled wheelset of [`ContactGeometry::solve`] (the vehicle model's
+/// contact): the standard's benchmark Δr functions (`dr_E*.dat`, EN 15302 Annex E) are those of
+/// the unrolled wheelset. From the reference profiles, unrolled Δr matches them at the grid points
+/// to a median of 0.002–0.025 mm per case, rolled Δr only to 0.04–0.25 mm (and by up to 8 mm near
+/// flange contact, where 0.5–1 mrad of roll turns the flange r·φ ≈ 0.25–0.45 mm further toward
+/// the rail); see `tests/conicity_en15302_profiles.rs`. On the tread the two differ little, but
+/// a conformal worn tread (`jm3-worn` on CN60) rolls enough to change tan γe(3 mm) by 0.07.
 pub fn rolling_radius_difference(geometry: &ContactGeometry, ys: &[f64]) -> Result<Vec<f64>> {
     let mut ws = ContactWorkspace::default();
-    let mut roll = geometry.roll_at_centre();
     ys.iter()
-        .map(|&y| {
-            let c = geometry.solve_with(y, roll, &mut ws)?;
-            roll = c.roll;
-            Ok(c.rolling_radius_difference())
-        })
+        .map(|&y| geometry.rolling_radius_difference_unrolled(y, &mut ws))
         .collect()
 }
 
