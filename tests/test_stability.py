@@ -1,4 +1,11 @@
-"""Eigenvalues about equilibrium agree with the time-domain behaviour of the same model."""
+"""Eigenvalues about equilibrium agree with the time-domain behaviour of the same model; the
+nonlinear critical speed of a ramp-down against the linear one."""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
 
 import loco
 
@@ -9,11 +16,11 @@ def test_hunting_mode_loses_damping_with_speed_and_weak_yaw_dampers() -> None:
         vehicle, loco.Scenario(scenario="S_high", speed=80 / 3.6, yaw_damper=loco.dampers.YD1)
     )
     fast = loco.eigen(
-        vehicle, loco.Scenario(scenario="S_high", speed=200 / 3.6, yaw_damper=loco.dampers.YD1)
+        vehicle, loco.Scenario(scenario="S_high", speed=300 / 3.6, yaw_damper=loco.dampers.YD1)
     )
     assert slow.least_damped().damping_ratio > 0.0
     hunting = fast.least_damped()
-    # Worn wheels with YD1 hunt at 200 km/h; the time simulation shows the bogie frame's
+    # Worn wheels with YD1 hunt at 300 km/h; the time simulation shows the bogie frame's
     # dominant frequency near 4 Hz.
     assert hunting.damping_ratio < 0.0
     assert 2.0 < hunting.frequency < 7.0
@@ -28,5 +35,41 @@ def test_critical_speed_rises_with_the_stiffer_yaw_damper() -> None:
     yd2 = loco.critical_speed(
         vehicle, loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD2), tolerance=2.0
     )
-    assert 20.0 < yd1 < 200 / 3.6
+    assert 20.0 < yd1 < 300 / 3.6
     assert yd2 > yd1
+
+
+def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
+    # Worn wheels hunt subcritically: after a disturbance well above the linear critical speed
+    # the limit cycle survives below it, so a ramp-down loses it at or below that speed.
+    vehicle = loco.Locomotive.default()
+    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    linear = loco.critical_speed(vehicle, scenario, tolerance=2.0)
+    assert 20.0 < linear < 100.0
+    start = dataclasses.replace(scenario, speed=1.3 * linear)
+    nonlinear = loco.critical_speed(
+        vehicle, start, low=0.4 * linear, method="nonlinear", deceleration=1.0
+    )
+    assert 0.4 * linear < nonlinear <= linear + 2.0
+    if nonlinear < linear - 2.0:
+        # Where the cycle dies the equilibrium is linearly stable.
+        at = loco.eigen(vehicle, dataclasses.replace(scenario, speed=nonlinear))
+        assert at.least_damped().damping_ratio > 0.0
+
+
+def test_ramp_down_reports_its_record_and_checks_its_inputs() -> None:
+    vehicle = loco.Locomotive.default()
+    slow = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD2, speed=30.0)
+    ramp = loco.stability.ramp_down(vehicle, slow, end_speed=25.0)
+    # Stiff yaw dampers at 30 m/s: the disturbance dies during the hold, no ramp is needed.
+    assert ramp.outcome == "stable_at_start"
+    assert math.isinf(ramp.critical_speed)
+    assert len(ramp.speed) == len(ramp.amplitude) > 0
+    assert ramp.amplitude[0] > ramp.amplitude[-1]
+    assert np.all(ramp.speed == 30.0)
+    with pytest.raises(loco.ParameterError, match="deceleration"):
+        loco.stability.ramp_down(vehicle, slow, deceleration=-1.0)
+    with pytest.raises(loco.ParameterError, match="end_speed"):
+        loco.stability.ramp_down(vehicle, slow, end_speed=40.0)
+    with pytest.raises(loco.ParameterError, match="method"):
+        loco.critical_speed(vehicle, slow, method="quadratic")

@@ -411,6 +411,7 @@ __all__ += [
     "default_vehicle_toml",
     "dof_names",
     "linearise",
+    "ramp_down",
     "simulate",
     "study_parameters",
     "vehicle_parameters",
@@ -445,6 +446,20 @@ def linearise(
     origin: str = ...,
     overrides: dict[str, float] = ...,
 ) -> NDArray[np.float64]: ...
+def ramp_down(
+    scenario: RunScenario,
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+    end_speed: float = 20.0,
+    deceleration: float = 0.5,
+    hold: float = 3.0,
+    max_hold: float = 30.0,
+    disturbance: float = 8e-3,
+    window: float = 1.0,
+    threshold: float = 5e-4,
+) -> tuple[float, str, NDArray[np.float64], NDArray[np.float64]]: ...
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------
 

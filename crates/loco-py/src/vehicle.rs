@@ -1,8 +1,10 @@
-//! Bindings of `loco_core::vehicle`: the parameter file, names of bodies and coordinates.
+//! Bindings of `loco_core::vehicle`: the parameter file, names of bodies and coordinates, runs,
+//! the linearisation and the nonlinear critical speed.
 
-use crate::errors::run_detached;
+use crate::errors::{run_detached, run_detached_monitored};
 use crate::scenario::PyRunScenario;
 use loco_core::metrics::RunMetrics;
+use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
 use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
@@ -11,6 +13,8 @@ use loco_core::vehicle::structure::VehicleStructure;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
 use std::collections::BTreeMap;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 /// Parameters of a vehicle file (or the embedded default when `toml_text` is None) with the
 /// overrides applied, each checked by building the vehicle.
@@ -171,6 +175,69 @@ fn linearise<'py>(
     Ok(matrix.into_pyarray(py))
 }
 
+/// What `ramp_down` returns: critical speed (m/s), outcome (`"died_out"`, `"stable_at_start"`,
+/// `"hunts_at_end"`), and the speed (m/s) at the centre and the hunting amplitude (m) of each
+/// window.
+type RampTuple<'py> = (
+    f64,
+    &'static str,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+);
+
+/// Nonlinear critical speed by a speed ramp-down from the scenario's speed on perfect track (see
+/// `loco.critical_speed(..., method="nonlinear")`); Ctrl-C stops it.
+#[pyfunction]
+#[pyo3(signature = (
+    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
+    end_speed=20.0, deceleration=0.5, hold=3.0, max_hold=30.0, disturbance=8e-3, window=1.0,
+    threshold=5e-4
+))]
+#[allow(clippy::too_many_arguments)]
+fn ramp_down<'py>(
+    py: Python<'py>,
+    scenario: PyRef<'py, PyRunScenario>,
+    toml_text: Option<String>,
+    origin: String,
+    overrides: BTreeMap<String, f64>,
+    end_speed: f64,
+    deceleration: f64,
+    hold: f64,
+    max_hold: f64,
+    disturbance: f64,
+    window: f64,
+    threshold: f64,
+) -> PyResult<RampTuple<'py>> {
+    let scenario = scenario.inner.clone();
+    let settings = RampSettings {
+        end_speed,
+        deceleration,
+        hold,
+        max_hold,
+        disturbance,
+        window,
+        threshold,
+    };
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker_cancel = Arc::clone(&cancel);
+    let work = move || {
+        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
+        nonlinear_critical_speed(set, &scenario, &settings, Some(&worker_cancel))
+    };
+    let result = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
+    let outcome = match result.outcome {
+        RampOutcome::DiedOut => "died_out",
+        RampOutcome::StableAtStart => "stable_at_start",
+        RampOutcome::HuntsAtEnd => "hunts_at_end",
+    };
+    Ok((
+        result.critical_speed,
+        outcome,
+        result.window_speed.into_pyarray(py),
+        result.window_amplitude.into_pyarray(py),
+    ))
+}
+
 /// Adds this file's functions to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(default_vehicle_toml, m)?)?;
@@ -181,5 +248,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(linearise, m)?)?;
+    m.add_function(wrap_pyfunction!(ramp_down, m)?)?;
     Ok(())
 }

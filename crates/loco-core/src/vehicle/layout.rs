@@ -71,6 +71,44 @@ pub const fn bogie_of(w: usize) -> usize {
     w / 2
 }
 
+/// What a coordinate measures, for the bounds a run checks its motion against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CoordinateKind {
+    /// A lateral or vertical displacement, m.
+    Translation,
+    /// A longitudinal displacement, m. The reference frame moves at the imposed speed while the
+    /// vehicle coasts (no traction), so hunting and rolling resistance let the whole vehicle fall
+    /// slowly behind the frame (≈ 0.01 m/s² while hunting): only the motion relative to the
+    /// carbody is bounded.
+    Longitudinal,
+    /// A rotation, rad.
+    Rotation,
+    /// A wheelset's rotation about its axle beyond steady rolling, rad: it accumulates the
+    /// longitudinal creep of a whole run and has no bound.
+    Spin,
+}
+
+/// The kind of coordinate `i` (0..[`N_DOF`]) in the order of the table above.
+pub const fn coordinate_kind(i: usize) -> CoordinateKind {
+    let six_dof_end = hollow_shaft(0);
+    if i < six_dof_end {
+        let local = i % 6;
+        if i >= wheelset(0) && i < motor(0) && local == PITCH {
+            CoordinateKind::Spin
+        } else if local == X {
+            CoordinateKind::Longitudinal
+        } else if local < ROLL {
+            CoordinateKind::Translation
+        } else {
+            CoordinateKind::Rotation
+        }
+    } else if i < traction_rod(0) && (i - six_dof_end) % 3 == 0 {
+        CoordinateKind::Translation
+    } else {
+        CoordinateKind::Rotation
+    }
+}
+
 /// Body numbers, in the order of [`body_names`].
 pub const BODY_CARBODY: usize = 0;
 pub const fn body_frame(b: usize) -> usize {
@@ -165,6 +203,20 @@ mod tests {
         assert_eq!(names[traction_rod(1)], "traction_rod2.pitch_rel");
         assert_eq!(names[rotary_arm(3, 1)], "rotary_arm4_right.rotation");
         assert_eq!(names[N_DOF - 1], "rotary_arm4_right.rotation");
+    }
+
+    #[test]
+    fn coordinate_kinds_follow_the_names() {
+        for (i, name) in dof_names().iter().enumerate() {
+            let coordinate = name.split('.').nth(1).unwrap_or_default();
+            let expected = match coordinate {
+                "x" => CoordinateKind::Longitudinal,
+                "y" | "z" | "y_rel" => CoordinateKind::Translation,
+                "spin" => CoordinateKind::Spin,
+                _ => CoordinateKind::Rotation,
+            };
+            assert_eq!(coordinate_kind(i), expected, "{name}");
+        }
     }
 
     #[test]

@@ -1,15 +1,20 @@
 //! Linearisation of the locomotive about its static equilibrium at a running speed, for the
-//! eigenvalue analysis: `ẏ ≈ A (y − y₀)`.
+//! eigenvalue analysis: `ẏ ≈ A (y − y₀)`; the least damped mode and the linear critical speed.
 //!
 //! The state matrix is formed by central finite differences of the full nonlinear right-hand side
 //! (contact table, Hertz, FASTSIM, dampers' internal states), so it is the Jacobian of exactly the
 //! model that the time integration runs. Eigenvalues are computed by the caller (numpy/LAPACK in
 //! Python): frequencies `|Im λ|/2π`, damping ratios `−Re λ/|λ|`.
 
+use super::eigenvalues::eigenvalues;
 use super::integrator::OdeSystem;
+use super::parameters::ParameterSet;
+use super::scenario::{build_track, build_wheel_rail, start_distance, Scenario, TrackSpec};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
-use crate::error::Result;
+use super::structure::VehicleStructure;
+use crate::error::{check_positive, LocoError, Result};
+use std::sync::Arc;
 
 /// Relative perturbation of each state for the central differences (scaled by the state's size
 /// with a floor: 1e-7 m, rad, m/s, rad/s), small against the 0.1 mm contact table grid.
@@ -38,4 +43,110 @@ pub fn linearise(system: &mut VehicleSystem) -> Result<(Vec<f64>, Vec<f64>)> {
         return Err(e);
     }
     Ok((a, y0))
+}
+
+/// The least damped oscillatory mode of a state matrix in a frequency band.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeastDamped {
+    /// Frequency `|Im λ|/2π`, Hz.
+    pub frequency: f64,
+    /// Damping ratio `−Re λ/|λ|` (–); negative: the mode grows.
+    pub damping_ratio: f64,
+}
+
+/// The least damped oscillatory mode of the row-major n×n state matrix `a` with a frequency in
+/// `band` (Hz), as `loco.eigen(...).least_damped()` picks it; `None` when the band has no mode.
+pub fn least_damped(a: &[f64], n: usize, band: (f64, f64)) -> Result<Option<LeastDamped>> {
+    let modes = eigenvalues(a, n)?
+        .into_iter()
+        // One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
+        .filter(|e| e.im > 1e-6)
+        .map(|e| LeastDamped {
+            frequency: e.im / (2.0 * std::f64::consts::PI),
+            damping_ratio: -e.re / e.re.hypot(e.im),
+        })
+        .filter(|m| (band.0..=band.1).contains(&m.frequency));
+    Ok(modes.min_by(|a, b| a.damping_ratio.total_cmp(&b.damping_ratio)))
+}
+
+/// Search settings of the linear critical speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearSearch {
+    /// Bracket of the bisection, m/s.
+    pub low: f64,
+    pub high: f64,
+    /// Width of the final bracket, m/s.
+    pub tolerance: f64,
+    /// Frequency band of the modes considered, Hz (hunting and body modes, not drift).
+    pub band: (f64, f64),
+}
+
+impl Default for LinearSearch {
+    /// The defaults of `loco.critical_speed`: 20–110 m/s, 0.5 m/s, 0.3–20 Hz.
+    fn default() -> Self {
+        Self {
+            low: 20.0,
+            high: 110.0,
+            tolerance: 0.5,
+            band: (0.3, 20.0),
+        }
+    }
+}
+
+/// Linear critical speed (m/s): where the least damped mode in the band loses its damping, by
+/// bisection of the linearisation about equilibrium on perfect track. `+∞` when the vehicle is
+/// stable at `high`, `low` when it is already unstable there.
+pub fn linear_critical_speed(
+    parameters: ParameterSet,
+    scenario: &Scenario,
+    search: &LinearSearch,
+) -> Result<f64> {
+    scenario.validate()?;
+    let low = check_positive("low", search.low)?;
+    let high = check_positive("high", search.high)?;
+    let tolerance = check_positive("tolerance", search.tolerance)?;
+    if high <= low {
+        return Err(LocoError::param(
+            "high",
+            format!("must exceed low ({low} m/s), got {high} m/s"),
+        ));
+    }
+    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+    let perfect = Scenario {
+        track: TrackSpec::Perfect,
+        ..scenario.clone()
+    };
+    let track = Arc::new(build_track(&perfect, &structure)?);
+    let zeta = |speed: f64| -> Result<f64> {
+        let mut system = VehicleSystem::new(
+            structure.clone(),
+            wheel_rail.clone(),
+            track.clone(),
+            speed,
+            start_distance(&structure),
+            scenario.yaw_damper.as_ref(),
+            scenario.run.step,
+        )?;
+        let (a, _) = linearise(&mut system)?;
+        let mode = least_damped(&a, system.len_states(), search.band)?;
+        mode.map(|m| m.damping_ratio)
+            .ok_or_else(|| LocoError::param("band", "no mode in the frequency band"))
+    };
+    let (mut low, mut high) = (low, high);
+    if zeta(high)? > 0.0 {
+        return Ok(f64::INFINITY);
+    }
+    if zeta(low)? <= 0.0 {
+        return Ok(low);
+    }
+    while high - low > tolerance {
+        let mid = 0.5 * (low + high);
+        if zeta(mid)? > 0.0 {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    Ok(0.5 * (low + high))
 }

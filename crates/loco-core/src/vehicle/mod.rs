@@ -9,9 +9,13 @@
 //! - [`suspension`]: every suspension element placed on the vehicle.
 //! - [`structure`]: the assembled vehicle and its gravity, gyroscopic and spring forces.
 //! - [`integrator`]: fixed-step RK4.
+//! - [`linearise`], [`eigenvalues`]: the state matrix about equilibrium, its eigenvalues and the
+//!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
 
 pub mod bodies;
+pub mod critical_speed;
 pub mod damper_elements;
+pub mod eigenvalues;
 pub mod elements;
 pub mod integrator;
 pub mod kinematics;

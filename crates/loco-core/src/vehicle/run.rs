@@ -181,10 +181,7 @@ pub fn run(
             workspace.step(system, t, dt, y);
         }
         t = (step + 1) as f64 * dt;
-        if let Some(e) = system.error.take() {
-            return Err(e);
-        }
-        system.check_state(t, y)?;
+        system.finish_step(t, y)?;
     }
     Ok(RunOutput {
         sampling_rate: settings.output_rate,

@@ -1,19 +1,40 @@
 //! One run of the locomotive on a track: the first-order system integrated in time.
 //!
 //! State vector `y = [q (90) | q̇ (90) | damper internal states]`, in m, rad, m/s, rad/s and the
-//! damper module's units. The reference frame moves along the track at the running speed V;
-//! wheelset `w` is at distance `s = s_start + V·t + x_w` along the track.
+//! damper module's units. The reference frame moves along the track at the running speed V(t);
+//! wheelset `w` is at distance `s = s_start + ∫V dt + x_w` along the track.
+//!
+//! The speed is constant in a run. A speed ramp (the nonlinear critical speed,
+//! [`super::critical_speed`]) holds V0 until `ramp_start` = t0 and then lowers it at a constant
+//! deceleration `a`: `V(t) = V0 − a·max(t − t0, 0)` and `s = s_start + V0·t − a·max(t − t0, 0)²/2
+//! + x_w`.
+//! The speed is imposed as a slowly varying parameter: creepages, rolling spin, gyroscopic moments
+//! and the track position all follow it, while the inertia forces of the deceleration itself
+//! (`m·a` on every body, a braking force the real vehicle's brakes would supply) are left out.
 
-use super::damper_elements::{damper_law, law_for_step, DamperElement};
+use super::damper_elements::{damper_law, law_for_step, series_form, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::OdeSystem;
-use super::layout::{body_wheelset, N_BODIES, N_DOF, N_WHEELSETS};
+use super::layout::{
+    coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF, N_WHEELSETS, X,
+    Y,
+};
 use super::structure::VehicleStructure;
 use super::wheel_rail::{WheelForces, WheelRail};
 use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
 use crate::error::{LocoError, Result};
 use crate::track::{RailIrregularity, TrackIrregularity};
 use std::sync::Arc;
+
+/// Largest displacement of any coordinate in a run (longitudinal ones relative to the carbody),
+/// m: suspension travel is tens of millimetres and the contact range ±25 mm, so a body a metre
+/// away is a numerical blow-up, not a motion.
+pub const RUNAWAY_DISPLACEMENT: f64 = 1.0;
+/// Largest rotation of any coordinate but the wheelsets' spin, rad (29°), for the same reason.
+pub const RUNAWAY_ROTATION: f64 = 0.5;
+/// Lateral wheelset displacement beyond which a bounded state counts as derailed, m: twice the
+/// contact tables' half range (±25 mm, which already covers flange climbing).
+pub const DERAILED_LATERAL: f64 = 0.05;
 
 /// The system integrated in time: vehicle, dampers, contact, track and speed.
 #[derive(Debug, Clone)]
@@ -23,8 +44,12 @@ pub struct VehicleSystem {
     pub discrete: Vec<DamperDiscreteState>,
     pub wheel_rail: Arc<WheelRail>,
     pub track: Arc<TrackIrregularity>,
-    /// Running speed V, m/s.
+    /// Running speed V (the start speed of a ramp), m/s.
     pub speed: f64,
+    /// Deceleration of a speed ramp, m/s² (0: constant speed).
+    pub deceleration: f64,
+    /// Time at which a speed ramp starts, s (+∞: not yet).
+    pub ramp_start: f64,
     /// Track distance of the vehicle origin at t = 0, m.
     pub start_distance: f64,
     /// Tangential contact stiffness (N/m) used instead of creep in the static search; 0 in runs.
@@ -58,24 +83,15 @@ impl VehicleSystem {
         let mut dampers = Vec::with_capacity(structure.suspension.dampers.len());
         for placement in &structure.suspension.dampers {
             let law = law_for_step(damper_law(placement, yaw_damper)?, dt)?;
-            let rate = law.fastest_rate_per_s();
-            if rate * dt > 2.5 {
-                return Err(LocoError::param(
-                    "step",
-                    format!(
-                        "{dt} s is too long for damper `{}` (internal rate {rate:.3e} 1/s); use < {:.2e} s",
-                        placement.name,
-                        2.5 / rate
-                    ),
-                ));
-            }
-            let n = law.n_states();
-            dampers.push(DamperElement {
+            let element = DamperElement {
                 placement: placement.clone(),
                 law,
+                form: series_form(&placement.name, &law, dt)?,
                 state_offset: offset,
                 static_elongation: 0.0,
-            });
+            };
+            let n = element.n_states();
+            dampers.push(element);
             offset += n;
         }
         let discrete = dampers.iter().map(|d| d.law.initial_discrete()).collect();
@@ -87,6 +103,8 @@ impl VehicleSystem {
             wheel_rail,
             track,
             speed,
+            deceleration: 0.0,
+            ramp_start: 0.0,
             start_distance,
             static_stiffness: 0.0,
             n_states: offset,
@@ -104,9 +122,18 @@ impl VehicleSystem {
         self.n_states
     }
 
+    /// Running speed at time `t` (s), m/s.
+    #[inline]
+    pub fn speed_at(&self, t: f64) -> f64 {
+        self.speed - self.deceleration * (t - self.ramp_start).max(0.0)
+    }
+
     /// Track distance of wheelset `w` at time `t` (s), m.
+    #[inline]
     pub fn wheelset_distance(&self, w: usize, t: f64) -> f64 {
-        self.start_distance + self.speed * t + self.structure.layout.wheelset_x[w]
+        let ramp = (t - self.ramp_start).max(0.0);
+        self.start_distance + self.speed * t - 0.5 * self.deceleration * ramp * ramp
+            + self.structure.layout.wheelset_x[w]
     }
 
     /// Generalized forces `Q(q, q̇)` (N, N·m) at time `t` with damper states from `y`; also fills
@@ -116,18 +143,17 @@ impl VehicleSystem {
         let qd = &rest[..N_DOF];
         self.structure.body_states(q, qd, &mut self.body_states);
         self.wrenches = [[0.0; 6]; N_BODIES];
+        let speed = self.speed_at(t);
         self.structure
-            .add_structural_forces(&self.body_states, self.speed, &mut self.wrenches);
+            .add_structural_forces(&self.body_states, speed, &mut self.wrenches);
         // Dampers carry no static force: the static search leaves them out.
         let statics = self.static_stiffness > 0.0;
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
-            let n = damper.law.n_states();
+            let n = damper.n_states();
             let o = damper.state_offset;
             let mut rates = [0.0; MAX_STATES];
-            let force = damper
-                .law
-                .evaluate(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
+            let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
             dy[o..o + n].copy_from_slice(&rates[..n]);
             damper.apply(&self.body_states, force, &mut self.wrenches);
             self.damper_forces[i] = force;
@@ -143,7 +169,7 @@ impl VehicleSystem {
                 t,
                 &self.body_states,
                 &rails,
-                self.speed,
+                speed,
                 self.static_stiffness,
                 &mut self.wrenches,
                 &mut self.wheel_forces[w],
@@ -163,10 +189,22 @@ impl VehicleSystem {
         out[..N_DOF].copy_from_slice(&self.gen_force);
     }
 
-    /// Checks a state after a step: finite, bounded; errors say when and where.
+    /// Ends a step at time `t` (s) with state `y`: a non-finite or runaway state is divergence
+    /// whatever the contact reported on the way (checked first), then an error met inside the
+    /// step's evaluations (a wheel leaving its contact table) is returned.
+    pub fn finish_step(&mut self, t: f64, y: &[f64]) -> Result<()> {
+        let stage_error = self.error.take();
+        self.check_state(t, y)?;
+        stage_error.map_or(Ok(()), Err)
+    }
+
+    /// Checks a state after a step; errors say when and where. A non-finite value or a runaway
+    /// amplitude of any coordinate is numerical divergence ([`LocoError::Diverged`]); a wheelset
+    /// beyond the flanges while everything else stays bounded has derailed
+    /// ([`LocoError::Derailed`]).
     pub fn check_state(&self, t: f64, y: &[f64]) -> Result<()> {
         if let Some(i) = y.iter().position(|v| !v.is_finite()) {
-            let names = super::layout::dof_names();
+            let names = dof_names();
             let location = if i < N_DOF {
                 names[i].clone()
             } else if i < 2 * N_DOF {
@@ -180,9 +218,32 @@ impl VehicleSystem {
                 reason: "state is not finite".into(),
             });
         }
+        let carbody_x = y[CARBODY + X];
+        for (i, &q) in y[..N_DOF].iter().enumerate() {
+            let (q, limit, unit) = match coordinate_kind(i) {
+                CoordinateKind::Translation => (q, RUNAWAY_DISPLACEMENT, "m"),
+                CoordinateKind::Longitudinal => (q - carbody_x, RUNAWAY_DISPLACEMENT, "m"),
+                CoordinateKind::Rotation => (q, RUNAWAY_ROTATION, "rad"),
+                CoordinateKind::Spin => continue,
+            };
+            if q.abs() > limit {
+                let relative = if coordinate_kind(i) == CoordinateKind::Longitudinal {
+                    " relative to the carbody"
+                } else {
+                    ""
+                };
+                return Err(LocoError::Diverged {
+                    time: t,
+                    location: dof_names()[i].clone(),
+                    reason: format!(
+                        "runaway amplitude {q:.4e} {unit}{relative} (bound ±{limit} {unit})"
+                    ),
+                });
+            }
+        }
         for w in 0..N_WHEELSETS {
-            let lateral = self.body_states.position[body_wheelset(w)][1];
-            if lateral.abs() > 0.05 {
+            let lateral = y[wheelset(w) + Y];
+            if lateral.abs() > DERAILED_LATERAL {
                 return Err(LocoError::Derailed {
                     time: t,
                     location: format!("wheelset{}", w + 1),
@@ -216,7 +277,7 @@ impl OdeSystem for VehicleSystem {
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
             let o = damper.state_offset;
-            let n = damper.law.n_states();
+            let n = damper.n_states();
             damper
                 .law
                 .advance(&mut self.discrete[i], t, dt, x, v, &y[o..o + n]);

@@ -56,6 +56,9 @@ pub struct WheelForces {
 }
 
 /// How the tangential creep forces are computed.
+// One solver per run, held by value: its size does not matter, a box would add an indirection to
+// every creep-force call.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum CreepSolver {
     /// FASTSIM at every evaluation (the study's method, exact for its grid).

@@ -1,0 +1,149 @@
+//! The default integration settings across the SPEC §6 parameter box: every corner runs, and
+//! halving the step changes the study's metrics by less than 1 % (issue 5, "Integration").
+
+use loco_core::vehicle::damper_elements::SeriesForm;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate, start_distance, Scenario,
+};
+use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::suspension::DamperRole;
+use rayon::prelude::*;
+use std::sync::Arc;
+
+/// 200 km/h, m/s.
+const SPEED: f64 = 200.0 / 3.6;
+/// 310 m at 200 km/h is 5.6 s: one 5 s Sperling segment after the first samples.
+const DISTANCE: f64 = 310.0;
+
+fn vehicle(overrides: &[(&str, f64)]) -> ParameterSet {
+    let mut p = ParameterSet::default_vehicle();
+    for (name, value) in overrides {
+        p.set(name, *value).unwrap();
+    }
+    p
+}
+
+fn scenario(name: &str, step: f64) -> Scenario {
+    let mut s = Scenario::study(name, SPEED, DISTANCE, 1).unwrap();
+    s.run.step = step;
+    s
+}
+
+/// The form in which the vehicle integrates its secondary lateral dampers at step `dt` (s).
+fn lateral_damper_form(parameters: ParameterSet, dt: f64) -> SeriesForm {
+    let s = scenario("S_low", dt);
+    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
+    let wr = Arc::new(build_wheel_rail(&structure.parameters, &s).unwrap());
+    let track = Arc::new(build_track(&s, &structure).unwrap());
+    let start = start_distance(&structure);
+    let system = VehicleSystem::new(structure, wr, track, SPEED, start, None, dt).unwrap();
+    let forms: Vec<SeriesForm> = system
+        .dampers
+        .iter()
+        .filter(|d| d.placement.role == DamperRole::SecondaryLateral)
+        .map(|d| d.form)
+        .collect();
+    assert!(!forms.is_empty() && forms.iter().all(|f| *f == forms[0]));
+    forms[0]
+}
+
+#[test]
+fn every_damper_corner_of_the_study_box_runs_at_the_default_step() {
+    // Corners of C_sy × K_ncsy (10–60 kN·s/m × 10–50 kN/mm) paired with those of C_sx × K_ncsx
+    // (200–1200 kN·s/m × 10–50 kN/mm): four vehicles cover all four corners of both.
+    let corners: Vec<[(&str, f64); 4]> = [(10e3, 10e6), (10e3, 50e6), (60e3, 10e6), (60e3, 50e6)]
+        .iter()
+        .zip([(200e3, 10e6), (200e3, 50e6), (1200e3, 10e6), (1200e3, 50e6)])
+        .map(|(&(c_sy, k_sy), (c_sx, k_sx))| {
+            [
+                ("C_sy", c_sy),
+                ("K_ncsy", k_sy),
+                ("C_sx", c_sx),
+                ("K_ncsx", k_sx),
+            ]
+        })
+        .collect();
+    // The stiff-spring corner needs the rigid form at 1 ms (k/c = 5e3 1/s) and not at 0.5 ms.
+    let stiff = vehicle(&corners[1]);
+    assert_eq!(lateral_damper_form(stiff.clone(), 1e-3), SeriesForm::Rigid);
+    assert_eq!(lateral_damper_form(stiff, 5e-4), SeriesForm::Compliant);
+    let cases: Vec<(usize, &str)> = (0..corners.len())
+        .flat_map(|i| [(i, "S_low"), (i, "S_high")])
+        .collect();
+    let failures: Vec<String> = cases
+        .par_iter()
+        .filter_map(|&(i, name)| {
+            let result = simulate(vehicle(&corners[i]), &scenario(name, 1e-3));
+            match result {
+                Ok(r) if r.metrics.wy_max.is_finite() && r.metrics.ayb_peak_lp.is_finite() => None,
+                Ok(_) => Some(format!("{:?} {name}: metrics undefined", corners[i])),
+                Err(e) => Some(format!("{:?} {name}: {e}", corners[i])),
+            }
+        })
+        .collect();
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn halving_the_step_changes_wy_and_ayb_by_less_than_one_percent() {
+    // The nominal vehicle and two opposite corners of the six-parameter box: the softest bogie
+    // (least yaw damping, softest primary, stiff-spring lateral damper in its rigid form at 1 ms
+    // and compliant at 0.5 ms) and the stiffest one.
+    let soft = [
+        ("K_px", 10e6),
+        ("K_py", 2e6),
+        ("C_sx", 200e3),
+        ("C_sy", 10e3),
+        ("K_ncsx", 10e6),
+        ("K_ncsy", 50e6),
+    ];
+    let stiff = [
+        ("K_px", 50e6),
+        ("K_py", 10e6),
+        ("C_sx", 1200e3),
+        ("C_sy", 60e3),
+        ("K_ncsx", 50e6),
+        ("K_ncsy", 10e6),
+    ];
+    let vehicles: [(&str, &[(&str, f64)]); 3] = [
+        ("nominal", &[]),
+        ("soft corner", &soft),
+        ("stiff corner", &stiff),
+    ];
+    let cases: Vec<(usize, &str)> = (0..vehicles.len())
+        .flat_map(|i| [(i, "S_low"), (i, "S_high")])
+        .collect();
+    let changes: Vec<(String, f64, f64, f64)> = cases
+        .par_iter()
+        .map(|&(i, name)| {
+            let metric = |step: f64| {
+                let m = simulate(vehicle(vehicles[i].1), &scenario(name, step))
+                    .unwrap()
+                    .metrics;
+                if name == "S_low" {
+                    m.wy_max
+                } else {
+                    m.ayb_peak_lp
+                }
+            };
+            let (full, half) = (metric(1e-3), metric(5e-4));
+            let label = format!("{} {name}", vehicles[i].0);
+            (label, full, half, (full - half).abs() / half.abs())
+        })
+        .collect();
+    for (label, full, half, change) in &changes {
+        println!(
+            "{label}: 1 ms {full:.5}, 0.5 ms {half:.5}, change {:.4} %",
+            100.0 * change
+        );
+    }
+    for (label, full, half, change) in &changes {
+        assert!(
+            *change < 0.01,
+            "{label}: {full} at 1 ms, {half} at 0.5 ms ({:.3} %)",
+            100.0 * change
+        );
+    }
+}
