@@ -8,4 +8,5 @@ COMMAND_MODULES: list[str] = [
     "contact_report",
     "info",
     "damper_bench",
+    "reproduce",
 ]

@@ -10,17 +10,30 @@
 - :mod:`loco.studies.report`: study records, CSV/JSON output, the Markdown report.
 - :mod:`loco.studies.stages`: resumable stages (skipped when finished with the same settings).
 
+The studies of SPEC §6, each writing its figures, tables and report record:
+
+- :mod:`loco.studies.speed_sweep`: W_y and A_yb against speed, PSDs at 200 km/h (§6.1).
+- :mod:`loco.studies.parameter_study`: objectives, Latin hypercube Monte Carlo, surrogate R²
+  (§6.2-6.3); :mod:`loco.studies.parameter_stages`: Sobol' indices and NSGA-II (§6.2, §6.4).
+- :mod:`loco.studies.fsd_comparison`: YD1, YD2 and FSD on S_low and S_high (§6.6).
+
+``loco reproduce`` (:mod:`loco.commands.reproduce`) runs them all.
+
 The submodules are imported on demand (``from loco.studies import sensitivity``): SALib, pymoo and
 scikit-learn load only when a study needs them.
 """
 
 __all__ = [
     "evaluators",
+    "fsd_comparison",
     "optimisation",
+    "parameter_stages",
+    "parameter_study",
     "parameters",
     "report",
     "sampling",
     "sensitivity",
+    "speed_sweep",
     "stages",
     "surrogate",
 ]

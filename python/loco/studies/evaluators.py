@@ -70,7 +70,7 @@ def simulator_evaluator(
         at its speed and length.
     metrics : str or sequence of str
         Names of the metric columns to return, in this order (``result.metric_names``), e.g.
-        ``"W_y"`` for S_low or ``"A_yb_peak"`` for S_high.
+        ``"wy_max"`` (Sperling W_y) for S_low or ``"ayb_peak_lp"`` (A_yb, m/s²) for S_high.
     vehicle, threads, seed, progress
         Passed unchanged to ``loco.run_batch``. With the same ``seed`` the batch is
         bit-identical for any thread count (issue 6), so a study is reproducible.
@@ -127,7 +127,8 @@ def stack_evaluators(*evaluators: tuple[Evaluator, int]) -> Evaluator:
     For instance W_y on S_low and A_yb on S_high as the two objectives of the optimisation::
 
         both = stack_evaluators(
-            (simulator_evaluator(s_low, "W_y"), 1), (simulator_evaluator(s_high, "A_yb_peak"), 1)
+            (simulator_evaluator(s_low, "wy_max"), 1),
+            (simulator_evaluator(s_high, "ayb_peak_lp"), 1),
         )
     """
     if not evaluators:

@@ -30,6 +30,10 @@ __all__ = [
 
 #: Rows of a CSV table shown inline in the report (the full table is linked).
 MAX_INLINE_ROWS = 20
+#: CSV tables longer (time histories, spectra, sample designs) or wider than this are linked,
+#: not shown.
+MAX_SHOWN_TABLE_ROWS = 40
+MAX_SHOWN_TABLE_COLUMNS = 12
 
 
 @dataclass
@@ -154,7 +158,10 @@ def _section(record: StudyRecord, root: Path) -> list[str]:
         lines.append(f"Data: [{table.name}]({rel})")
         lines.append("")
         if table.suffix == ".csv" and table.exists():
-            frame = pd.read_csv(table)
+            frame = pd.read_csv(table, comment="#")
+            if len(frame) > MAX_SHOWN_TABLE_ROWS or len(frame.columns) > MAX_SHOWN_TABLE_COLUMNS:
+                lines += [f"({len(frame)} rows × {len(frame.columns)} columns, not shown.)", ""]
+                continue
             lines.append(_markdown_table(frame.head(MAX_INLINE_ROWS)))
             if len(frame) > MAX_INLINE_ROWS:
                 lines.append(f"\n({MAX_INLINE_ROWS} of {len(frame)} rows shown.)")
@@ -175,7 +182,9 @@ def write_report(
     The header gives the loco version, Python and platform, the date, the total run time and
     ``settings`` (e.g. the command line, thread count, master seed); each record becomes a
     section with its settings, figures (embedded with links relative to the report) and tables
-    (linked, and shown inline up to :data:`MAX_INLINE_ROWS` rows for CSV).
+    (linked; a CSV of at most :data:`MAX_SHOWN_TABLE_ROWS` rows and
+    :data:`MAX_SHOWN_TABLE_COLUMNS` columns is also shown inline, up to
+    :data:`MAX_INLINE_ROWS` of them; ``#`` lines of a CSV are comments).
     """
     from loco import __version__
 

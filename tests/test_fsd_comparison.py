@@ -1,0 +1,83 @@
+"""The yaw damper comparison of SPEC §6.6 on a tiny setting: YD1, YD2 and FSD on S_low and
+S_high over 300 m at 200 km/h, the real simulator."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import loco
+from loco.studies.fsd_comparison import (
+    CASES,
+    DAMPERS,
+    FsdComparison,
+    run_fsd_comparison,
+    save_fsd_comparison,
+    valve_channels,
+)
+
+
+@pytest.fixture(scope="module")
+def comparison() -> FsdComparison:
+    return run_fsd_comparison(distance=300.0, seed=2, threads=2)
+
+
+def test_runs_and_table(comparison: FsdComparison) -> None:
+    assert comparison.dampers == ("YD1", "YD2", "FSD")
+    assert not comparison.errors
+    assert set(comparison.results) == {(s, d) for s, _, _ in CASES for d in DAMPERS}
+    table = comparison.table()
+    assert len(table) == 6
+    assert list(table["quantity"]) == ["A_yc"] * 3 + ["A_yb"] * 3
+    assert (table["dominant_hz"] > 0.2).all() and (table["psd_peak"] > 0).all()
+    assert (table["rms"] > 0).all() and (table["error"] == "").all()
+    # The table's peak is loco.metrics' estimate on the case's channel.
+    result = comparison.results[("S_high", "YD1")]
+    assert result is not None
+    dom = loco.metrics.dominant_frequency(result.channel(CASES[1][2]), result.sampling_rate)
+    row = table[(table["scenario"] == "S_high") & (table["damper"] == "YD1")].iloc[0]
+    assert row["dominant_hz"] == pytest.approx(dom.frequency)
+    assert row["psd_peak"] == pytest.approx(dom.peak)
+    # The dampers were applied: the three runs of a scenario differ.
+    for scenario, _, channel in CASES:
+        signals = [comparison.results[(scenario, d)] for d in DAMPERS]
+        a, b, c = (r.channel(channel) for r in signals if r is not None)
+        assert not np.array_equal(a, b) and not np.array_equal(b, c)
+
+
+def test_valves(comparison: FsdComparison) -> None:
+    table = comparison.table()
+    fsd = table[table["damper"] == "FSD"]["valve_closed_fraction"]
+    assert fsd.between(0.0, 1.0).all()
+    assert table[table["damper"] != "FSD"]["valve_closed_fraction"].isna().all()
+    for scenario, _, _ in CASES:
+        result = comparison.results[(scenario, "FSD")]
+        assert result is not None
+        names = valve_channels(result)
+        assert len(names) == 4  # one yaw damper per side per bogie
+        values = np.stack([result.channel(n) for n in names])
+        assert values.min() >= 0.0 and values.max() <= 1.0
+
+
+def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
+    out = tmp_path / "fsd_comparison"
+    record = save_fsd_comparison(comparison, out)
+    for path in [*record.figures, *record.tables]:
+        assert path.is_file() and path.stat().st_size > 0, path
+    names = {p.name for p in record.figures}
+    assert names == {"fsd_time_histories.png", "fsd_psd.png", "fsd_valve.png"}
+    histories = pd.read_csv(out / "fsd_time_histories.csv")
+    result = comparison.results[("S_low", "FSD")]
+    assert result is not None
+    assert len(histories) == len(result.time)
+    assert sum(c.endswith("_valve") for c in histories.columns) == 8  # 4 valves x 2 scenarios
+    assert {"S_low_YD1_A_yc", "S_high_FSD_A_yb"} <= set(histories.columns)
+    psd = pd.read_csv(out / "fsd_psd.csv")
+    assert set(zip(psd["scenario"], psd["damper"], strict=True)) == set(comparison.results)
+    settings = json.loads((out / "fsd_comparison.json").read_text())
+    assert settings["loco_version"] == loco.__version__ and settings["speed_kmh"] == 200.0
+    assert settings["dampers"]["FSD"]["kind"] == "fsd"

@@ -1,0 +1,114 @@
+"""``loco reproduce`` end to end on the hidden tiny preset (a few 300 m runs per stage, the real
+simulator): every stage's files, the report, and a rerun that skips finished stages."""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import io
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import loco
+from loco.cli import main
+from loco.commands.reproduce import TINY, reproduce
+from loco.studies.parameters import names
+from loco.studies.stages import MARKER
+
+STAGES = {
+    "speed_sweep": ["speed_sweep.png", "speed_sweep_psd.png", "speed_sweep.csv"],
+    "monte_carlo": ["monte_carlo.png", "monte_carlo.csv", "monte_carlo_summary.csv"],
+    "surrogate": ["parity_W_y.png", "parity_A_yb.png", "surrogate_r2.csv"],
+    "sensitivity": ["sobol_W_y.png", "sobol_A_yb.png", "sobol_convergence.png",
+                    "sobol_indices.csv", "sobol_summary.csv", "saltelli_samples.csv"],
+    "optimisation": ["pareto.png", "pareto_verification.png", "pareto_front.csv",
+                     "pareto_verification.csv"],
+    "damper_bench": ["damper_bench.png", "damper_bench_summary.csv"],
+    "fsd_comparison": ["fsd_time_histories.png", "fsd_psd.png", "fsd_valve.png",
+                       "fsd_summary.csv"],
+}  # fmt: skip
+ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str]:
+    """The tiny study, run once through the CLI; its output directory and printed log."""
+    out = tmp_path_factory.mktemp("reproduce")
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        assert main([*ARGS, "--out", str(out)]) == 0
+    return out, buffer.getvalue()
+
+
+def test_every_stage_written(run: tuple[Path, str]) -> None:
+    out, log = run
+    for stage, files in STAGES.items():
+        assert (out / stage / MARKER).is_file(), stage
+        for name in files:
+            path = out / stage / name
+            assert path.is_file() and path.stat().st_size > 0, path
+        assert f"[{stage}] done" in log
+    assert f"report: {(out / 'report.md').resolve()}" in log
+
+
+def test_report(run: tuple[Path, str]) -> None:
+    out, _ = run
+    text = (out / "report.md").read_text()
+    assert f"loco {loco.__version__}" in text
+    assert f"loco reproduce --tiny --out {out} --seed 0" in text
+    assert '"lhs_samples": 16' in text and "seed (track, designs, K-means, NSGA-II): `0`" in text
+    assert text.count("Run time: ") == len(STAGES)
+    links = re.findall(r"\]\(([^)]+)\)", text)
+    figures = [link for link in links if link.endswith(".png")]
+    assert len(figures) >= sum(n.endswith(".png") for f in STAGES.values() for n in f)
+    for link in links:
+        assert (out / link).is_file(), link
+    meta = json.loads((out / "reproduce.json").read_text())
+    assert meta["loco_version"] == loco.__version__ and meta["sizes"]["name"] == "tiny"
+
+
+def test_stage_contents(run: tuple[Path, str]) -> None:
+    out, _ = run
+    mc = pd.read_csv(out / "monte_carlo" / "monte_carlo.csv")
+    assert len(mc) == TINY.lhs_samples and set(names()) <= set(mc.columns)
+    assert mc[["W_y", "A_yb"]].notna().all().all()
+    r2 = pd.read_csv(out / "surrogate" / "surrogate_r2.csv")
+    assert len(r2) == 2 * TINY.kfold and (r2["r2"] <= 1.0).all()
+    indices = pd.read_csv(out / "sensitivity" / "sobol_indices.csv")
+    assert set(indices["method"]) == {"direct", "surrogate"}
+    assert len(indices) == 2 * 2 * 2 * len(names())  # method x metric x order x parameter
+    surrogate_st = indices[(indices["method"] == "surrogate") & (indices["index"] == "ST")]
+    assert surrogate_st["value"].between(0.0, 1.5).all()  # Jansen's ST estimator is >= 0
+    saltelli = pd.read_csv(out / "sensitivity" / "saltelli_samples.csv")
+    assert len(saltelli) == max(TINY.convergence_bases) * (len(names()) + 2)
+    front = pd.read_csv(out / "optimisation" / "pareto_front.csv")
+    assert 1 <= len(front) <= TINY.pop_size
+    assert np.all(np.diff(front["W_y"]) >= 0) and np.all(np.diff(front["A_yb"]) <= 0)
+    check = pd.read_csv(out / "optimisation" / "pareto_verification.csv")
+    assert 1 <= len(check) <= TINY.n_verify
+    assert np.isfinite(check[["W_y_simulated", "A_yb_simulated"]].to_numpy()).all()
+    summary = pd.read_csv(out / "fsd_comparison" / "fsd_summary.csv")
+    assert len(summary) == 6
+
+
+def test_rerun_skips_finished_stages(
+    run: tuple[Path, str], capsys: pytest.CaptureFixture[str]
+) -> None:
+    out, _ = run
+    markers = {s: (out / s / MARKER).stat().st_mtime_ns for s in STAGES}
+    assert main([*ARGS, "--out", str(out)]) == 0
+    log = capsys.readouterr().out
+    assert log.count("finished earlier") == len(STAGES) and "running" not in log
+    assert {s: (out / s / MARKER).stat().st_mtime_ns for s in STAGES} == markers
+    # A changed size reruns the stages that depend on it, and only those.
+    lines: list[str] = []
+    fewer = dataclasses.replace(TINY, n_verify=2)
+    reproduce(fewer, out, threads=2, progress=False, log=lines.append)
+    ran = [line for line in lines if line.endswith("running")]
+    assert ran == ["[optimisation] running"]
+    assert len(pd.read_csv(out / "optimisation" / "pareto_verification.csv")) <= 2
