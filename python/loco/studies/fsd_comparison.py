@@ -25,7 +25,7 @@ import pandas as pd
 import loco
 from loco import dampers
 from loco.studies.report import StudyRecord, save_json, save_table
-from loco.studies.speed_sweep import A_YB, A_YC, Spectrum, spectrum
+from loco.studies.speed_sweep import A_YB, A_YC, Spectrum, draw_spectra, spectrum
 
 __all__ = [
     "CASES",
@@ -230,24 +230,8 @@ def plot_psds(cmp: FsdComparison, path: str | Path, *, fmax: float = 20.0) -> Pa
     spectra = cmp.spectra()
     fig, axes = plt.subplots(1, len(CASES), figsize=(11, 4), layout="constrained")
     for ax, (scenario, label, channel) in zip(axes, CASES, strict=True):
-        for name in cmp.dampers:
-            sp = spectra.get((scenario, name))
-            if sp is None:
-                continue
-            shown = (sp.frequency > 0) & (sp.frequency <= fmax)
-            ax.semilogy(
-                sp.frequency[shown],
-                sp.density[shown],
-                label=f"{name}: {sp.dominant_hz:.2f} Hz, {sp.peak:.3g}",
-            )
-        ax.set(
-            xlabel="frequency (Hz)",
-            ylabel=f"PSD of {label} ((m/s²)²/Hz)",
-            xlim=(0, fmax),
-            title=f"{label} ({channel}), {scenario}",
-        )
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(title="dominant frequency, PSD peak", fontsize=8)
+        lines = {name: spectra.get((scenario, name)) for name in cmp.dampers}
+        draw_spectra(ax, lines, label, f"{label} ({channel}), {scenario}", fmax)
     out = Path(path)
     fig.savefig(out, dpi=120)
     plt.close(fig)

@@ -17,7 +17,7 @@ Quantities (names of the package's channels and metrics):
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -288,6 +288,31 @@ def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
     return out
 
 
+def draw_spectra(
+    ax: Any, lines: Mapping[str, Spectrum | None], label: str, title: str, fmax: float
+) -> None:
+    """Draw PSDs on a log axis up to ``fmax`` (Hz), one line per name with its dominant frequency
+    and PSD peak in the legend; ``label`` names the signal (e.g. A_yc). None entries are skipped
+    (failed runs)."""
+    for name, sp in lines.items():
+        if sp is None:
+            continue
+        shown = (sp.frequency > 0) & (sp.frequency <= fmax)
+        ax.semilogy(
+            sp.frequency[shown],
+            sp.density[shown],
+            label=f"{name}: {sp.dominant_hz:.2f} Hz, {sp.peak:.3g}",
+        )
+    ax.set(
+        xlabel="frequency (Hz)",
+        ylabel=f"PSD of {label} ((m/s²)²/Hz)",
+        xlim=(0, fmax),
+        title=title,
+    )
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(title="dominant frequency, PSD peak", fontsize=8)
+
+
 def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Path:
     """Save the PSDs of A_yc and A_yb at ``psd_speed_kmh`` (one line per scenario) as PNG;
     ``fmax`` is the upper frequency shown, Hz."""
@@ -298,24 +323,9 @@ def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Pat
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4), layout="constrained")
     for ax, (label, channel) in zip(axes, (A_YC, A_YB), strict=True):
-        for scenario in sweep.scenarios:
-            sp = sweep.spectra.get((scenario, label))
-            if sp is None:
-                continue
-            shown = (sp.frequency > 0) & (sp.frequency <= fmax)
-            ax.semilogy(
-                sp.frequency[shown],
-                sp.density[shown],
-                label=f"{scenario}: {sp.dominant_hz:.2f} Hz, {sp.peak:.3g}",
-            )
-        ax.set(
-            xlabel="frequency (Hz)",
-            ylabel=f"PSD of {label} ((m/s²)²/Hz)",
-            xlim=(0, fmax),
-            title=f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, YD2",
-        )
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(title="dominant frequency, PSD peak", fontsize=8)
+        lines = {sc: sweep.spectra.get((sc, label)) for sc in sweep.scenarios}
+        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, YD2"
+        draw_spectra(ax, lines, label, title, fmax)
     out = Path(path)
     fig.savefig(out, dpi=120)
     plt.close(fig)

@@ -33,13 +33,11 @@
 use super::integrator::Rk4Workspace;
 use super::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
 use super::parameters::ParameterSet;
-use super::scenario::{build_track, build_wheel_rail, start_distance, Scenario, TrackSpec};
+use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
-use super::structure::VehicleStructure;
 use crate::error::{check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 
 /// Relative change between successive windows below which the hunting has settled (–).
 const SETTLED: f64 = 0.05;
@@ -168,20 +166,8 @@ pub fn nonlinear_critical_speed(
         distance: start_speed * longest,
         ..scenario.clone()
     };
-    let structure = Arc::new(VehicleStructure::new(parameters)?);
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &perfect)?);
-    let track = Arc::new(build_track(&perfect, &structure)?);
-    let start = start_distance(&structure);
     let dt = scenario.run.step;
-    let mut system = VehicleSystem::new(
-        structure,
-        wheel_rail,
-        track,
-        start_speed,
-        start,
-        scenario.yaw_damper.as_ref(),
-        dt,
-    )?;
+    let mut system = PerfectTrackVehicle::new(parameters, &perfect)?.system(start_speed)?;
     system.deceleration = settings.deceleration;
     // The ramp starts when the hunting has settled (set below); until then V stays V0.
     system.ramp_start = f64::INFINITY;

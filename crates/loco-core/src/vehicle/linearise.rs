@@ -9,12 +9,10 @@
 use super::eigenvalues::eigenvalues;
 use super::integrator::OdeSystem;
 use super::parameters::ParameterSet;
-use super::scenario::{build_track, build_wheel_rail, start_distance, Scenario, TrackSpec};
+use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
-use super::structure::VehicleStructure;
 use crate::error::{check_positive, LocoError, Result};
-use std::sync::Arc;
 
 /// Relative perturbation of each state for the central differences (scaled by the state's size
 /// with a floor: 1e-7 m, rad, m/s, rad/s), small against the 0.1 mm contact table grid.
@@ -111,23 +109,9 @@ pub fn linear_critical_speed(
             format!("must exceed low ({low} m/s), got {high} m/s"),
         ));
     }
-    let structure = Arc::new(VehicleStructure::new(parameters)?);
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
-    let perfect = Scenario {
-        track: TrackSpec::Perfect,
-        ..scenario.clone()
-    };
-    let track = Arc::new(build_track(&perfect, &structure)?);
+    let vehicle = PerfectTrackVehicle::new(parameters, scenario)?;
     let zeta = |speed: f64| -> Result<f64> {
-        let mut system = VehicleSystem::new(
-            structure.clone(),
-            wheel_rail.clone(),
-            track.clone(),
-            speed,
-            start_distance(&structure),
-            scenario.yaw_damper.as_ref(),
-            scenario.run.step,
-        )?;
+        let mut system = vehicle.system(speed)?;
         let (a, _) = linearise(&mut system)?;
         let mode = least_damped(&a, system.len_states(), search.band)?;
         mode.map(|m| m.damping_ratio)

@@ -300,27 +300,54 @@ pub fn simulate_prepared(
     Ok(SimulationResult { output, metrics })
 }
 
+/// A vehicle with its scenario's contact on perfect track, built once for analyses that need
+/// the system at several speeds (linearisation, critical speeds).
+pub struct PerfectTrackVehicle {
+    structure: Arc<VehicleStructure>,
+    wheel_rail: Arc<WheelRail>,
+    track: Arc<TrackIrregularity>,
+    yaw_damper: Option<Damper>,
+    step: f64,
+}
+
+impl PerfectTrackVehicle {
+    /// Builds the vehicle, the scenario's contact and a perfect track of the scenario's length.
+    pub fn new(parameters: ParameterSet, scenario: &Scenario) -> Result<Self> {
+        scenario.validate()?;
+        let structure = Arc::new(VehicleStructure::new(parameters)?);
+        let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+        let perfect = Scenario {
+            track: TrackSpec::Perfect,
+            ..scenario.clone()
+        };
+        let track = Arc::new(build_track(&perfect, &structure)?);
+        Ok(Self {
+            structure,
+            wheel_rail,
+            track,
+            yaw_damper: scenario.yaw_damper,
+            step: scenario.run.step,
+        })
+    }
+
+    /// The system running at `speed` (m/s), not yet in equilibrium.
+    pub fn system(&self, speed: f64) -> Result<VehicleSystem> {
+        VehicleSystem::new(
+            self.structure.clone(),
+            self.wheel_rail.clone(),
+            self.track.clone(),
+            speed,
+            start_distance(&self.structure),
+            self.yaw_damper.as_ref(),
+            self.step,
+        )
+    }
+}
+
 /// The state matrix of the vehicle linearised about its static equilibrium at the scenario's
 /// speed on perfect track (row-major n×n), with n (coordinates, velocities, damper states).
 pub fn linearised(parameters: ParameterSet, scenario: &Scenario) -> Result<(Vec<f64>, usize)> {
-    scenario.validate()?;
-    let structure = Arc::new(VehicleStructure::new(parameters)?);
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
-    let perfect = Scenario {
-        track: TrackSpec::Perfect,
-        ..scenario.clone()
-    };
-    let track = Arc::new(build_track(&perfect, &structure)?);
-    let start = start_distance(&structure);
-    let mut system = VehicleSystem::new(
-        structure,
-        wheel_rail,
-        track,
-        scenario.speed,
-        start,
-        scenario.yaw_damper.as_ref(),
-        scenario.run.step,
-    )?;
+    let mut system = PerfectTrackVehicle::new(parameters, scenario)?.system(scenario.speed)?;
     let (a, _) = super::linearise::linearise(&mut system)?;
     let n = system.len_states();
     Ok((a, n))

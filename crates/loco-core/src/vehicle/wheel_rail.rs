@@ -200,7 +200,9 @@ impl WheelRail {
                 let approach = interference * cg;
                 let approach_rate = (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
                 let hertz = self.hertz.coefficients(
-                    0.5 / point.rolling_radius,
+                    // Rolling-direction curvature of the wheel at a point whose normal is tilted
+                    // by the contact angle from the radius (Meusnier): cos γ / r.
+                    0.5 * cg / point.rolling_radius,
                     // A conformal point (flange root on the gauge corner) has a lateral relative
                     // curvature near zero; a floor of 1/(20 m) keeps the ellipse finite there.
                     (0.5 * (point.wheel_curvature + point.rail_curvature)).max(0.025),
