@@ -100,3 +100,24 @@ def test_binary_reports_malformed_samples_with_file_and_line(tmp_path: Path) -> 
         check=False,
     )
     assert done.returncode != 0 and "study.toml" in done.stderr
+
+
+def test_binary_rejects_an_unknown_channel_before_running(tmp_path: Path) -> None:
+    study, samples = _write_inputs(tmp_path)
+    study.write_text(STUDY.replace("yaw_damper_bogie1_left_valve", "yaw_damper_bogie1_left_valv"))
+    # Many samples: were the channels checked only when the histories are written, the batch
+    # would run them all and write the metrics file first.
+    rows = ["K_px,K_py"] + ["1.5e7,3.5e6"] * 400
+    samples.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    out = tmp_path / "metrics.csv"
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(out), "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode != 0
+    assert "output.channels" in done.stderr and "yaw_damper_bogie1_left_valv'" in done.stderr
+    # The message lists what is available, including the new vertical damper forces.
+    assert "primary_vertical_damper_wheelset1_left_force" in done.stderr
+    assert not out.exists()

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import loco
+import loco.conicity
 
 
 def test_hunting_mode_loses_damping_with_speed_and_weak_yaw_dampers() -> None:
@@ -73,3 +74,22 @@ def test_ramp_down_reports_its_record_and_checks_its_inputs() -> None:
         loco.stability.ramp_down(vehicle, slow, end_speed=40.0)
     with pytest.raises(loco.ParameterError, match="method"):
         loco.critical_speed(vehicle, slow, method="quadratic")
+
+
+def test_linear_critical_speed_falls_as_the_conicity_rises() -> None:
+    vehicle = loco.Locomotive.default()
+    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    speeds = [
+        loco.critical_speed(vehicle, scenario, conicity=c, tolerance=1.0, high=400 / 3.6)
+        for c in (0.05, 0.2, 0.4)
+    ]
+    assert all(math.isfinite(v) for v in speeds), speeds
+    # Each step beyond the bisection tolerance (1 m/s).
+    assert speeds[0] - speeds[1] > 2.0 and speeds[1] - speeds[2] > 2.0, speeds
+    # The pair stands for its conicity: EN 15302 on the generated profiles gives it back.
+    wheel, rail = loco._loco.conical_profiles(0.2)
+    assert loco.conicity.equivalent_conicity(wheel, rail) == pytest.approx(0.2, rel=0.02)
+    with pytest.raises(loco.ParameterError, match="conicity"):
+        loco.eigen(vehicle, scenario, conicity=-0.1)
+    with pytest.raises(loco.ParameterError, match="conicity"):
+        loco.critical_speed(vehicle, scenario, method="nonlinear", conicity=0.2)

@@ -45,6 +45,7 @@ __all__ += [
     "Profile",
     "builtin_profile_named",
     "builtin_profile_names",
+    "conical_profiles",
     "contact_geometry",
     "load_profile_file",
     "rolling_radius_difference",
@@ -71,6 +72,7 @@ def load_profile_file(
 ) -> Profile: ...
 def builtin_profile_named(name: str) -> Profile: ...
 def builtin_profile_names() -> list[str]: ...
+def conical_profiles(conicity: float) -> tuple[Profile, Profile]: ...
 def contact_geometry(
     left_wheel: Profile,
     right_wheel: Profile,
@@ -407,6 +409,7 @@ class RunScenario:
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
+    "body_mass_maps",
     "body_names",
     "default_vehicle_toml",
     "dof_names",
@@ -432,6 +435,11 @@ def vehicle_total_mass(
 def study_parameters() -> list[tuple[str, str]]: ...
 def dof_names() -> list[str]: ...
 def body_names() -> list[str]: ...
+def body_mass_maps(
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+) -> tuple[list[str], NDArray[np.float64], NDArray[np.float64]]: ...
 def simulate(
     scenario: RunScenario,
     *,

@@ -9,35 +9,20 @@ lateral disturbance (`loco._loco.ramp_down`): the speed at which the hunting lim
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
+from loco.modes import Mode, body_masses, energy_shares
 from loco.simulation import Scenario
-from loco.vehicle import Locomotive, dof_names
+from loco.vehicle import Locomotive
 
-__all__ = ["Eigen", "Mode", "RampDown", "critical_speed", "eigen", "ramp_down"]
+__all__ = ["Eigen", "Mode", "RampDown", "critical_speed", "eigen", "ramp_down", "with_conicity"]
 
 FloatArray = npt.NDArray[np.float64]
-N_DOF = 90
-
-
-@dataclass(frozen=True)
-class Mode:
-    """One oscillatory mode: frequency (Hz), damping ratio (–) and the bodies that move."""
-
-    frequency: float
-    damping_ratio: float
-    eigenvalue: complex
-    bodies: dict[str, float]
-
-    def describe(self, top: int = 3) -> str:
-        """``"1.23 Hz, ζ = 4.5 %: carbody 62 %, frame1 20 %, ..."``."""
-        parts = sorted(self.bodies.items(), key=lambda kv: -kv[1])[:top]
-        share = ", ".join(f"{b} {100 * v:.0f} %" for b, v in parts)
-        return f"{self.frequency:.3f} Hz, ζ = {100 * self.damping_ratio:.2f} %: {share}"
 
 
 @dataclass(frozen=True)
@@ -55,39 +40,45 @@ class Eigen:
         return band[0]
 
 
-def _body_shares(vector: npt.NDArray[np.complex128], names: list[str]) -> dict[str, float]:
-    """Share of each body in the mode's displacements (by |amplitude|², translations in m and
-    rotations in rad weighted alike)."""
-    weights = np.abs(vector[:N_DOF]) ** 2
-    total = float(weights.sum()) or 1.0
-    shares: dict[str, float] = {}
-    for name, w in zip(names, weights, strict=True):
-        body = name.split(".")[0]
-        shares[body] = shares.get(body, 0.0) + float(w) / total
-    return shares
+def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:
+    """``scenario`` with its wheel and rail replaced by a conical wheel of equivalent conicity
+    ``conicity`` (–) on a knife-edge rail (Δr = 2·conicity·y exactly, no flange); unchanged when
+    ``conicity`` is None."""
+    if conicity is None:
+        return scenario
+    wheel, rail = _loco.conical_profiles(float(conicity))
+    return dataclasses.replace(scenario, scenario=None, wheel=wheel, rail=rail)
 
 
-def eigen(vehicle: Locomotive, scenario: Scenario) -> Eigen:
+def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = None) -> Eigen:
     """Eigenvalues of the vehicle linearised about equilibrium at ``scenario.speed`` (m/s) with
-    the scenario's wheel/rail pair (and so its equivalent conicity) and yaw damper."""
+    the scenario's wheel/rail pair (and so its equivalent conicity) and yaw damper.
+
+    ``conicity`` (–, in (0, 1]) replaces the scenario's wheel and rail by a conical wheel of that
+    equivalent conicity on a knife-edge rail: eigenvalues at a given speed and conicity, the
+    classical stability map. Each mode says which bodies move by their shares of its kinetic
+    energy (:mod:`loco.modes`)."""
+    scenario = with_conicity(scenario, conicity)
     a = _loco.linearise(
         scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
     )
+    bodies = body_masses(vehicle.toml_text, vehicle.origin, dict(vehicle.overrides))
     values, vectors = np.linalg.eig(a)
-    names = dof_names()
     modes = []
     for k, lam in enumerate(values):
         if lam.imag <= 1e-6:  # one of each conjugate pair; real (overdamped) roots skipped
             continue
+        shares, motions = energy_shares(vectors[:, k], bodies)
         modes.append(
             Mode(
                 frequency=float(abs(lam.imag) / (2 * np.pi)),
                 damping_ratio=float(-lam.real / abs(lam)),
                 eigenvalue=complex(lam),
-                bodies=_body_shares(vectors[:, k], names),
+                bodies=shares,
+                motions=motions,
             )
         )
     modes.sort(key=lambda m: m.damping_ratio)
@@ -162,6 +153,7 @@ def critical_speed(
     method: str = "linear",
     deceleration: float = 0.5,
     disturbance: float = 8e-3,
+    conicity: float | None = None,
 ) -> float:
     """Critical speed (m/s) of the vehicle in the scenario's wheel/rail pair and yaw damper.
 
@@ -173,8 +165,17 @@ def critical_speed(
     (:func:`ramp_down`) from ``scenario.speed`` to ``low`` at ``deceleration`` (m/s²) after a
     ``disturbance`` (m). Returns ``inf`` when the vehicle does not hunt at ``scenario.speed`` and
     ``low`` when it still hunts there. On worn wheels (subcritical hunting) it lies at or below
-    the linear critical speed."""
+    the linear critical speed.
+
+    ``conicity`` (–) replaces the scenario's wheel and rail by a conical wheel of that equivalent
+    conicity on a knife-edge rail (see :func:`eigen`); it has no flange, so it is refused with
+    ``method="nonlinear"``, whose large disturbance reaches the flanges."""
     if method == "nonlinear":
+        if conicity is not None:
+            raise _loco.ParameterError(
+                "invalid parameter `conicity`: only with method='linear' (the conical wheel "
+                "has no flange to bound a limit cycle)"
+            )
         return ramp_down(
             vehicle,
             scenario,
@@ -187,8 +188,10 @@ def critical_speed(
             f"invalid parameter `method`: expected 'linear' or 'nonlinear', got '{method}'"
         )
 
+    scenario = with_conicity(scenario, conicity)
+
     def zeta(speed: float) -> float:
-        s = Scenario(**{**scenario.__dict__, "speed": speed})
+        s = dataclasses.replace(scenario, speed=speed)
         return eigen(vehicle, s).least_damped(*band).damping_ratio
 
     if zeta(high) > 0.0:

@@ -101,21 +101,27 @@ pub fn write_metrics(path: &Path, samples: &Samples, output: &BatchOutput) -> Re
     write(path, &text)
 }
 
+/// Positions in `available` of the `wanted` channels; an unknown name is an error on
+/// `output.channels` that lists the available ones.
+pub fn select_channels(wanted: &[String], available: &[String]) -> Result<Vec<usize>> {
+    wanted
+        .iter()
+        .map(|w| {
+            available.iter().position(|n| n == w).ok_or_else(|| {
+                LocoError::param(
+                    "output.channels",
+                    format!("no channel '{w}'; available: {}", available.join(", ")),
+                )
+            })
+        })
+        .collect()
+}
+
 /// Writes the time histories of one sample: `time` then the channels (all, or those named).
 pub fn write_history(path: &Path, run: &RunOutput, channels: Option<&[String]>) -> Result<()> {
     let selected: Vec<usize> = match channels {
         None => (0..run.names.len()).collect(),
-        Some(wanted) => wanted
-            .iter()
-            .map(|w| {
-                run.names.iter().position(|n| n == w).ok_or_else(|| {
-                    LocoError::param(
-                        "output.channels",
-                        format!("no channel '{w}'; available: {}", run.names.join(", ")),
-                    )
-                })
-            })
-            .collect::<Result<_>>()?,
+        Some(wanted) => select_channels(wanted, &run.names)?,
     };
     let mut text = String::from("time");
     for &c in &selected {

@@ -7,7 +7,8 @@
 //! The study file (see `study.rs`) gives the vehicle, the scenario and the outputs; the samples
 //! CSV has a header of parameter names (vehicle keys, K_px … K_ncsy, or `speed`) and one row of
 //! SI values per sample. The metrics CSV has one row per sample with its status; time histories
-//! of the samples listed in the study go to `<metrics stem>_history_<i>.csv`. The numbers are the
+//! of the samples listed in the study go to `<metrics stem>_history_<i>.csv`; their channel
+//! names are checked before the batch starts, so a typo fails at once with the list of channels. The numbers are the
 //! same, bit for bit, as `loco.run_batch` on the same input.
 
 mod csv_io;
@@ -16,6 +17,8 @@ mod study;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use loco_core::batch::{run_batch, BatchMonitor, BatchSpec};
+use loco_core::vehicle::run::channel_names;
+use loco_core::vehicle::scenario::PerfectTrackVehicle;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::Ordering;
@@ -58,6 +61,14 @@ fn main() -> ExitCode {
 fn run(cli: &Cli) -> loco_core::Result<()> {
     let study = study::load_study(&cli.study)?;
     let samples = csv_io::read_samples(&cli.samples)?;
+    if let Some(wanted) = &study.channels {
+        // Check the history channels before the batch: a typo must fail now, not after hours of
+        // simulation. The names depend only on the vehicle's layout, so the base vehicle on
+        // perfect track (built, not run) lists them.
+        let system = PerfectTrackVehicle::new(study.base.clone(), &study.scenario)?
+            .system(study.scenario.speed)?;
+        csv_io::select_channels(wanted, &channel_names(&system)?)?;
+    }
     let n = samples.values.len() / samples.names.len();
     let spec = BatchSpec {
         base: study.base,

@@ -157,6 +157,15 @@ fn builtin_profile_names() -> Vec<String> {
     builtin_names().iter().map(|s| s.to_string()).collect()
 }
 
+/// A conical wheel and a knife-edge rail whose equivalent conicity is `conicity` (–, in (0, 1]):
+/// Δr = 2·conicity·y exactly; no flange (for linear analyses).
+#[pyfunction]
+fn conical_profiles(conicity: f64) -> PyResult<(PyProfile, PyProfile)> {
+    let (wheel, rail) = loco_core::contact::builtin::conical::conical_pair(conicity)
+        .map_err(crate::errors::to_py_err)?;
+    Ok((PyProfile { inner: wheel }, PyProfile { inner: rail }))
+}
+
 /// Set-up of a wheelset on a track, copied from Python keyword arguments.
 #[derive(Clone)]
 struct Setup {
@@ -350,6 +359,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_profile_file, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_profile_named, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;
+    m.add_function(wrap_pyfunction!(conical_profiles, m)?)?;
     m.add_function(wrap_pyfunction!(contact_geometry, m)?)?;
     m.add_function(wrap_pyfunction!(py_rolling_radius_difference, m)?)?;
     Ok(())

@@ -1,16 +1,18 @@
 //! Bindings of `loco_core::vehicle`: the parameter file, names of bodies and coordinates, runs,
-//! the linearisation and the nonlinear critical speed.
+//! the bodies' motion maps and masses, the linearisation and the nonlinear critical speed.
 
 use crate::errors::{run_detached, run_detached_monitored};
 use crate::scenario::PyRunScenario;
 use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
+use loco_core::vehicle::layout::N_DOF;
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
 use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::scenario::{linearised, simulate as core_simulate};
 use loco_core::vehicle::structure::VehicleStructure;
-use numpy::{IntoPyArray, PyArray1, PyArray2};
+use numpy::ndarray::{Array2, Array3};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::AtomicBool;
@@ -90,6 +92,52 @@ fn dof_names() -> Vec<String> {
 #[pyfunction]
 fn body_names() -> Vec<String> {
     core_body_names()
+}
+
+/// What `body_mass_maps` returns: body names, motion maps (n_bodies × 6 × 90) and mass
+/// diagonals (n_bodies × 6).
+type BodyMapsTuple<'py> = (
+    Vec<String>,
+    Bound<'py, PyArray3<f64>>,
+    Bound<'py, PyArray2<f64>>,
+);
+
+/// Each body's absolute motion as a map of the 90 coordinates, `u = T q` with u = (x, y, z in m,
+/// roll, pitch, yaw in rad) of its centre of gravity, and its mass diagonal (m, m, m in kg,
+/// Ixx, Iyy, Izz in kg·m², principal axes along the vehicle's). The model's mass matrix is
+/// `Σ Tᵀ diag(mass) T`; `loco.eigen` weighs modes with it (kinetic energy of each body).
+#[pyfunction]
+#[pyo3(signature = (toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()))]
+fn body_mass_maps<'py>(
+    py: Python<'py>,
+    toml_text: Option<String>,
+    origin: String,
+    overrides: BTreeMap<String, f64>,
+) -> PyResult<BodyMapsTuple<'py>> {
+    let structure = run_detached(py, move || {
+        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
+        VehicleStructure::new(set)
+    })?;
+    let n = structure.bodies.len();
+    let mut maps = Array3::<f64>::zeros((n, 6, N_DOF));
+    let mut masses = Array2::<f64>::zeros((n, 6));
+    let mut names = Vec::with_capacity(n);
+    for (b, body) in structure.bodies.iter().enumerate() {
+        names.push(body.name.clone());
+        for (k, row) in body.map.rows.iter().enumerate() {
+            for &(j, c) in row {
+                maps[[b, k, j]] = c;
+            }
+        }
+        let [ixx, iyy, izz] = body.inertia;
+        for (k, m) in [body.mass, body.mass, body.mass, ixx, iyy, izz]
+            .into_iter()
+            .enumerate()
+        {
+            masses[[b, k]] = m;
+        }
+    }
+    Ok((names, maps.into_pyarray(py), masses.into_pyarray(py)))
 }
 
 /// What `simulate` returns: time (s), channel names, channels (n_channels × n_samples, SI),
@@ -246,6 +294,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(dof_names, m)?)?;
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
+    m.add_function(wrap_pyfunction!(body_mass_maps, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(linearise, m)?)?;
     m.add_function(wrap_pyfunction!(ramp_down, m)?)?;

@@ -1,9 +1,11 @@
-//! Registry of built-in profiles: the CN60 rail and the JM3-type wheel states of the study.
+//! Registry of built-in profiles: the CN60 rail and the JM3-type wheel states of the study, and
+//! ([`conical`]) a conical wheel on a knife-edge rail of any equivalent conicity.
 //!
 //! The geometry and its sources are documented next to each profile ([`cn60`], [`jm3`]); the
 //! equivalent conicities the wheel states give on CN60 are asserted by this module's tests.
 
 pub mod cn60;
+pub mod conical;
 pub mod jm3;
 
 use super::profile::Profile;

@@ -3,8 +3,9 @@
 //! Channels (SI): carbody floor lateral and vertical acceleration at the two Sperling points (floor
 //! above each bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
 //! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
-//! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the forces of the yaw and secondary
-//! lateral dampers and the frequency-valve scale factor of each yaw damper (0 open, 1 closed).
+//! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the force of every damper (N) and the
+//! frequency-valve scale factor of each yaw damper (0 open, 1 closed). [`channel_names`] lists
+//! them in the order [`run`] records them.
 
 use super::integrator::{OdeSystem, Rk4Workspace};
 use super::kinematics::point_motion;
@@ -62,8 +63,14 @@ impl RunOutput {
 struct Probes {
     /// (name, body, point from the body's centre of gravity, m, component 0..3).
     acceleration: Vec<(String, usize, [f64; 3], usize)>,
+    /// Dampers whose force is recorded: yaw, secondary lateral, primary vertical, secondary
+    /// vertical (the first two kept first so that older channel positions do not move).
+    force_dampers: Vec<usize>,
+    /// Yaw dampers, whose frequency-valve scale factor is recorded.
     yaw_dampers: Vec<usize>,
-    lateral_dampers: Vec<usize>,
+    /// Primary and secondary vertical dampers, whose force is recorded after the valve channels
+    /// (added later, so appended to keep the positions of the older channels).
+    vertical_dampers: Vec<usize>,
 }
 
 fn probes(system: &VehicleSystem) -> Result<Probes> {
@@ -96,7 +103,7 @@ fn probes(system: &VehicleSystem) -> Result<Probes> {
             ));
         }
     }
-    let by_role = |role| {
+    let by_role = |role: DamperRole| {
         system
             .dampers
             .iter()
@@ -105,11 +112,47 @@ fn probes(system: &VehicleSystem) -> Result<Probes> {
             .map(|(i, _)| i)
             .collect::<Vec<_>>()
     };
+    let roles = |roles: [DamperRole; 2]| roles.into_iter().flat_map(by_role).collect();
     Ok(Probes {
         acceleration,
+        force_dampers: roles([DamperRole::Yaw, DamperRole::SecondaryLateral]),
         yaw_dampers: by_role(DamperRole::Yaw),
-        lateral_dampers: by_role(DamperRole::SecondaryLateral),
+        vertical_dampers: roles([DamperRole::PrimaryVertical, DamperRole::SecondaryVertical]),
     })
+}
+
+/// Names of the channels [`run`] records for `system`, in order (accelerations m/s², wheelset
+/// displacement m and yaw rad, wheel forces N, Y/Q –, damper forces N, valve scale factors –).
+/// The one source of the names: the batch binary checks a study's channels against it before
+/// running anything.
+pub fn channel_names(system: &VehicleSystem) -> Result<Vec<String>> {
+    Ok(names_of(system, &probes(system)?))
+}
+
+fn names_of(system: &VehicleSystem, probes: &Probes) -> Vec<String> {
+    let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
+    for w in 0..N_WHEELSETS {
+        names.push(format!("wheelset{}_y", w + 1));
+        names.push(format!("wheelset{}_yaw", w + 1));
+    }
+    for w in 0..N_WHEELSETS {
+        for side in ["left", "right"] {
+            for q in ["Q", "Y", "YQ"] {
+                names.push(format!("wheel{}_{side}_{q}", w + 1));
+            }
+        }
+    }
+    let damper = |i: usize| &system.dampers[i].placement.name;
+    for &i in &probes.force_dampers {
+        names.push(format!("{}_force", damper(i)));
+    }
+    for &i in &probes.yaw_dampers {
+        names.push(format!("{}_valve", damper(i)));
+    }
+    for &i in &probes.vertical_dampers {
+        names.push(format!("{}_force", damper(i)));
+    }
+    names
 }
 
 /// Integrates `system` from the initial state `y` for `settings.duration` and records the
@@ -130,24 +173,7 @@ pub fn run(
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let probes = probes(system)?;
 
-    let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
-    for w in 0..N_WHEELSETS {
-        names.push(format!("wheelset{}_y", w + 1));
-        names.push(format!("wheelset{}_yaw", w + 1));
-    }
-    for w in 0..N_WHEELSETS {
-        for side in ["left", "right"] {
-            for q in ["Q", "Y", "YQ"] {
-                names.push(format!("wheel{}_{side}_{q}", w + 1));
-            }
-        }
-    }
-    for &i in probes.yaw_dampers.iter().chain(&probes.lateral_dampers) {
-        names.push(format!("{}_force", system.dampers[i].placement.name));
-    }
-    for &i in &probes.yaw_dampers {
-        names.push(format!("{}_valve", system.dampers[i].placement.name));
-    }
+    let names = names_of(system, &probes);
     let mut channels: Vec<Vec<f64>> = vec![Vec::with_capacity(n_samples); names.len()];
     let mut time = Vec::with_capacity(n_samples);
 
@@ -224,10 +250,13 @@ fn record(
             });
         }
     }
-    for &i in probes.yaw_dampers.iter().chain(&probes.lateral_dampers) {
+    for &i in &probes.force_dampers {
         push(system.damper_forces[i]);
     }
     for &i in &probes.yaw_dampers {
         push(system.discrete[i].scale_factor);
+    }
+    for &i in &probes.vertical_dampers {
+        push(system.damper_forces[i]);
     }
 }
