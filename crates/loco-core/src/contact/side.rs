@@ -167,11 +167,7 @@ impl Side {
     /// Global minimum of h over the wheel for the pose, refined.
     pub(super) fn minimum(&self, u_ws: f64, phi: f64, gap: &mut Vec<f64>) -> Result<SideMin> {
         self.sample(u_ws, phi, gap);
-        let (k, _) = gap
-            .iter()
-            .enumerate()
-            .min_by(|a, b| a.1.total_cmp(b.1))
-            .ok_or_else(|| LocoError::Contact("empty wheel profile".into()))?;
+        let k = lowest(gap)?;
         // Trial poses of the roll iteration may put the minimum at a profile end; only the
         // solved pose is checked (in `contacts`).
         if !gap[k].is_finite() {
@@ -189,11 +185,7 @@ impl Side {
     /// profile (flange climbing past the rail) or the wheel does not overlap its rail.
     pub(super) fn touching_radius(&self, u_ws: f64, phi: f64, gap: &mut Vec<f64>) -> Result<f64> {
         self.sample(u_ws, phi, gap);
-        let (k, _) = gap
-            .iter()
-            .enumerate()
-            .min_by(|a, b| a.1.total_cmp(b.1))
-            .ok_or_else(|| LocoError::Contact("empty wheel profile".into()))?;
+        let k = lowest(gap)?;
         self.check_interior(k, gap, u_ws)?;
         let (t, _) = self.refine(u_ws, phi, k, gap);
         Ok(self.r0 - self.wheel.spline().eval(t).value)
@@ -392,4 +384,13 @@ fn install_rail(rail: &Profile, track: &TrackSetup) -> Result<(CubicSpline, f64,
     let u: Vec<f64> = ys[first..=last].iter().map(|y| y + shift_u).collect();
     let z: Vec<f64> = zs[first..=last].iter().map(|z| z + shift_z).collect();
     Ok((CubicSpline::new(&name, &u, &z)?, shift_u, shift_z))
+}
+
+/// Index of the smallest sampled gap (the wheel's lowest point over its rail).
+fn lowest(gap: &[f64]) -> Result<usize> {
+    gap.iter()
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(b.1))
+        .map(|(k, _)| k)
+        .ok_or_else(|| LocoError::Contact("empty wheel profile".into()))
 }
