@@ -1,6 +1,7 @@
 """The vehicle API: parameters with sources, overrides, input checks, one simulated run."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -75,3 +76,22 @@ def test_full_run_gives_metrics_and_fsd_valve_state() -> None:
     assert result.metrics["ayb_peak_lp"] > 0.0
     valve = result.channel("yaw_damper_bogie1_left_valve")
     assert np.all((valve >= 0.0) & (valve <= 1.0))
+
+
+def test_vehicle_from_a_parameter_file(tmp_path: Path) -> None:
+    text = loco.Locomotive.default().default_toml()
+    old = 'mass = { value = 42000.0, unit = "kg", source = "SPEC §1'
+    assert old in text
+    path = tmp_path / "heavier.toml"
+    path.write_text(text.replace("value = 42000.0", "value = 44000.0", 1), encoding="utf-8")
+    vehicle = loco.Locomotive.from_toml(path)
+    assert vehicle["carbody.mass"] == 44000.0
+    assert vehicle.total_mass() == pytest.approx(loco.Locomotive.default().total_mass() + 2000.0)
+    path.write_text(text.replace("value = 42000.0", "value = -1.0", 1), encoding="utf-8")
+    with pytest.raises(loco.ParameterError, match=r"carbody\.mass"):
+        loco.Locomotive.from_toml(path)
+    path.write_text("[carbody]\nmass = { value = 1.0, unit = 'kg' }\n", encoding="utf-8")
+    with pytest.raises(loco.ProfileFormatError, match=r"heavier\.toml"):
+        loco.Locomotive.from_toml(path)
+    with pytest.raises(loco.LocoIOError):
+        loco.Locomotive.from_toml(tmp_path / "missing.toml")
