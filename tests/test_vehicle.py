@@ -95,3 +95,17 @@ def test_vehicle_from_a_parameter_file(tmp_path: Path) -> None:
         loco.Locomotive.from_toml(path)
     with pytest.raises(loco.LocoIOError):
         loco.Locomotive.from_toml(tmp_path / "missing.toml")
+
+
+def test_lead_in_is_run_but_not_recorded() -> None:
+    # 100 m of lead-in at 50 m/s is 2 s = 1000 samples: the recorded 50 m are the last samples of
+    # one 150 m run on the same track (the track covers lead-in + distance either way).
+    vehicle = loco.Locomotive.default()
+    common = {"scenario": "S_high", "speed": 50.0, "seed": 4, "yaw_damper": loco.dampers.FSD}
+    whole = loco.simulate(vehicle, loco.Scenario(distance=150.0, **common))
+    tail = loco.simulate(vehicle, loco.Scenario(distance=50.0, lead_in=100.0, **common))
+    assert tail.time[0] == 0.0 and len(tail.time) == 501
+    for name in ("frame1_ay_wheelset1", "yaw_damper_bogie1_left_valve", "wheel1_left_Q"):
+        assert np.array_equal(tail.channel(name), whole.channel(name)[1000:]), name
+    with pytest.raises(loco.ParameterError, match="lead_in"):
+        loco.simulate(vehicle, loco.Scenario(distance=50.0, lead_in=-1.0, **common))

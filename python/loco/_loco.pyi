@@ -395,6 +395,7 @@ class RunScenario:
         fastsim_grid: tuple[int, int] = ...,
         creep_table: bool = False,
         initial_lateral_offset: float = 0.0,
+        lead_in: float = 0.0,
         gauge: float = 1.435,
         gauge_height: float = 0.016,
         rail_inclination: float | None = None,

@@ -46,6 +46,8 @@ class Scenario:
     ``seed`` and the wavelength ``band`` (m). ``creep_table`` replaces FASTSIM at every
     evaluation (the study's method) by FASTSIM tabulated once per run or batch: about 2 % of μN
     force error for a faster time loop, worth it for large batches (the table takes ~0.5 s).
+    ``lead_in`` (m) is run before the recorded ``distance`` and not recorded, so that start
+    transients (an FSD valve leaving its defined start state) settle first; 0 as in the study.
     """
 
     scenario: str | None = None
@@ -64,6 +66,7 @@ class Scenario:
     fastsim_grid: tuple[int, int] = (10, 10)
     creep_table: bool = False
     initial_lateral_offset: float = 0.0
+    lead_in: float = 0.0
 
     def profiles(self) -> tuple[Profile, Profile]:
         """The wheel and rail profiles of the run."""
@@ -109,6 +112,7 @@ class Scenario:
             fastsim_grid=(int(self.fastsim_grid[0]), int(self.fastsim_grid[1])),
             creep_table=bool(self.creep_table),
             initial_lateral_offset=float(self.initial_lateral_offset),
+            lead_in=float(self.lead_in),
         )
 
 

@@ -11,7 +11,8 @@
 //! # wheel = "jm3-worn"             # built-in name or a profile file (.prw, .txt …)
 //! # rail = "cn60"
 //! speed = 55.5556                  # m/s (or speed_kmh = 200)
-//! distance = 500.0                 # m
+//! distance = 500.0                 # m, recorded
+//! lead_in = 0.0                    # m run before it, not recorded
 //! track = "synthetic"              # synthetic | perfect | path of a measured CSV
 //! spectrum = "cn-hsr"              # cn-hsr | german-low | german-high
 //! seed = 0
@@ -73,6 +74,9 @@ pub struct ScenarioSection {
     pub speed_kmh: Option<f64>,
     /// m.
     pub distance: f64,
+    /// m, run before `distance` and not recorded.
+    #[serde(default)]
+    pub lead_in: f64,
     pub track: Option<String>,
     pub spectrum: Option<String>,
     pub seed: Option<u64>,
@@ -215,6 +219,7 @@ fn scenario(s: &ScenarioSection, dir: &Path) -> Result<Scenario> {
     scenario.rail = rail;
     scenario.track = track;
     scenario.yaw_damper = yaw_damper;
+    scenario.lead_in = s.lead_in;
     if let Some(step) = s.step {
         scenario.run.step = step;
     }

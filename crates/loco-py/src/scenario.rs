@@ -16,7 +16,8 @@ use std::sync::Arc;
 
 /// A checked run scenario (SI units). The track is `track` when given, perfect when
 /// `track_kind == "perfect"`, else synthesised from `spectrum`, `seed` and `band` (m);
-/// `creep_table` selects tabulated FASTSIM (default table resolution) instead of the direct one.
+/// `creep_table` selects tabulated FASTSIM (default table resolution) instead of the direct one;
+/// `lead_in` (m) is run before the recorded `distance` and not recorded.
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
 pub struct PyRunScenario {
     pub inner: Scenario,
@@ -29,6 +30,7 @@ impl PyRunScenario {
         wheel, rail, speed, distance, *, track=None, track_kind="synthetic".to_string(),
         spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
         output_rate=500.0, fastsim_grid=(10, 10), creep_table=false, initial_lateral_offset=0.0,
+        lead_in=0.0,
         gauge=1.435, gauge_height=0.016, rail_inclination=None
     ))]
     #[allow(clippy::too_many_arguments)]
@@ -48,6 +50,7 @@ impl PyRunScenario {
         fastsim_grid: (usize, usize),
         creep_table: bool,
         initial_lateral_offset: f64,
+        lead_in: f64,
         gauge: f64,
         gauge_height: f64,
         rail_inclination: Option<f64>,
@@ -80,6 +83,7 @@ impl PyRunScenario {
             },
             speed,
             distance,
+            lead_in,
             track,
             yaw_damper: yaw_damper.map(|d| d.inner),
             run: RunSettings {

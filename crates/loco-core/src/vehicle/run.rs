@@ -12,7 +12,7 @@ use super::kinematics::point_motion;
 use super::layout::*;
 use super::simulation::VehicleSystem;
 use super::suspension::DamperRole;
-use crate::error::{check_positive, LocoError, Result};
+use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Settings of the time integration.
@@ -22,8 +22,11 @@ pub struct RunSettings {
     pub step: f64,
     /// Output sampling rate, Hz (a whole number of steps per sample).
     pub output_rate: f64,
-    /// Simulated time, s.
+    /// Simulated time recorded, s.
     pub duration: f64,
+    /// Time integrated before recording starts, s: start transients (a damper's valve leaving its
+    /// defined start state) settle without entering the record, whose time starts at 0 after it.
+    pub settle: f64,
 }
 
 impl Default for RunSettings {
@@ -32,6 +35,7 @@ impl Default for RunSettings {
             step: 1e-3,
             output_rate: 500.0,
             duration: 9.0,
+            settle: 0.0,
         }
     }
 }
@@ -166,6 +170,7 @@ pub fn run(
     check_positive("step", settings.step)?;
     check_positive("output_rate", settings.output_rate)?;
     check_positive("duration", settings.duration)?;
+    check_non_negative("settle", settings.settle)?;
     let steps_per_sample = (1.0 / (settings.output_rate * settings.step))
         .round()
         .max(1.0) as usize;
@@ -181,14 +186,17 @@ pub fn run(
     let mut dy = vec![0.0; system.dimension()];
     let mut t = 0.0;
     let total_steps = (n_samples - 1) * steps_per_sample;
-    for step in 0..=total_steps {
-        let sample = step % steps_per_sample == 0;
-        if step == total_steps {
+    let settle_steps = (settings.settle / dt).round() as usize;
+    let last = settle_steps + total_steps;
+    let t0 = settle_steps as f64 * dt;
+    for step in 0..=last {
+        let sample = step >= settle_steps && (step - settle_steps) % steps_per_sample == 0;
+        if step == last {
             if sample {
                 // Accelerations at the last sample time: one evaluation of the right-hand side.
                 system.derivatives(t, y, &mut dy);
                 record(system, &probes, y, &dy, &mut channels);
-                time.push(t);
+                time.push(t - t0);
             }
             break;
         }
@@ -202,7 +210,7 @@ pub fn run(
             workspace.step_observed(system, t, dt, y, |system, y0, dy0| {
                 record(system, &probes, y0, dy0, &mut channels);
             });
-            time.push(t);
+            time.push(t - t0);
         } else {
             workspace.step(system, t, dt, y);
         }

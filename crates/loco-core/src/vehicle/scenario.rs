@@ -69,8 +69,11 @@ pub struct Scenario {
     pub track_setup: TrackSetup,
     /// Running speed, m/s.
     pub speed: f64,
-    /// Distance run, m (the simulated time is distance / speed).
+    /// Distance run and recorded, m (the recorded time is distance / speed).
     pub distance: f64,
+    /// Distance run before the recorded `distance`, m (not recorded; 0 by default, as in the
+    /// study): lets start transients settle, e.g. an FSD valve leaving its defined start state.
+    pub lead_in: f64,
     pub track: TrackSpec,
     /// Yaw damper law; `None` keeps the parameter file's Maxwell yaw damper.
     pub yaw_damper: Option<Damper>,
@@ -94,6 +97,7 @@ impl Scenario {
             track_setup: TrackSetup::default(),
             speed,
             distance,
+            lead_in: 0.0,
             track: TrackSpec::Synthetic(SynthesisParams {
                 seed,
                 ..SynthesisParams::default()
@@ -122,6 +126,12 @@ impl Scenario {
         check_positive("distance", self.distance)?;
         check_positive("step", self.run.step)?;
         check_positive("output_rate", self.run.output_rate)?;
+        if !(self.lead_in.is_finite() && (0.0..=MAX_DISTANCE).contains(&self.lead_in)) {
+            return Err(LocoError::param(
+                "lead_in",
+                format!("must be finite and in [0, {MAX_DISTANCE}] m, got {}", self.lead_in),
+            ));
+        }
         if self.distance > MAX_DISTANCE {
             return Err(LocoError::param(
                 "distance",
@@ -155,7 +165,7 @@ impl Scenario {
 
     /// Track length a run needs, m.
     pub fn track_length(&self, _structure: &VehicleStructure) -> f64 {
-        self.distance + 20.0
+        self.lead_in + self.distance + 20.0
     }
 }
 
@@ -292,6 +302,7 @@ pub fn simulate_prepared(
     }
     let settings = RunSettings {
         duration: scenario.distance / scenario.speed,
+        settle: scenario.lead_in / scenario.speed,
         ..scenario.run
     };
     let output = run(&mut system, &mut y, &settings, cancel)?;
