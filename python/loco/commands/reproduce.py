@@ -272,7 +272,7 @@ def reproduce(
             optimisation,
         ),
         ("damper_bench", {"version": loco.__version__}, _damper_bench),
-        ("fsd_comparison", common, fsd),
+        ("fsd_comparison", {**common, "lead_in_m": fsd_comparison.LEAD_IN}, fsd),
     ]
     records = []
     for i, (name, settings, stage) in enumerate(stages, start=1):

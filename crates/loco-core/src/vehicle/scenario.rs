@@ -129,7 +129,10 @@ impl Scenario {
         if !(self.lead_in.is_finite() && (0.0..=MAX_DISTANCE).contains(&self.lead_in)) {
             return Err(LocoError::param(
                 "lead_in",
-                format!("must be finite and in [0, {MAX_DISTANCE}] m, got {}", self.lead_in),
+                format!(
+                    "must be finite and in [0, {MAX_DISTANCE}] m, got {}",
+                    self.lead_in
+                ),
             ));
         }
         if self.distance > MAX_DISTANCE {
