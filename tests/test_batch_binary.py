@@ -100,6 +100,19 @@ def test_binary_reports_malformed_samples_with_file_and_line(tmp_path: Path) -> 
         check=False,
     )
     assert done.returncode != 0 and "study.toml" in done.stderr
+    # The unknown key is reported on its own line (the 4th), not the one before.
+    assert f"{study}:4:" in done.stderr and "distanse" in done.stderr
+
+    study.write_text(
+        "[scenario]\nname = 'S_high'\nspeed = 50.0\ndistance = 10.0\ntrack = 'perfect'\nseed = 3\n"
+    )
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode != 0 and "scenario.seed" in done.stderr
 
 
 def test_binary_rejects_an_unknown_channel_before_running(tmp_path: Path) -> None:

@@ -59,6 +59,9 @@ def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     f, p = loco.metrics.psd(single.channel(A_YB[1]), single.sampling_rate)
     np.testing.assert_allclose(sweep.spectra[("S_high", "A_yb")].density, p, rtol=1e-9)
     np.testing.assert_allclose(sweep.spectra[("S_high", "A_yb")].frequency, f)
+    # The peaks are the core's run metrics, not recomputed in Python.
+    assert sweep.spectra[("S_high", "A_yb")].dominant_hz == single.metrics["ayb_f0_hz"]
+    assert sweep.spectra[("S_high", "A_yb")].peak == single.metrics["ayb_psd_peak"]
 
 
 def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:

@@ -40,6 +40,20 @@ def test_critical_speed_rises_with_the_stiffer_yaw_damper() -> None:
     assert yd2 > yd1
 
 
+def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:
+    # The core's bisection (its own eigenvalue solver) agrees with numpy's eigenvalues: the
+    # least damped mode is damped just below the result and undamped just above it.
+    vehicle = loco.Locomotive.default()
+    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    speed = loco.critical_speed(vehicle, scenario, tolerance=0.5)
+    assert 20.0 < speed < 110.0
+    for offset, stable in ((-0.5, True), (0.5, False)):
+        at = loco.eigen(vehicle, dataclasses.replace(scenario, speed=speed + offset))
+        assert (at.least_damped().damping_ratio > 0.0) == stable, offset
+    assert math.isinf(loco.critical_speed(vehicle, scenario, high=25.0))
+    assert loco.critical_speed(vehicle, scenario, low=100.0, high=110.0) == 100.0
+
+
 def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
     # Worn wheels hunt subcritically: after a disturbance well above the linear critical speed
     # the limit cycle survives below it, so a ramp-down loses it at or below that speed.

@@ -410,11 +410,15 @@ class RunScenario:
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
-    "body_mass_maps",
+    "body_motion_names",
     "body_names",
     "default_vehicle_toml",
     "dof_names",
+    "linear_critical_speed",
     "linearise",
+    "mass_matrix",
+    "metric_channels",
+    "mode_energies",
     "ramp_down",
     "simulate",
     "study_parameters",
@@ -436,11 +440,21 @@ def vehicle_total_mass(
 def study_parameters() -> list[tuple[str, str]]: ...
 def dof_names() -> list[str]: ...
 def body_names() -> list[str]: ...
-def body_mass_maps(
+def metric_channels() -> dict[str, str]: ...
+def mass_matrix(
     toml_text: str | None = None,
     origin: str = ...,
     overrides: dict[str, float] = ...,
-) -> tuple[list[str], NDArray[np.float64], NDArray[np.float64]]: ...
+) -> NDArray[np.float64]: ...
+def body_motion_names() -> list[str]: ...
+def mode_energies(
+    real: NDArray[np.float64],
+    imag: NDArray[np.float64],
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+) -> tuple[list[str], list[str], NDArray[np.float64], NDArray[np.float64]]: ...
 def simulate(
     scenario: RunScenario,
     *,
@@ -455,19 +469,30 @@ def linearise(
     origin: str = ...,
     overrides: dict[str, float] = ...,
 ) -> NDArray[np.float64]: ...
+def linear_critical_speed(
+    scenario: RunScenario,
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+    low: float | None = None,
+    high: float | None = None,
+    tolerance: float | None = None,
+    band: tuple[float, float] | None = None,
+) -> float: ...
 def ramp_down(
     scenario: RunScenario,
     *,
     toml_text: str | None = None,
     origin: str = ...,
     overrides: dict[str, float] = ...,
-    end_speed: float = 20.0,
-    deceleration: float = 0.5,
-    hold: float = 3.0,
-    max_hold: float = 30.0,
-    disturbance: float = 8e-3,
-    window: float = 1.0,
-    threshold: float = 5e-4,
+    end_speed: float | None = None,
+    deceleration: float | None = None,
+    hold: float | None = None,
+    max_hold: float | None = None,
+    disturbance: float | None = None,
+    window: float | None = None,
+    threshold: float | None = None,
 ) -> tuple[float, str, NDArray[np.float64], NDArray[np.float64]]: ...
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------

@@ -148,8 +148,6 @@ def run_batch(
         )
     if threads is not None and threads < 1:
         raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
-    if seed is not None and seed < 0:
-        raise _loco.ParameterError(f"invalid parameter `seed`: must be >= 0, got {seed}")
     keep = [int(i) for i in histories]
     if any(i < 0 for i in keep):
         raise _loco.ParameterError(f"invalid input `histories`: negative index in {keep}")

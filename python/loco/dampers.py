@@ -14,6 +14,7 @@ switching delay 0.05 s).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -23,6 +24,7 @@ from loco._loco import Damper, ParameterError
 
 __all__ = [
     "FSD",
+    "PRESETS",
     "YD1",
     "YD2",
     "BenchResult",
@@ -30,8 +32,10 @@ __all__ = [
     "bench",
     "bench_recorded",
     "bench_sweep",
+    "describe",
     "fsd",
     "hydraulic",
+    "label",
     "maxwell",
     "maxwell_closed_form",
 ]
@@ -42,6 +46,23 @@ YD2: Damper = _loco.damper_preset("yd2")
 """Conventional yaw damper YD2: 800 kN·s/m in series with 22.5 kN/mm."""
 FSD: Damper = _loco.damper_preset("fsd")
 """The spec's frequency-selective yaw damper."""
+PRESETS: dict[str, Damper] = {"YD1": YD1, "YD2": YD2, "FSD": FSD}
+"""The spec's yaw dampers by name (SPEC §4), in the order the studies compare them."""
+
+
+def describe(damper: Damper) -> dict[str, Any]:
+    """``{"kind": ..., **parameters}``: the damper law as a JSON-ready dict (study settings)."""
+    return {"kind": damper.kind, **damper.parameters()}
+
+
+def label(damper: Damper | None) -> str:
+    """The :data:`PRESETS` name of ``damper`` (same kind and parameters), else its kind; None is
+    the vehicle file's yaw damper."""
+    if damper is None:
+        return "vehicle file's yaw damper"
+    wanted = describe(damper)
+    return next((n for n, d in PRESETS.items() if describe(d) == wanted), damper.kind)
+
 
 _HYDRAULIC_DEFAULTS = _loco.damper_hydraulic_defaults()
 

@@ -1,18 +1,16 @@
 """What moves in a mode: each body's share of the mode's kinetic energy, and its motions.
 
-The 90 coordinates mix metres, radians and motions relative to a parent body (hollow shafts,
-traction rods, rotary arms), so their squared amplitudes say little about which bodies move.
-The model's own mass matrix does: it is ``M = Σ_b T_bᵀ D_b T_b`` with ``T_b`` the map from the
-coordinates to body ``b``'s absolute motion (x, y, z in m; roll, pitch, yaw in rad, at its
-centre of gravity) and ``D_b = diag(m, m, m, Ixx, Iyy, Izz)`` (principal axes along the
-vehicle's). For a mode shape ``q`` the velocity amplitude is ``λq``, so the mean kinetic energy
-of body ``b`` is proportional to ``Σ_k D_b[k]·|(T_b q)_k|²``: its share of the total, split
-into the six motions, is independent of units and of how the coordinates are chosen.
+The shares come from the core (``loco_core::vehicle::modes``, through
+``loco._loco.mode_energies``): for a mode shape ``q`` the mean kinetic energy of body ``b`` is
+proportional to ``Σ_k D_b[k]·|(T_b q)_k|²``, with ``T_b`` the map from the coordinates to the
+body's absolute motion (x, y, z; roll, pitch, yaw at its centre of gravity) and
+``D_b = diag(m, m, m, Ixx, Iyy, Izz)``, the terms of the model's mass matrix
+``M = Σ_b T_bᵀ D_b T_b``. Shares are independent of units and of how the coordinates are
+chosen. This module only groups them by kind of body and words them.
 """
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -20,56 +18,56 @@ import numpy.typing as npt
 
 from loco import _loco
 
-__all__ = ["MOTIONS", "BodyMasses", "Mode", "body_masses", "energy_shares"]
+__all__ = ["MOTIONS", "Mode", "ModeEnergies", "mode_energies"]
 
-#: The six motions of a body, in the order of its motion map.
-MOTIONS = ("longitudinal", "lateral", "vertical", "roll", "pitch", "yaw")
+#: The six motions of a body, in the order of the core's motion maps.
+MOTIONS = tuple(_loco.body_motion_names())
 
 #: Share (–) of a group's energy a motion needs to be named in :meth:`Mode.describe`.
 _NAMED_MOTION = 0.2
 
 
 @dataclass(frozen=True)
-class BodyMasses:
-    """Motion maps (n_bodies × 6 × 90) and mass diagonals (n_bodies × 6, kg and kg·m²)."""
+class ModeEnergies:
+    """Kinetic-energy shares of several modes: body names and kinds (``wheelsets``, …), each
+    body's share of each mode's energy (n_modes × n_bodies) and the share of each body's energy
+    in each of :data:`MOTIONS` (n_modes × n_bodies × 6)."""
 
     names: list[str]
-    maps: npt.NDArray[np.float64]
-    masses: npt.NDArray[np.float64]
+    kinds: list[str]
+    shares: npt.NDArray[np.float64]
+    motions: npt.NDArray[np.float64]
 
-    def mass_matrix(self) -> npt.NDArray[np.float64]:
-        """The 90 × 90 mass matrix ``Σ Tᵀ D T`` (kg, kg·m, kg·m²)."""
-        return np.einsum("bki,bk,bkj->ij", self.maps, self.masses, self.maps)
+    def bodies(self, k: int) -> dict[str, float]:
+        """Each body's share (–) of mode ``k``'s kinetic energy."""
+        return {n: float(v) for n, v in zip(self.names, self.shares[k], strict=True)}
 
-
-def body_masses(toml_text: str | None, origin: str, overrides: dict[str, float]) -> BodyMasses:
-    """The bodies of a vehicle file with overrides (see :class:`loco.Locomotive`)."""
-    names, maps, masses = _loco.body_mass_maps(toml_text, origin, overrides)
-    return BodyMasses(names=list(names), maps=maps, masses=masses)
-
-
-def group_of(body: str) -> str:
-    """The kind of a body: ``wheelset3`` → ``wheelsets``, ``rotary_arm2_left`` → ``rotary_arms``."""
-    kind = re.sub(r"\d+(_(left|right))?$", "", body)
-    return kind if kind == "carbody" else kind + "s"
+    def body_motions(self, k: int) -> dict[str, dict[str, float]]:
+        """Per body, the share (–) of its energy in mode ``k`` in each of :data:`MOTIONS`."""
+        return {
+            n: {m: float(v) for m, v in zip(MOTIONS, row, strict=True)}
+            for n, row in zip(self.names, self.motions[k], strict=True)
+        }
 
 
-def energy_shares(
-    shape: npt.NDArray[np.complex128], bodies: BodyMasses
-) -> tuple[dict[str, float], dict[str, dict[str, float]]]:
-    """Each body's share of the mode's kinetic energy (summing to 1) and, per body, the share of
-    its energy in each of :data:`MOTIONS`, for the mode shape ``shape`` (first 90 entries: the
-    coordinates)."""
-    motion = bodies.maps @ shape[: bodies.maps.shape[2]]  # (bodies, 6), complex amplitudes
-    energy = bodies.masses * np.abs(motion) ** 2
-    per_body = energy.sum(axis=1)
-    total = float(per_body.sum()) or 1.0
-    shares = {n: float(e) / total for n, e in zip(bodies.names, per_body, strict=True)}
-    motions = {
-        n: {m: float(v) / (float(e) or 1.0) for m, v in zip(MOTIONS, row, strict=True)}
-        for n, e, row in zip(bodies.names, per_body, energy, strict=True)
-    }
-    return shares, motions
+def mode_energies(
+    shapes: npt.NDArray[np.complex128],
+    toml_text: str | None,
+    origin: str,
+    overrides: dict[str, float],
+) -> ModeEnergies:
+    """Energy shares of the mode shapes ``shapes`` (n_modes × n, first 90 columns: the
+    coordinates) of a vehicle file with overrides (see :class:`loco.Locomotive`), computed by the
+    core with the vehicle built once."""
+    shapes = np.atleast_2d(shapes)
+    names, kinds, shares, motions = _loco.mode_energies(
+        np.ascontiguousarray(shapes.real, dtype=np.float64),
+        np.ascontiguousarray(shapes.imag, dtype=np.float64),
+        toml_text=toml_text,
+        origin=origin,
+        overrides=overrides,
+    )
+    return ModeEnergies(names=list(names), kinds=list(kinds), shares=shares, motions=motions)
 
 
 @dataclass(frozen=True)
@@ -77,7 +75,8 @@ class Mode:
     """One oscillatory mode: frequency (Hz), damping ratio (–) and what moves.
 
     ``bodies``: each body's share (–) of the mode's kinetic energy; ``motions``: per body, the
-    share (–) of its energy in each of :data:`MOTIONS`.
+    share (–) of its energy in each of :data:`MOTIONS`; ``kinds``: each body's kind
+    (``carbody``, ``frames``, ``wheelsets``, …).
     """
 
     frequency: float
@@ -85,12 +84,13 @@ class Mode:
     eigenvalue: complex
     bodies: dict[str, float]
     motions: dict[str, dict[str, float]]
+    kinds: dict[str, str]
 
     def groups(self) -> dict[str, float]:
         """Energy shares (–) by kind of body (``carbody``, ``frames``, ``wheelsets``, …)."""
         out: dict[str, float] = {}
         for body, share in self.bodies.items():
-            out[group_of(body)] = out.get(group_of(body), 0.0) + share
+            out[self.kinds[body]] = out.get(self.kinds[body], 0.0) + share
         return out
 
     def group_motions(self, group: str) -> dict[str, float]:
@@ -98,7 +98,7 @@ class Mode:
         out = dict.fromkeys(MOTIONS, 0.0)
         total = 0.0
         for body, share in self.bodies.items():
-            if group_of(body) == group:
+            if self.kinds[body] == group:
                 total += share
                 for m, v in self.motions[body].items():
                     out[m] += share * v

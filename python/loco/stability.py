@@ -2,7 +2,9 @@
 
 The state matrix comes from the Rust model itself (central differences of the full nonlinear
 right-hand side about the static equilibrium on perfect track, `loco._loco.linearise`), so the
-eigenvalues belong to exactly the model the time integration runs; numpy/LAPACK computes them.
+eigenvalues belong to exactly the model the time integration runs. :func:`eigen` takes them and
+the mode shapes from numpy/LAPACK; the linear critical speed is a bisection in the core
+(`loco._loco.linear_critical_speed`, vehicle built once, its own eigenvalue solver).
 The nonlinear critical speed comes from a time simulation whose speed falls linearly after a
 lateral disturbance (`loco._loco.ramp_down`): the speed at which the hunting limit cycle dies out.
 """
@@ -16,7 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.modes import Mode, body_masses, energy_shares
+from loco.modes import Mode, mode_energies
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
@@ -65,20 +67,24 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
     )
-    bodies = body_masses(vehicle.toml_text, vehicle.origin, dict(vehicle.overrides))
     values, vectors = np.linalg.eig(a)
+    # One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
+    keep = np.flatnonzero(values.imag > 1e-6)
+    energies = mode_energies(
+        vectors[:, keep].T, vehicle.toml_text, vehicle.origin, dict(vehicle.overrides)
+    )
+    kinds = dict(zip(energies.names, energies.kinds, strict=True))
     modes = []
-    for k, lam in enumerate(values):
-        if lam.imag <= 1e-6:  # one of each conjugate pair; real (overdamped) roots skipped
-            continue
-        shares, motions = energy_shares(vectors[:, k], bodies)
+    for i, k in enumerate(keep):
+        lam = values[k]
         modes.append(
             Mode(
                 frequency=float(abs(lam.imag) / (2 * np.pi)),
                 damping_ratio=float(-lam.real / abs(lam)),
                 eigenvalue=complex(lam),
-                bodies=shares,
-                motions=motions,
+                bodies=energies.bodies(i),
+                motions=energies.body_motions(i),
+                kinds=kinds,
             )
         )
     modes.sort(key=lambda m: m.damping_ratio)
@@ -102,16 +108,25 @@ class RampDown:
     amplitude: FloatArray
 
 
+def _given(**settings: float | tuple[float, float] | None) -> dict[str, object]:
+    """The settings the caller gave (not None), as floats; the core supplies the others."""
+    return {
+        k: tuple(float(x) for x in v) if isinstance(v, tuple) else float(v)
+        for k, v in settings.items()
+        if v is not None
+    }
+
+
 def ramp_down(
     vehicle: Locomotive,
     scenario: Scenario,
-    end_speed: float = 20.0,
-    deceleration: float = 0.5,
-    hold: float = 3.0,
-    max_hold: float = 30.0,
-    disturbance: float = 8e-3,
-    window: float = 1.0,
-    threshold: float = 5e-4,
+    end_speed: float | None = None,
+    deceleration: float | None = None,
+    hold: float | None = None,
+    max_hold: float | None = None,
+    disturbance: float | None = None,
+    window: float | None = None,
+    threshold: float | None = None,
 ) -> RampDown:
     """Nonlinear critical speed by a speed ramp-down on perfect track.
 
@@ -119,25 +134,29 @@ def ramp_down(
     ``scenario.speed`` (m/s) for at least ``hold`` (s) and until the hunting amplitude has
     settled (at most ``max_hold``, s), then falls by ``deceleration`` (m/s²) down to ``end_speed``
     (m/s). Hunting has died out in the first window of ``window`` (s) whose amplitude is below
-    ``threshold`` (m). The disturbance must be large: the default, 8 mm, reaches the flanges of
-    worn wheels and finds the largest limit cycle, the one that survives down to the lowest speed.
+    ``threshold`` (m). A setting left as None takes the core's default (``RampSettings`` in
+    ``loco_core::vehicle::critical_speed``: 20 m/s at 0.5 m/s² after 3–30 s, 8 mm, 1 s windows,
+    0.5 mm). The disturbance must be large: the default reaches the flanges of worn wheels and
+    finds the largest limit cycle, the one that survives down to the lowest speed.
 
     The detection follows the dying cycle's collapse, so the result is low by roughly
-    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 39.2 m/s: 39.0,
-    38.0 and 36.5 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
+    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 35.6 m/s: 35.2,
+    34.1 and 33.8 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
     check it. Start well above the linear critical speed. Ctrl-C stops the run."""
     speed, outcome, speeds, amplitudes = _loco.ramp_down(
         scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
-        end_speed=float(end_speed),
-        deceleration=float(deceleration),
-        hold=float(hold),
-        max_hold=float(max_hold),
-        disturbance=float(disturbance),
-        window=float(window),
-        threshold=float(threshold),
+        **_given(
+            end_speed=end_speed,
+            deceleration=deceleration,
+            hold=hold,
+            max_hold=max_hold,
+            disturbance=disturbance,
+            window=window,
+            threshold=threshold,
+        ),  # type: ignore[arg-type]
     )
     return RampDown(critical_speed=speed, outcome=outcome, speed=speeds, amplitude=amplitudes)
 
@@ -145,27 +164,31 @@ def ramp_down(
 def critical_speed(
     vehicle: Locomotive,
     scenario: Scenario,
-    low: float = 20.0,
-    high: float = 110.0,
-    tolerance: float = 0.5,
-    band: tuple[float, float] = (0.3, 20.0),
+    low: float | None = None,
+    high: float | None = None,
+    tolerance: float | None = None,
+    band: tuple[float, float] | None = None,
     *,
     method: str = "linear",
-    deceleration: float = 0.5,
-    disturbance: float = 8e-3,
+    deceleration: float | None = None,
+    disturbance: float | None = None,
     conicity: float | None = None,
 ) -> float:
     """Critical speed (m/s) of the vehicle in the scenario's wheel/rail pair and yaw damper.
 
     ``method="linear"``: where the least damped mode in ``band`` (Hz) loses its damping, by
-    bisection between ``low`` and ``high`` (m/s) to ``tolerance`` (m/s). Returns ``inf`` when the
-    vehicle is stable at ``high`` and ``low`` when it is already unstable there.
+    bisection between ``low`` and ``high`` (m/s) to ``tolerance`` (m/s), in the core with the
+    vehicle built once. Returns ``inf`` when the vehicle is stable at ``high`` and ``low`` when it
+    is already unstable there.
 
     ``method="nonlinear"``: the speed at which the hunting limit cycle dies out in a ramp-down
     (:func:`ramp_down`) from ``scenario.speed`` to ``low`` at ``deceleration`` (m/s²) after a
     ``disturbance`` (m). Returns ``inf`` when the vehicle does not hunt at ``scenario.speed`` and
     ``low`` when it still hunts there. On worn wheels (subcritical hunting) it lies at or below
     the linear critical speed.
+
+    A setting left as None takes the core's default (``LinearSearch`` and ``RampSettings``:
+    20–110 m/s to 0.5 m/s in 0.3–20 Hz; a ramp to 20 m/s at 0.5 m/s² after 8 mm).
 
     ``conicity`` (–) replaces the scenario's wheel and rail by a conical wheel of that equivalent
     conicity on a knife-edge rail (see :func:`eigen`); it has no flange, so it is refused with
@@ -187,21 +210,11 @@ def critical_speed(
         raise _loco.ParameterError(
             f"invalid parameter `method`: expected 'linear' or 'nonlinear', got '{method}'"
         )
-
     scenario = with_conicity(scenario, conicity)
-
-    def zeta(speed: float) -> float:
-        s = dataclasses.replace(scenario, speed=speed)
-        return eigen(vehicle, s).least_damped(*band).damping_ratio
-
-    if zeta(high) > 0.0:
-        return float("inf")
-    if zeta(low) <= 0.0:
-        return low
-    while high - low > tolerance:
-        mid = 0.5 * (low + high)
-        if zeta(mid) > 0.0:
-            low = mid
-        else:
-            high = mid
-    return 0.5 * (low + high)
+    return _loco.linear_critical_speed(
+        scenario.native(),
+        toml_text=vehicle.toml_text,
+        origin=vehicle.origin,
+        overrides=dict(vehicle.overrides),
+        **_given(low=low, high=high, tolerance=tolerance, band=band),  # type: ignore[arg-type]
+    )

@@ -18,7 +18,7 @@ use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use loco_core::batch::{run_batch, BatchMonitor, BatchSpec};
 use loco_core::vehicle::run::channel_names;
-use loco_core::vehicle::scenario::PerfectTrackVehicle;
+use loco_core::vehicle::structure::VehicleStructure;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::Ordering;
@@ -63,11 +63,10 @@ fn run(cli: &Cli) -> loco_core::Result<()> {
     let samples = csv_io::read_samples(&cli.samples)?;
     if let Some(wanted) = &study.channels {
         // Check the history channels before the batch: a typo must fail now, not after hours of
-        // simulation. The names depend only on the vehicle's layout, so the base vehicle on
-        // perfect track (built, not run) lists them.
-        let system = PerfectTrackVehicle::new(study.base.clone(), &study.scenario)?
-            .system(study.scenario.speed)?;
-        csv_io::select_channels(wanted, &channel_names(&system)?)?;
+        // simulation. The names depend only on the vehicle's structure: the base vehicle's lists
+        // them.
+        let structure = VehicleStructure::new(study.base.clone())?;
+        csv_io::select_channels(wanted, &channel_names(&structure)?)?;
     }
     let n = samples.values.len() / samples.names.len();
     let spec = BatchSpec {

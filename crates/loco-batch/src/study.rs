@@ -20,29 +20,32 @@
 //! yaw_damper = "file"              # file (the parameter file's Maxwell) | YD1 | YD2 | FSD
 //! step = 1e-3                      # s
 //! output_rate = 500.0              # Hz
-//! per_sample_track = false
+//! per_sample_track = false         # a track per sample (seed + sample index)
 //! creep_table = false              # tabulated FASTSIM instead of FASTSIM at every evaluation
+//! fastsim_grid = [10, 10]          # FASTSIM grid (nx, ny)
+//! initial_lateral_offset = 0.0     # m, every wheelset at t = 0
+//! gauge = 1.435                    # m
+//! gauge_height = 0.016             # m below the rail top
+//! # rail_inclination = 0.025       # rad (default 1:40)
 //!
 //! [output]
 //! histories = [0]                  # samples whose time histories are written
 //! channels = ["frame1_ay_wheelset1"]   # channels of those histories (default: all)
 //! ```
 //!
-//! Relative paths are relative to the study file.
+//! Relative paths are relative to the study file. Every `[scenario]` key but `distance` and the
+//! speed is optional; left out, it takes the core default
+//! ([`loco_core::vehicle::scenario_settings::ScenarioSettings`]). Settings that contradict each
+//! other (`spectrum`, `seed` or `band` with a perfect or measured track; `name` with `wheel`;
+//! `speed` with `speed_kmh`) are refused.
 
-use loco_core::contact::builtin::{builtin_names, builtin_profile};
-use loco_core::contact::fastsim_table::FastsimTableParams;
-use loco_core::contact::profile::{Profile, ProfileKind};
-use loco_core::contact::profile_io::load_profile;
-use loco_core::dampers::Damper;
-use loco_core::track::{load_csv, MeasuredParams, SynthesisParams, TrackSpectrum};
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{scenario_profiles, Scenario, TrackSpec};
+use loco_core::vehicle::scenario::Scenario;
+use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use loco_core::{LocoError, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 /// The study file as written.
 #[derive(Debug, Default, Deserialize)]
@@ -50,7 +53,7 @@ use std::sync::Arc;
 pub struct StudyFile {
     #[serde(default)]
     pub vehicle: VehicleSection,
-    pub scenario: ScenarioSection,
+    pub scenario: ScenarioSettings,
     #[serde(default)]
     pub output: OutputSection,
 }
@@ -61,33 +64,6 @@ pub struct VehicleSection {
     pub file: Option<PathBuf>,
     #[serde(default)]
     pub overrides: BTreeMap<String, f64>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ScenarioSection {
-    pub name: Option<String>,
-    pub wheel: Option<String>,
-    pub rail: Option<String>,
-    /// m/s.
-    pub speed: Option<f64>,
-    pub speed_kmh: Option<f64>,
-    /// m.
-    pub distance: f64,
-    /// m, run before `distance` and not recorded.
-    #[serde(default)]
-    pub lead_in: f64,
-    pub track: Option<String>,
-    pub spectrum: Option<String>,
-    pub seed: Option<u64>,
-    pub band: Option<[f64; 2]>,
-    pub yaw_damper: Option<String>,
-    pub step: Option<f64>,
-    pub output_rate: Option<f64>,
-    #[serde(default)]
-    pub per_sample_track: bool,
-    #[serde(default)]
-    pub creep_table: bool,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -120,9 +96,10 @@ pub fn load_study(path: &Path) -> Result<Study> {
     let origin = path.display().to_string();
     let file: StudyFile = toml::from_str(&text).map_err(|e| LocoError::Parse {
         path: origin.clone(),
+        // 1-based line of the span's start (a span starting a line counts that line).
         line: e
             .span()
-            .map(|s| text[..s.start.min(text.len())].lines().count().max(1))
+            .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
             .unwrap_or(0),
         reason: e.message().to_string(),
     })?;
@@ -137,97 +114,21 @@ pub fn load_study(path: &Path) -> Result<Study> {
     for (name, value) in &file.vehicle.overrides {
         base.set(name, *value)?;
     }
-    let scenario = scenario(&file.scenario, dir)?;
-    scenario.validate()?;
+    let scenario = file
+        .scenario
+        .resolve(GivenObjects::default(), dir)
+        .map_err(|e| match e {
+            LocoError::InvalidParameter { name, reason } => LocoError::InvalidParameter {
+                name: format!("scenario.{name}"),
+                reason,
+            },
+            other => other,
+        })?;
     Ok(Study {
         base,
         scenario,
-        per_sample_track: file.scenario.per_sample_track,
+        per_sample_track: file.scenario.per_sample_track.unwrap_or(false),
         histories: file.output.histories,
         channels: file.output.channels,
     })
-}
-
-fn profile(name: &str, kind: ProfileKind, dir: &Path) -> Result<Profile> {
-    if builtin_names().contains(&name) {
-        builtin_profile(name)
-    } else {
-        load_profile(&dir.join(name), Some(kind), false)
-    }
-}
-
-fn scenario(s: &ScenarioSection, dir: &Path) -> Result<Scenario> {
-    let speed = match (s.speed, s.speed_kmh) {
-        (Some(v), None) => v,
-        (None, Some(kmh)) => kmh / 3.6,
-        _ => {
-            return Err(LocoError::param(
-                "scenario.speed",
-                "give exactly one of `speed` (m/s) and `speed_kmh`",
-            ))
-        }
-    };
-    let (wheel, rail) = match (&s.name, &s.wheel, &s.rail) {
-        (Some(name), None, None) => {
-            let (w, r) = scenario_profiles(name)?;
-            (builtin_profile(w)?, builtin_profile(r)?)
-        }
-        (None, Some(w), r) => (
-            profile(w, ProfileKind::Wheel, dir)?,
-            profile(r.as_deref().unwrap_or("cn60"), ProfileKind::Rail, dir)?,
-        ),
-        _ => {
-            return Err(LocoError::param(
-                "scenario.name",
-                "give either `name` (S_low, S_norm, S_high) or `wheel` (and optionally `rail`)",
-            ))
-        }
-    };
-    let seed = s.seed.unwrap_or(0);
-    let band = s.band.unwrap_or([2.0, 200.0]);
-    let track = match s.track.as_deref().unwrap_or("synthetic") {
-        "synthetic" => TrackSpec::Synthetic(SynthesisParams {
-            spectrum: TrackSpectrum::from_name(s.spectrum.as_deref().unwrap_or("cn-hsr"))?,
-            seed,
-            wavelength_min: band[0],
-            wavelength_max: band[1],
-            ..SynthesisParams::default()
-        }),
-        "perfect" => TrackSpec::Perfect,
-        file => {
-            let p = dir.join(file);
-            TrackSpec::Given(Arc::new(load_csv(
-                &p.display().to_string(),
-                &MeasuredParams::default(),
-            )?))
-        }
-    };
-    let yaw_damper = match s.yaw_damper.as_deref().unwrap_or("file") {
-        "file" => None,
-        "YD1" => Some(Damper::yd1()),
-        "YD2" => Some(Damper::yd2()),
-        "FSD" => Some(Damper::fsd()),
-        other => {
-            return Err(LocoError::param(
-                "scenario.yaw_damper",
-                format!("expected file, YD1, YD2 or FSD, got '{other}'"),
-            ))
-        }
-    };
-    let mut scenario = Scenario::study("S_norm", speed, s.distance, seed)?;
-    scenario.wheel = wheel;
-    scenario.rail = rail;
-    scenario.track = track;
-    scenario.yaw_damper = yaw_damper;
-    scenario.lead_in = s.lead_in;
-    if let Some(step) = s.step {
-        scenario.run.step = step;
-    }
-    if let Some(rate) = s.output_rate {
-        scenario.run.output_rate = rate;
-    }
-    if s.creep_table {
-        scenario.creep_table = Some(FastsimTableParams::default());
-    }
-    Ok(scenario)
 }

@@ -19,7 +19,7 @@ fn names_are_unique_and_cover_every_damper() {
         .unwrap()
         .system(s.speed)
         .unwrap();
-    let names = channel_names(&system).unwrap();
+    let names = channel_names(&system.structure).unwrap();
     let unique: HashSet<&String> = names.iter().collect();
     assert_eq!(unique.len(), names.len(), "duplicate channel names");
     // Names other code and tests rely on.
@@ -59,7 +59,7 @@ fn run_records_the_listed_channels_and_vertical_damper_forces() {
         .unwrap()
         .system(s.speed)
         .unwrap();
-    let listed = channel_names(&system).unwrap();
+    let listed = channel_names(&system.structure).unwrap();
     let result = simulate(ParameterSet::default_vehicle(), &s).unwrap();
     assert_eq!(result.output.names, listed);
     // On an irregular track the vertical dampers work: their force histories are not all zero.

@@ -13,7 +13,7 @@ use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
 };
-use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::simulation::{SpeedProfile, VehicleSystem};
 use loco_core::vehicle::statics::{static_equilibrium, STATIC_TANGENTIAL_STIFFNESS};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
@@ -208,8 +208,11 @@ fn a_speed_ramp_moves_every_wheelset_at_the_ramp_speed() {
         &perfect("S_norm", 60.0, 100.0),
     );
     let at_rest = sys.wheelset_distance(0, 3.0);
-    sys.deceleration = 0.5;
-    sys.ramp_start = 2.0;
+    sys.speed = SpeedProfile::ramp(60.0, 0.5);
+    // A ramp that has not been started holds its speed.
+    assert_eq!(sys.speed_at(5.0), 60.0);
+    assert_eq!(sys.wheelset_distance(0, 3.0), at_rest);
+    sys.speed.start_ramp(2.0);
     // Before the ramp nothing changes; after it the speed falls by 0.5 m/s per second.
     assert_eq!(sys.speed_at(1.5), 60.0);
     assert!((sys.speed_at(12.0) - 55.0).abs() < 1e-12);

@@ -5,13 +5,10 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
-use loco_core::contact::fastsim::FastsimParams;
-use loco_core::contact::fastsim_table::FastsimTableParams;
-use loco_core::contact::setup::TrackSetup;
-use loco_core::track::{SynthesisParams, TrackSpectrum};
-use loco_core::vehicle::run::RunSettings;
-use loco_core::vehicle::scenario::{Scenario, TrackSpec};
+use loco_core::vehicle::scenario::Scenario;
+use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use pyo3::prelude::*;
+use std::path::Path;
 use std::sync::Arc;
 
 /// A checked run scenario (SI units). The track is `track` when given, perfect when
@@ -55,51 +52,40 @@ impl PyRunScenario {
         gauge_height: f64,
         rail_inclination: Option<f64>,
     ) -> PyResult<Self> {
-        let track = match (track, track_kind.as_str()) {
-            (Some(t), _) => TrackSpec::Given(Arc::new(t.inner.clone())),
-            (None, "perfect") => TrackSpec::Perfect,
-            (None, "synthetic") => TrackSpec::Synthetic(SynthesisParams {
-                spectrum: TrackSpectrum::from_name(&spectrum).map_err(to_py_err)?,
-                seed,
-                wavelength_min: band.0,
-                wavelength_max: band.1,
-                ..SynthesisParams::default()
-            }),
-            (None, other) => {
-                return Err(to_py_err(loco_core::LocoError::param(
-                    "track_kind",
-                    format!("expected 'synthetic' or 'perfect', got '{other}'"),
-                )))
-            }
+        // A given track takes the place of `track_kind`; the synthesis settings only reach a
+        // synthesised track (the Python layer always passes them).
+        let synthetic = track.is_none() && track_kind == "synthetic";
+        if track.is_none() && !synthetic && track_kind != "perfect" {
+            return Err(to_py_err(loco_core::LocoError::param(
+                "track_kind",
+                format!("expected 'synthetic' or 'perfect', got '{track_kind}'"),
+            )));
+        }
+        let settings = ScenarioSettings {
+            speed: Some(speed),
+            distance: Some(distance),
+            lead_in: Some(lead_in),
+            track: track.is_none().then_some(track_kind),
+            spectrum: synthetic.then_some(spectrum),
+            seed: synthetic.then_some(seed),
+            band: synthetic.then_some([band.0, band.1]),
+            step: Some(step),
+            output_rate: Some(output_rate),
+            fastsim_grid: Some([fastsim_grid.0, fastsim_grid.1]),
+            creep_table: Some(creep_table),
+            initial_lateral_offset: Some(initial_lateral_offset),
+            gauge: Some(gauge),
+            gauge_height: Some(gauge_height),
+            rail_inclination,
+            ..ScenarioSettings::default()
         };
-        let inner = Scenario {
-            wheel: wheel.inner.clone(),
-            rail: rail.inner.clone(),
-            track_setup: TrackSetup {
-                gauge,
-                gauge_height,
-                rail_inclination: rail_inclination
-                    .unwrap_or(TrackSetup::default().rail_inclination),
-            },
-            speed,
-            distance,
-            lead_in,
-            track,
+        let given = GivenObjects {
+            wheel: Some(wheel.inner.clone()),
+            rail: Some(rail.inner.clone()),
+            track: track.map(|t| Arc::new(t.inner.clone())),
             yaw_damper: yaw_damper.map(|d| d.inner),
-            run: RunSettings {
-                step,
-                output_rate,
-                ..RunSettings::default()
-            },
-            fastsim: FastsimParams {
-                nx: fastsim_grid.0,
-                ny: fastsim_grid.1,
-                ..FastsimParams::default()
-            },
-            creep_table: creep_table.then(FastsimTableParams::default),
-            initial_lateral_offset,
         };
-        inner.validate().map_err(to_py_err)?;
+        let inner = settings.resolve(given, Path::new(".")).map_err(to_py_err)?;
         Ok(Self { inner })
     }
 

@@ -1,5 +1,5 @@
 //! Bindings of `loco_core::vehicle`: the parameter file, names of bodies and coordinates, runs,
-//! the bodies' motion maps and masses, the linearisation and the nonlinear critical speed.
+//! the mass matrix and modes' kinetic energy, the linearisation and the critical speeds.
 
 use crate::errors::{run_detached, run_detached_monitored};
 use crate::scenario::PyRunScenario;
@@ -7,12 +7,17 @@ use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
 use loco_core::vehicle::layout::N_DOF;
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
+use loco_core::vehicle::linearise::{
+    linear_critical_speed as core_linear_critical_speed, LinearSearch,
+};
+use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, MOTIONS};
 use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
+use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 use loco_core::vehicle::scenario::{linearised, simulate as core_simulate};
 use loco_core::vehicle::structure::VehicleStructure;
 use numpy::ndarray::{Array2, Array3};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::AtomicBool;
@@ -88,56 +93,114 @@ fn dof_names() -> Vec<String> {
     core_dof_names()
 }
 
+/// The run channels the metrics are computed from, by metric family: `A_yc` (carbody floor
+/// lateral, also W_y), `A_zc` (carbody floor vertical, W_z) and `A_yb` (bogie frame lateral).
+#[pyfunction]
+fn metric_channels() -> BTreeMap<&'static str, &'static str> {
+    BTreeMap::from([
+        ("A_yc", CARBODY_LATERAL),
+        ("A_zc", CARBODY_VERTICAL),
+        ("A_yb", BOGIE_LATERAL),
+    ])
+}
+
 /// Names of the 25 bodies.
 #[pyfunction]
 fn body_names() -> Vec<String> {
     core_body_names()
 }
 
-/// What `body_mass_maps` returns: body names, motion maps (n_bodies × 6 × 90) and mass
-/// diagonals (n_bodies × 6).
-type BodyMapsTuple<'py> = (
-    Vec<String>,
-    Bound<'py, PyArray3<f64>>,
-    Bound<'py, PyArray2<f64>>,
-);
-
-/// Each body's absolute motion as a map of the 90 coordinates, `u = T q` with u = (x, y, z in m,
-/// roll, pitch, yaw in rad) of its centre of gravity, and its mass diagonal (m, m, m in kg,
-/// Ixx, Iyy, Izz in kg·m², principal axes along the vehicle's). The model's mass matrix is
-/// `Σ Tᵀ diag(mass) T`; `loco.eigen` weighs modes with it (kinetic energy of each body).
+/// The 90 × 90 mass matrix `Σ Tᵀ diag(m, m, m, Ixx, Iyy, Izz) T` of the vehicle (kg, kg·m,
+/// kg·m²), in coordinate order.
 #[pyfunction]
 #[pyo3(signature = (toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()))]
-fn body_mass_maps<'py>(
+fn mass_matrix<'py>(
     py: Python<'py>,
     toml_text: Option<String>,
     origin: String,
     overrides: BTreeMap<String, f64>,
-) -> PyResult<BodyMapsTuple<'py>> {
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let structure = run_detached(py, move || {
         let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
         VehicleStructure::new(set)
     })?;
-    let n = structure.bodies.len();
-    let mut maps = Array3::<f64>::zeros((n, 6, N_DOF));
-    let mut masses = Array2::<f64>::zeros((n, 6));
-    let mut names = Vec::with_capacity(n);
-    for (b, body) in structure.bodies.iter().enumerate() {
-        names.push(body.name.clone());
-        for (k, row) in body.map.rows.iter().enumerate() {
-            for &(j, c) in row {
-                maps[[b, k, j]] = c;
+    let m = Array2::from_shape_fn((N_DOF, N_DOF), |(i, j)| structure.mass.get(i, j));
+    Ok(m.into_pyarray(py))
+}
+
+/// The six motions of a body (`longitudinal`, `lateral`, `vertical`, `roll`, `pitch`, `yaw`), in
+/// the order of `mode_energies`' last axis.
+#[pyfunction]
+fn body_motion_names() -> Vec<&'static str> {
+    MOTIONS.to_vec()
+}
+
+/// What `mode_energies` returns: body names, body kinds, energy shares (n_modes × n_bodies) and
+/// motion shares (n_modes × n_bodies × 6).
+type ModeEnergiesTuple<'py> = (
+    Vec<String>,
+    Vec<String>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray3<f64>>,
+);
+
+/// Kinetic-energy shares of complex mode shapes `real + i·imag` (n_modes × n, the first 90
+/// columns the coordinates): each body's share of each mode's energy and, per body, the share
+/// of its energy in each motion (see `loco.modes`). The vehicle is built once for all modes.
+#[pyfunction]
+#[pyo3(signature = (
+    real, imag, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()
+))]
+fn mode_energies<'py>(
+    py: Python<'py>,
+    real: PyReadonlyArray2<'py, f64>,
+    imag: PyReadonlyArray2<'py, f64>,
+    toml_text: Option<String>,
+    origin: String,
+    overrides: BTreeMap<String, f64>,
+) -> PyResult<ModeEnergiesTuple<'py>> {
+    let (real, imag) = (real.as_array(), imag.as_array());
+    if real.dim() != imag.dim() {
+        return Err(pyo3::exceptions::PyValueError::new_err(format!(
+            "real and imag must have the same shape, got {:?} and {:?}",
+            real.dim(),
+            imag.dim()
+        )));
+    }
+    let rows = |a: numpy::ndarray::ArrayView2<'_, f64>| -> Vec<Vec<f64>> {
+        a.rows().into_iter().map(|r| r.to_vec()).collect()
+    };
+    let (real, imag) = (rows(real), rows(imag));
+    let (structure, energies) = run_detached(py, move || {
+        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
+        let structure = VehicleStructure::new(set)?;
+        let shapes: Vec<(&[f64], &[f64])> = real
+            .iter()
+            .zip(&imag)
+            .map(|(r, i)| (r.as_slice(), i.as_slice()))
+            .collect();
+        let energies = core_mode_energies(&structure, &shapes)?;
+        Ok((structure, energies))
+    })?;
+    let n_bodies = structure.bodies.len();
+    let mut shares = Array2::<f64>::zeros((energies.len(), n_bodies));
+    let mut motions = Array3::<f64>::zeros((energies.len(), n_bodies, MOTIONS.len()));
+    for (m, e) in energies.iter().enumerate() {
+        for b in 0..n_bodies {
+            shares[[m, b]] = e.bodies[b];
+            for k in 0..MOTIONS.len() {
+                motions[[m, b, k]] = e.motions[b][k];
             }
         }
-        let [ixx, iyy, izz] = body.inertia;
-        for (k, m) in [body.mass, body.mass, body.mass, ixx, iyy, izz]
-            .into_iter()
-            .enumerate()
-        {
-            masses[[b, k]] = m;
-        }
     }
-    Ok((names, maps.into_pyarray(py), masses.into_pyarray(py)))
+    let names: Vec<String> = structure.bodies.iter().map(|b| b.name.clone()).collect();
+    let kinds = names.iter().map(|n| body_kind(n)).collect();
+    Ok((
+        names,
+        kinds,
+        shares.into_pyarray(py),
+        motions.into_pyarray(py),
+    ))
 }
 
 /// What `simulate` returns: time (s), channel names, channels (n_channels × n_samples, SI),
@@ -223,6 +286,40 @@ fn linearise<'py>(
     Ok(matrix.into_pyarray(py))
 }
 
+/// Linear critical speed (m/s) by bisection of the linearisation on perfect track (see
+/// `loco.critical_speed(..., method="linear")`): `inf` when stable at `high`, `low` when already
+/// unstable there. Each setting left as None takes the core's default.
+#[pyfunction]
+#[pyo3(signature = (
+    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
+    low=None, high=None, tolerance=None, band=None
+))]
+#[allow(clippy::too_many_arguments)]
+fn linear_critical_speed(
+    py: Python<'_>,
+    scenario: PyRef<'_, PyRunScenario>,
+    toml_text: Option<String>,
+    origin: String,
+    overrides: BTreeMap<String, f64>,
+    low: Option<f64>,
+    high: Option<f64>,
+    tolerance: Option<f64>,
+    band: Option<(f64, f64)>,
+) -> PyResult<f64> {
+    let scenario = scenario.inner.clone();
+    let default = LinearSearch::default();
+    let search = LinearSearch {
+        low: low.unwrap_or(default.low),
+        high: high.unwrap_or(default.high),
+        tolerance: tolerance.unwrap_or(default.tolerance),
+        band: band.unwrap_or(default.band),
+    };
+    run_detached(py, move || {
+        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
+        core_linear_critical_speed(set, &scenario, &search)
+    })
+}
+
 /// What `ramp_down` returns: critical speed (m/s), outcome (`"died_out"`, `"stable_at_start"`,
 /// `"hunts_at_end"`), and the speed (m/s) at the centre and the hunting amplitude (m) of each
 /// window.
@@ -234,12 +331,13 @@ type RampTuple<'py> = (
 );
 
 /// Nonlinear critical speed by a speed ramp-down from the scenario's speed on perfect track (see
-/// `loco.critical_speed(..., method="nonlinear")`); Ctrl-C stops it.
+/// `loco.critical_speed(..., method="nonlinear")`); Ctrl-C stops it. Each setting left as None
+/// takes the core's default (`RampSettings::default`).
 #[pyfunction]
 #[pyo3(signature = (
     scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
-    end_speed=20.0, deceleration=0.5, hold=3.0, max_hold=30.0, disturbance=8e-3, window=1.0,
-    threshold=5e-4
+    end_speed=None, deceleration=None, hold=None, max_hold=None, disturbance=None, window=None,
+    threshold=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn ramp_down<'py>(
@@ -248,23 +346,24 @@ fn ramp_down<'py>(
     toml_text: Option<String>,
     origin: String,
     overrides: BTreeMap<String, f64>,
-    end_speed: f64,
-    deceleration: f64,
-    hold: f64,
-    max_hold: f64,
-    disturbance: f64,
-    window: f64,
-    threshold: f64,
+    end_speed: Option<f64>,
+    deceleration: Option<f64>,
+    hold: Option<f64>,
+    max_hold: Option<f64>,
+    disturbance: Option<f64>,
+    window: Option<f64>,
+    threshold: Option<f64>,
 ) -> PyResult<RampTuple<'py>> {
     let scenario = scenario.inner.clone();
+    let default = RampSettings::default();
     let settings = RampSettings {
-        end_speed,
-        deceleration,
-        hold,
-        max_hold,
-        disturbance,
-        window,
-        threshold,
+        end_speed: end_speed.unwrap_or(default.end_speed),
+        deceleration: deceleration.unwrap_or(default.deceleration),
+        hold: hold.unwrap_or(default.hold),
+        max_hold: max_hold.unwrap_or(default.max_hold),
+        disturbance: disturbance.unwrap_or(default.disturbance),
+        window: window.unwrap_or(default.window),
+        threshold: threshold.unwrap_or(default.threshold),
     };
     let cancel = Arc::new(AtomicBool::new(false));
     let worker_cancel = Arc::clone(&cancel);
@@ -294,9 +393,13 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(dof_names, m)?)?;
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
-    m.add_function(wrap_pyfunction!(body_mass_maps, m)?)?;
+    m.add_function(wrap_pyfunction!(metric_channels, m)?)?;
+    m.add_function(wrap_pyfunction!(mass_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(body_motion_names, m)?)?;
+    m.add_function(wrap_pyfunction!(mode_energies, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(linearise, m)?)?;
+    m.add_function(wrap_pyfunction!(linear_critical_speed, m)?)?;
     m.add_function(wrap_pyfunction!(ramp_down, m)?)?;
     Ok(())
 }

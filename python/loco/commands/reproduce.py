@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import json
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -35,6 +34,7 @@ from loco.commands import damper_bench
 from loco.studies import fsd_comparison, parameter_stages, parameter_study, speed_sweep
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import StageRunner
+from loco.studies.surrogate import RBFNetwork
 
 NAME = "reproduce"
 HELP = "run the whole SPEC §6 study (every figure and table) and write a Markdown report"
@@ -213,12 +213,25 @@ def reproduce(
     def monte_carlo(d: Path) -> StudyRecord:
         return parameter_study.run_monte_carlo(setup, sizes.lhs_samples, seed, d)
 
+    # The Monte Carlo samples and the RBF surrogates fitted on them, loaded and fitted once on
+    # the first stage that needs them and shared by the surrogate, Sobol' and NSGA-II stages.
+    Fitted = tuple[parameter_study.FloatArray, parameter_study.FloatArray, list[RBFNetwork]]
+    fitted_models: list[Fitted] = []
+
+    def lhs_and_models() -> Fitted:
+        if not fitted_models:
+            x, y = parameter_study.load_monte_carlo(mc_csv)
+            fitted_models.append((x, y, parameter_study.fit_surrogates(x, y, seed=seed)))
+        return fitted_models[0]
+
     def surrogate(d: Path) -> StudyRecord:
-        x, y = parameter_study.load_monte_carlo(mc_csv)
-        return parameter_study.validate_surrogate(x, y, d, n_splits=sizes.kfold, seed=seed)
+        x, y, models = lhs_and_models()
+        return parameter_study.validate_surrogate(
+            x, y, d, n_splits=sizes.kfold, seed=seed, models=models
+        )
 
     def sensitivity(d: Path) -> StudyRecord:
-        x, y = parameter_study.load_monte_carlo(mc_csv)
+        x, y, models = lhs_and_models()
         return parameter_stages.run_sensitivity(
             setup,
             x,
@@ -227,10 +240,11 @@ def reproduce(
             convergence_bases=sizes.convergence_bases,
             surrogate_base=sizes.surrogate_base,
             seed=seed,
+            models=models,
         )
 
     def optimisation(d: Path) -> StudyRecord:
-        x, y = parameter_study.load_monte_carlo(mc_csv)
+        x, y, models = lhs_and_models()
         return parameter_stages.run_optimisation(
             setup,
             x,
@@ -240,6 +254,7 @@ def reproduce(
             n_gen=sizes.n_gen,
             n_verify=sizes.n_verify,
             seed=seed,
+            models=models,
         )
 
     def fsd(d: Path) -> StudyRecord:
@@ -271,7 +286,11 @@ def reproduce(
             },
             optimisation,
         ),
-        ("damper_bench", {"version": loco.__version__}, _damper_bench),
+        (
+            "damper_bench",
+            {"version": loco.__version__, "amplitude_m": damper_bench.AMPLITUDE},
+            damper_bench.bench_study,
+        ),
         ("fsd_comparison", {**common, "lead_in_m": fsd_comparison.LEAD_IN}, fsd),
     ]
     records = []
@@ -305,28 +324,6 @@ PREAMBLE = (
     "bogie frame lateral acceleration (metric `ayb_peak_lp`, m/s²), A_yc the carbody floor "
     "lateral acceleration. Run times are those of the run that produced each stage."
 )
-
-
-def _damper_bench(out_dir: Path) -> StudyRecord:
-    """``loco damper-bench`` with its default amplitude, into ``out_dir``."""
-    parser = argparse.ArgumentParser()
-    damper_bench.add_arguments(parser)
-    args = parser.parse_args(["--out", str(out_dir)])
-    damper_bench.run(args)
-    params = json.loads((out_dir / "damper_bench_parameters.json").read_text())
-    return StudyRecord(
-        name=out_dir.name,
-        title="Yaw damper bench: YD1, YD2 and FSD at 1 and 4 Hz (SPEC §6.5)",
-        figures=[out_dir / "damper_bench.png"],
-        tables=[
-            out_dir / "damper_bench_summary.csv",
-            out_dir / "damper_bench_loops.csv",
-            out_dir / "damper_bench_parameters.json",
-        ],
-        parameters={k: v for k, v in params.items() if k != "dampers"},
-        notes="Force-velocity curves (top) and hysteresis loops (bottom) over the last "
-        f"{params['loop_cycles']} of {params['cycles']} cycles of sine excitation.",
-    )
 
 
 def _command_line(args: argparse.Namespace) -> str:

@@ -10,13 +10,14 @@ asked for, NaN where a sample failed. The simulator is one evaluator
 
 from __future__ import annotations
 
-import importlib
 import warnings
 from collections.abc import Sequence
 from typing import Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
+
+from loco.batch import run_batch
 
 __all__ = [
     "Evaluator",
@@ -70,7 +71,8 @@ def simulator_evaluator(
         at its speed and length.
     metrics : str or sequence of str
         Names of the metric columns to return, in this order (``result.metric_names``), e.g.
-        ``"wy_max"`` (Sperling W_y) for S_low or ``"ayb_peak_lp"`` (A_yb, m/s²) for S_high.
+        ``"wy_max"`` (Sperling W_y) for S_low or ``"ayb_peak_lp"`` (A_yb, m/s²) for S_high; an
+        unknown name raises :class:`loco.ParameterError` listing the available ones.
     vehicle, threads, seed, progress
         Passed unchanged to ``loco.run_batch``. With the same ``seed`` the batch is
         bit-identical for any thread count (issue 6), so a study is reproducible.
@@ -81,17 +83,10 @@ def simulator_evaluator(
         ``evaluate(params, names)`` returning the (n, len(metrics)) metrics; failed samples
         (``status != 0``) are NaN and counted in a :class:`RuntimeWarning` with the first
         failure messages.
-
-    Notes
-    -----
-    ``loco.run_batch`` is imported when the evaluator is called, so :mod:`loco.studies` can be
-    imported before the batch engine exists.
     """
     wanted = [metrics] if isinstance(metrics, str) else list(metrics)
 
     def evaluate(params: FloatArray, names: Sequence[str]) -> FloatArray:
-        # Looked up at call time: the batch engine (issue 6) may be merged after this module.
-        run_batch = importlib.import_module("loco").run_batch
         result = run_batch(
             params,
             list(names),
@@ -101,12 +96,7 @@ def simulator_evaluator(
             seed=seed,
             progress=progress,
         )
-        available = list(result.metric_names)
-        missing = [m for m in wanted if m not in available]
-        if missing:
-            raise KeyError(f"run_batch has no metric {missing}; it has {available}")
-        values = np.asarray(result.metrics, dtype=np.float64)
-        out = values[:, [available.index(m) for m in wanted]].copy()
+        out = np.column_stack([result.metric(m) for m in wanted]).astype(np.float64)
         failed = np.asarray(result.status) != 0
         out[failed] = np.nan
         if failed.any():

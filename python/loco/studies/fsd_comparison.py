@@ -5,8 +5,9 @@ Six runs of :func:`loco.simulate` (in parallel threads: the simulator releases t
 the same synthesised track. Outputs: the time histories and Welch PSDs of the carbody floor
 lateral acceleration A_yc on S_low (low-conicity carbody sway) and of the bogie frame lateral
 acceleration A_yb on S_high (high-conicity bogie hunting), the dominant frequency and PSD peak of
-each (:func:`loco.metrics.dominant_frequency`), and the state of the FSD frequency valves over
-time (channels ``*_valve``: 0 open, low damping c1; 1 closed, high damping c2).
+each (the core's run metrics, :data:`loco.studies.speed_sweep.PEAK_METRICS`), and the state of
+the FSD frequency valves over time (channels ``*_valve``: 0 open, low damping c1; 1 closed,
+high damping c2).
 """
 
 from __future__ import annotations
@@ -24,8 +25,9 @@ import pandas as pd
 
 import loco
 from loco import dampers
+from loco.studies.plotting import Spectrum, draw_spectra, pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
-from loco.studies.speed_sweep import A_YB, A_YC, Spectrum, draw_spectra, spectrum
+from loco.studies.speed_sweep import A_YB, A_YC, RMS_METRICS, spectrum
 
 __all__ = [
     "CASES",
@@ -39,7 +41,7 @@ __all__ = [
 ]
 
 #: The yaw dampers compared (SPEC §4).
-DAMPERS: dict[str, dampers.Damper] = {"YD1": dampers.YD1, "YD2": dampers.YD2, "FSD": dampers.FSD}
+DAMPERS: dict[str, dampers.Damper] = dict(dampers.PRESETS)
 #: (scenario, quantity label, channel): A_yc judges S_low, A_yb judges S_high.
 CASES: tuple[tuple[str, str, str], ...] = (("S_low", *A_YC), ("S_high", *A_YB))
 SCENARIO_QUANTITY: dict[str, str] = {s: q for s, q, _ in CASES}
@@ -52,32 +54,43 @@ class FsdComparison:
     """Runs keyed by (scenario, damper name); a failed run is None with its message in
     ``errors``."""
 
-    dampers: tuple[str, ...]
+    damper_laws: dict[str, dampers.Damper]
+    """The yaw damper laws compared, by name (in order)."""
     results: dict[tuple[str, str], loco.SimulationResult | None]
     errors: dict[tuple[str, str], str]
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
+    _spectra: dict[tuple[str, str], Spectrum] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+
+    @property
+    def dampers(self) -> tuple[str, ...]:
+        """Names of the yaw dampers compared, in order."""
+        return tuple(self.damper_laws)
 
     def has_valve(self, damper: str) -> bool:
         """Whether the yaw damper law ``damper`` has a frequency valve (an FSD)."""
-        return bool(self.settings.get("dampers", {}).get(damper, {}).get("kind") == "fsd")
+        law = self.damper_laws.get(damper)
+        return law is not None and law.kind == "fsd"
 
     def spectra(self) -> dict[tuple[str, str], Spectrum]:
         """Spectrum of each case's quantity (A_yc on S_low, A_yb on S_high), by (scenario,
-        damper)."""
-        out = {}
-        for scenario, _, channel in CASES:
-            for name in self.dampers:
-                result = self.results.get((scenario, name))
-                if result is not None:
-                    out[(scenario, name)] = spectrum(result.channel(channel), result.sampling_rate)
-        return out
+        damper): the PSD curve by :func:`loco.metrics.psd`, its peak from the run's metrics.
+        Computed once, on the first call."""
+        if not self._spectra:
+            for scenario, label, _ in CASES:
+                for name in self.dampers:
+                    result = self.results.get((scenario, name))
+                    if result is not None:
+                        self._spectra[(scenario, name)] = spectrum(result, label)
+        return self._spectra
 
     def table(self) -> pd.DataFrame:
         """One row per (scenario, damper): the quantity, its rms (m/s²), dominant frequency (Hz),
-        PSD peak ((m/s²)²/Hz), W_y and A_yb peak of the run, the fraction of time the yaw damper
-        valves were closed (FSD only, NaN for dampers without a valve), and the error message of
-        a failed run."""
+        PSD peak ((m/s²)²/Hz) (all three the core's run metrics), W_y and A_yb peak of the run,
+        the fraction of time the yaw damper valves were closed (FSD only, NaN for dampers without
+        a valve), and the error message of a failed run."""
         spectra = self.spectra()
         rows = []
         for scenario, label, channel in CASES:
@@ -97,7 +110,7 @@ class FsdComparison:
                 valves = [result.channel(c) for c in valve_channels(result)]
                 valves = valves if self.has_valve(name) else []
                 row.update(
-                    rms=float(np.sqrt(np.mean(result.channel(channel) ** 2))),
+                    rms=result.metrics[RMS_METRICS[label]],
                     dominant_hz=sp.dominant_hz,
                     psd_peak=sp.peak,
                     wy_max=result.metrics["wy_max"],
@@ -181,11 +194,11 @@ def run_fsd_comparison(
         "lead_in_m": lead_in,
         "track_seed": seed,
         "cases": [list(c) for c in CASES],
-        "dampers": {n: {"kind": d.kind, **d.parameters()} for n, d in damper_set.items()},
+        "dampers": {n: dampers.describe(d) for n, d in damper_set.items()},
         "vehicle_overrides": dict(vehicle.overrides),
     }
     return FsdComparison(
-        dampers=tuple(damper_set),
+        damper_laws=dict(damper_set),
         results={k: r for k, (r, _) in zip(keys, outcomes, strict=True)},
         errors={k: m for k, (_, m) in zip(keys, outcomes, strict=True) if m},
         settings=settings,
@@ -193,18 +206,9 @@ def run_fsd_comparison(
     )
 
 
-def _pyplot() -> Any:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def plot_time_histories(cmp: FsdComparison, path: str | Path) -> Path:
     """Save A_yc (S_low) and A_yb (S_high) against time, one panel per damper, as PNG."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, axes = plt.subplots(
         len(CASES),
         len(cmp.dampers),
@@ -229,31 +233,25 @@ def plot_time_histories(cmp: FsdComparison, path: str | Path) -> Path:
             if r == len(CASES) - 1:
                 ax.set_xlabel("time (s)")
     fig.suptitle(f"{cmp.settings.get('speed_kmh', 0.0):g} km/h (loco {loco.__version__})")
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, path)
 
 
 def plot_psds(cmp: FsdComparison, path: str | Path, *, fmax: float = 20.0) -> Path:
     """Save the PSDs of A_yc (S_low) and A_yb (S_high), dampers overlaid, as PNG (0 to ``fmax``
     Hz)."""
-    plt = _pyplot()
+    plt = pyplot()
     spectra = cmp.spectra()
     fig, axes = plt.subplots(1, len(CASES), figsize=(11, 4), layout="constrained")
     for ax, (scenario, label, channel) in zip(axes, CASES, strict=True):
         lines = {name: spectra.get((scenario, name)) for name in cmp.dampers}
         draw_spectra(ax, lines, label, f"{label} ({channel}), {scenario}", fmax)
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, path)
 
 
 def plot_valves(cmp: FsdComparison, path: str | Path, *, damper: str = "FSD") -> Path:
     """Save the valve state (0 open … 1 closed) of every yaw damper of the ``damper`` runs on
     each scenario against time, one row per yaw damper, as PNG."""
-    plt = _pyplot()
+    plt = pyplot()
     runs = [(s, cmp.results.get((s, damper))) for s, _, _ in CASES]
     names = next((valve_channels(r) for _, r in runs if r is not None), [])
     fig, axes = plt.subplots(
@@ -274,10 +272,7 @@ def plot_valves(cmp: FsdComparison, path: str | Path, *, damper: str = "FSD") ->
             ax.set_title(f"{scenario}: {channel.removesuffix(VALVE_SUFFIX)}", fontsize=9)
         axes[-1, c].set_xlabel("time (s)")
     fig.suptitle(f"{damper} frequency valve state (0 open: low damping; 1 closed: high damping)")
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, path)
 
 
 def _histories_frame(cmp: FsdComparison) -> pd.DataFrame:
@@ -313,9 +308,10 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         plot_valves(cmp, out / "fsd_valve.png"),
     ]
     summary = cmp.table()
+    spectra = cmp.spectra()
     psd = [
         pd.DataFrame({"scenario": s, "damper": d, "frequency_hz": sp.frequency, "psd": sp.density})
-        for (s, d), sp in cmp.spectra().items()
+        for (s, d), sp in spectra.items()
     ]
     tables = [
         save_table(summary, out / "fsd_summary.csv"),
@@ -329,7 +325,7 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     notes = f"Recorded after {lead_in:g} m of lead-in (start transients settled). " + "; ".join(
         f"{s} {d}: {SCENARIO_QUANTITY[s]} dominant {sp.dominant_hz:.2f} Hz, "
         f"PSD peak {sp.peak:.3g} (m/s²)²/Hz"
-        for (s, d), sp in cmp.spectra().items()
+        for (s, d), sp in spectra.items()
     )
     if cmp.errors:
         notes += ". Failed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())

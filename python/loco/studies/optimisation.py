@@ -25,6 +25,7 @@ from tqdm.auto import tqdm
 from loco.studies.evaluators import Evaluator, evaluate_checked
 from loco.studies.parameters import STUDY_PARAMETERS, StudyParameter, bounds_si, names
 from loco.studies.parameters import to_study_units as _to_units
+from loco.studies.plotting import pyplot, save_figure
 
 __all__ = [
     "ParetoResult",
@@ -190,15 +191,10 @@ def verify_points(
 def plot_pareto(result: ParetoResult, path: str | Path, *, title: str = "", bins: int = 20) -> None:
     """Save the front (first two objectives) and one histogram per parameter along it, over the
     parameter's full range in the study's units, as PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     k = len(result.parameters)
     ncols = 3
     nrows = int(np.ceil(k / ncols))
-    fig = plt.figure(figsize=(4.2 + 2.6 * ncols, max(3.2, 2.2 * nrows)), layout="constrained")
+    fig = pyplot().figure(figsize=(4.2 + 2.6 * ncols, max(3.2, 2.2 * nrows)), layout="constrained")
     grid = fig.add_gridspec(nrows, ncols + 2)
     front = fig.add_subplot(grid[:, :2])
     front.scatter(result.f[:, 0], result.f[:, 1], s=8, c=result.f[:, 0], cmap="viridis")
@@ -213,5 +209,4 @@ def plot_pareto(result: ParetoResult, path: str | Path, *, title: str = "", bins
         ax.tick_params(labelsize=7)
     if title:
         fig.suptitle(title)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save_figure(fig, path)

@@ -12,7 +12,6 @@ simulator and on the RBF surrogates trained from the Latin hypercube Monte Carlo
 
 from __future__ import annotations
 
-import time
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -21,7 +20,6 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
-from loco.studies.evaluators import Evaluator
 from loco.studies.optimisation import ParetoResult, nsga2, pick_spread, plot_pareto, verify_points
 from loco.studies.parameter_study import (
     LOG_TARGET,
@@ -33,33 +31,20 @@ from loco.studies.parameter_study import (
     surrogate_objectives,
 )
 from loco.studies.parameters import names
+from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sensitivity import (
     SobolIndices,
-    analyse_saltelli,
     plot_convergence,
     plot_indices,
     sobol_convergence,
     sobol_direct,
 )
+from loco.studies.surrogate import RBFNetwork
 
 __all__ = ["run_optimisation", "run_sensitivity"]
 
 FloatArray = npt.NDArray[np.float64]
-
-
-class _Recorder:
-    """An evaluator that keeps the last inputs and outputs of the evaluator it wraps."""
-
-    def __init__(self, evaluate: Evaluator) -> None:
-        self.evaluate = evaluate
-        self.x: FloatArray = np.empty((0, 0))
-        self.y: FloatArray = np.empty((0, 0))
-
-    def __call__(self, params: FloatArray, names: Sequence[str], /) -> FloatArray:
-        self.x = np.asarray(params, dtype=np.float64)
-        self.y = np.asarray(self.evaluate(params, names), dtype=np.float64)
-        return self.y
 
 
 def _st_summary(indices: Sequence[SobolIndices]) -> str:
@@ -80,6 +65,7 @@ def run_sensitivity(
     surrogate_base: int = 4096,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
+    models: Sequence[RBFNetwork] | None = None,
 ) -> StudyRecord:
     """Sobol' indices of both objectives, direct (simulator) and on the surrogates.
 
@@ -100,23 +86,28 @@ def run_sensitivity(
         Seed of the Saltelli designs, the bootstrap intervals and the networks' K-means.
     log_target : bool
         The surrogates learn log(objective) (:data:`loco.studies.parameter_study.LOG_TARGET`).
+    models : sequence of RBFNetwork, optional
+        The surrogates already fitted on ``(x_lhs, y_lhs)`` by
+        :func:`~loco.studies.parameter_study.fit_surrogates` with ``log_target`` and ``seed``
+        (default: fitted here).
 
     Writes ``sobol_<label>.png`` (S1 and ST, direct and surrogate side by side),
     ``sobol_convergence.png``, ``sobol_summary.csv`` (one row per parameter), ``sobol_indices.csv``
     (with confidence half-widths), ``sobol_convergence.csv``,
     ``saltelli_samples.csv`` (the simulated design and its outputs) and ``sensitivity.json``.
     """
-    start = time.perf_counter()
-    recorder = _Recorder(setup.evaluator())
     convergence = sobol_convergence(
-        recorder, labels(), n_bases=convergence_bases, seed=seed, progress=setup.progress
+        setup.evaluator(),
+        labels(),
+        n_bases=convergence_bases,
+        seed=seed,
+        progress=setup.progress,
+        keep_design=True,
     )
     n_direct = max(convergence_bases)
-    direct = [
-        analyse_saltelli(recorder.y[:, j], metric=o.label, seed=seed)
-        for j, o in enumerate(OBJECTIVES)
-    ]
-    models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
+    direct = convergence.indices
+    if models is None:
+        models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
     surrogate = sobol_direct(
         surrogate_objectives(models, log_target=log_target),
         labels(),
@@ -133,7 +124,7 @@ def run_sensitivity(
         )
         figures.append(path)
     plot_convergence(
-        convergence,
+        convergence.frame,
         out_dir / "sobol_convergence.png",
         title="Direct Sobol' indices against Saltelli base samples",
     )
@@ -147,9 +138,9 @@ def run_sensitivity(
         index="parameter", columns=["metric", "index", "method"], values="value", sort=False
     )
     summary.columns = [" ".join(c) for c in summary.columns]
-    design = pd.DataFrame(recorder.x, columns=names())
+    design = pd.DataFrame(convergence.x, columns=names())
     for j, label in enumerate(labels()):
-        design[label] = recorder.y[:, j]
+        design[label] = convergence.y[:, j]
     dropped = {d.metric: d.n_dropped for d in direct}
     settings = {
         "loco_version": loco.__version__,
@@ -166,32 +157,25 @@ def run_sensitivity(
         f"On the surrogate: {_st_summary(surrogate)}. "
         f"Saltelli base samples dropped for failed runs: {dropped}."
     )
-    record = StudyRecord(
+    return StudyRecord(
         name=out_dir.name,
         title="Global sensitivity: Sobol' indices, direct and on the surrogate (SPEC §6.2)",
         figures=figures,
         tables=[
             save_table(summary.reset_index(), out_dir / "sobol_summary.csv"),
             save_table(indices, out_dir / "sobol_indices.csv"),
-            save_table(convergence, out_dir / "sobol_convergence.csv"),
+            save_table(convergence.frame, out_dir / "sobol_convergence.csv"),
             save_table(design, out_dir / "saltelli_samples.csv"),
             save_json(settings, out_dir / "sensitivity.json"),
         ],
         parameters=settings,
         notes=notes,
     )
-    record.seconds = time.perf_counter() - start
-    return record
 
 
 def _plot_verification(result: ParetoResult, check: pd.DataFrame, path: Path) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     a, b = result.objectives
-    fig, ax = plt.subplots(figsize=(6, 4.5), layout="constrained")
+    fig, ax = pyplot().subplots(figsize=(6, 4.5), layout="constrained")
     ax.scatter(result.f[:, 0], result.f[:, 1], s=6, color="0.7", label="Pareto front (surrogate)")
     ax.scatter(
         check[f"{a}_surrogate"],
@@ -223,9 +207,7 @@ def _plot_verification(result: ParetoResult, check: pd.DataFrame, path: Path) ->
     )
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def run_optimisation(
@@ -239,15 +221,18 @@ def run_optimisation(
     n_verify: int = 10,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
+    models: Sequence[RBFNetwork] | None = None,
 ) -> StudyRecord:
     """NSGA-II on the RBF surrogates of W_y and A_yb, then ``n_verify`` Pareto points spread along
-    the front re-simulated (``setup``) to measure the surrogate's error.
+    the front re-simulated (``setup``) to measure the surrogate's error. ``models`` are the
+    surrogates already fitted on ``(x_lhs, y_lhs)`` (as in :func:`run_sensitivity`; default:
+    fitted here).
 
     Writes ``pareto.png`` (front and parameter distributions), ``pareto_verification.png``,
     ``pareto_front.csv``, ``pareto_verification.csv`` and ``optimisation.json``.
     """
-    start = time.perf_counter()
-    models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
+    if models is None:
+        models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
     result = nsga2(
         surrogate_objectives(models, log_target=log_target),
         labels(),
@@ -293,7 +278,7 @@ def run_optimisation(
         )
         + "."
     )
-    record = StudyRecord(
+    return StudyRecord(
         name=out_dir.name,
         title="Multi-objective optimisation: NSGA-II on the surrogate (SPEC §6.4)",
         figures=[
@@ -308,5 +293,3 @@ def run_optimisation(
         parameters=settings,
         notes=notes,
     )
-    record.seconds = time.perf_counter() - start
-    return record

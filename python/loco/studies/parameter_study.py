@@ -17,7 +17,6 @@ objectives (:data:`LOG_TARGET`). Sobol' indices and NSGA-II on top of these are 
 
 from __future__ import annotations
 
-import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -31,6 +30,7 @@ from sklearn.model_selection import KFold
 import loco
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study_units
+from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sampling import latin_hypercube
 from loco.studies.surrogate import (
@@ -167,14 +167,9 @@ def load_monte_carlo(path: str | Path) -> tuple[FloatArray, FloatArray]:
 
 
 def _plot_scatter(x: FloatArray, y: FloatArray, path: Path) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     units = to_study_units(x)
     k = len(STUDY_PARAMETERS)
-    fig, axes = plt.subplots(
+    fig, axes = pyplot().subplots(
         len(OBJECTIVES),
         k,
         figsize=(2.3 * k, 2.4 * len(OBJECTIVES) + 0.6),
@@ -192,9 +187,7 @@ def _plot_scatter(x: FloatArray, y: FloatArray, path: Path) -> Path:
             ax.grid(True, alpha=0.3)
         axes[i, 0].set_ylabel(axis_label(objective), fontsize=8)
     fig.suptitle(f"Latin hypercube Monte Carlo, {len(x)} samples (loco {loco.__version__})")
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path) -> StudyRecord:
@@ -202,7 +195,6 @@ def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path)
     simulated. Writes ``monte_carlo.csv`` (samples in SI and the study's units, objectives),
     ``monte_carlo_summary.csv``, ``monte_carlo.png`` (objectives against each parameter) and
     ``monte_carlo.json``."""
-    start = time.perf_counter()
     x = latin_hypercube(n_samples, seed=seed)
     y = setup.evaluator()(x, names())
     frame = _samples_frame(x, y)
@@ -214,7 +206,7 @@ def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path)
         "lhs_seed": seed,
         **setup.settings(),
     }
-    record = StudyRecord(
+    return StudyRecord(
         name=out_dir.name,
         title="Monte Carlo: Latin hypercube over the six parameters (SPEC §6.2)",
         figures=[_plot_scatter(x, y, out_dir / "monte_carlo.png")],
@@ -227,8 +219,6 @@ def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path)
         notes=f"{n_samples} samples; failed runs per objective: "
         + ", ".join(f"{r.objective} {r.n_failed}" for r in summary.itertuples()),
     )
-    record.seconds = time.perf_counter() - start
-    return record
 
 
 def fit_surrogates(
@@ -279,6 +269,7 @@ def validate_surrogate(
     n_centres: int = 10,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
+    models: Sequence[RBFNetwork] | None = None,
 ) -> StudyRecord:
     """k-fold held-out R² of the RBF network (SPEC §6.3) for each objective, with parity plots
     of the held-out predictions. Failed samples (NaN) are left out of that objective's folds.
@@ -288,9 +279,13 @@ def validate_surrogate(
 
     Writes ``surrogate_r2.csv`` (R² per fold), ``surrogate_predictions.csv`` (held-out
     prediction of every sample), ``parity_<label>.png`` and ``surrogate.json`` (settings, the mean
-    R² and the width factor the network fitted on all samples chose).
+    R² and the width factor the network fitted on all samples chose). ``models`` are those
+    networks, one per objective, if already fitted by :func:`fit_surrogates` with the same
+    ``log_target``, ``n_centres`` and ``seed`` (default: fitted here); pass them on to the
+    Sobol' and NSGA-II stages, which use the same networks.
     """
-    start = time.perf_counter()
+    if models is None:
+        models = fit_surrogates(x, y, log_target=log_target, n_centres=n_centres, seed=seed)
     folds, predictions, figures, summary = [], [], [], {}
     for j, objective in enumerate(OBJECTIVES):
         ok = np.isfinite(y[:, j])
@@ -329,9 +324,6 @@ def validate_surrogate(
                 f"{n_splits}-fold held out",
             )
         )
-        model = fit_surrogates(
-            x[ok], y[ok, j : j + 1], log_target=log_target, n_centres=n_centres, seed=seed
-        )
         gp_r2, gp_noise = gaussian_process_r2(
             x[ok],
             _to_target(y[ok, j], log_target),
@@ -346,7 +338,7 @@ def validate_surrogate(
             "reference_gp_r2": gp_r2,
             "reference_gp_noise_share": gp_noise,
             "n_samples": int(ok.sum()),
-            "width_factor": model[0].width_factor_,
+            "width_factor": models[j].width_factor_,
         }
     settings = {
         "loco_version": loco.__version__,
@@ -357,7 +349,7 @@ def validate_surrogate(
         "log_target": log_target,
         "r2": summary,
     }
-    record = StudyRecord(
+    return StudyRecord(
         name=out_dir.name,
         title="RBF surrogate: held-out R² by k-fold cross-validation (SPEC §6.3)",
         figures=figures,
@@ -382,5 +374,3 @@ def validate_surrogate(
         )
         + ": where it is much higher, 10 Gaussian units are too few for these responses.",
     )
-    record.seconds = time.perf_counter() - start
-    return record

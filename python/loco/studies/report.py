@@ -158,7 +158,7 @@ def _section(record: StudyRecord, root: Path) -> list[str]:
         lines.append(f"Data: [{table.name}]({rel})")
         lines.append("")
         if table.suffix == ".csv" and table.exists():
-            frame = pd.read_csv(table, comment="#")
+            frame = pd.read_csv(table)
             if len(frame) > MAX_SHOWN_TABLE_ROWS or len(frame.columns) > MAX_SHOWN_TABLE_COLUMNS:
                 lines += [f"({len(frame)} rows × {len(frame.columns)} columns, not shown.)", ""]
                 continue
@@ -184,7 +184,7 @@ def write_report(
     section with its settings, figures (embedded with links relative to the report) and tables
     (linked; a CSV of at most :data:`MAX_SHOWN_TABLE_ROWS` rows and
     :data:`MAX_SHOWN_TABLE_COLUMNS` columns is also shown inline, up to
-    :data:`MAX_INLINE_ROWS` of them; ``#`` lines of a CSV are comments).
+    :data:`MAX_INLINE_ROWS` of them).
     """
     from loco import __version__
 

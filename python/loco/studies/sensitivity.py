@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Literal, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -35,10 +36,12 @@ from loco.studies.parameters import (
     names,
     salib_problem,
 )
+from loco.studies.plotting import pyplot, save_figure
 from loco.studies.sampling import saltelli, saltelli_block_size
 from loco.studies.surrogate import RBFNetwork, fit_per_output, surrogate_evaluator
 
 __all__ = [
+    "SobolConvergence",
     "SobolIndices",
     "analyse_saltelli",
     "plot_convergence",
@@ -191,6 +194,47 @@ def sobol_on_surrogate(
     return sobol_direct(evaluate, metrics, parameters, n_base=n_base, seed=seed), models
 
 
+@dataclass(frozen=True)
+class SobolConvergence:
+    """What :func:`sobol_convergence` computed with ``keep_design=True``.
+
+    ``frame``: the tidy table of the indices at every N; ``x`` (n, k) the Saltelli design of the
+    largest N (SI) and ``y`` (n, m) its outputs (NaN for failed samples); ``indices`` the
+    :class:`SobolIndices` of each metric at the largest N (the rows of ``frame`` at that N).
+    """
+
+    frame: pd.DataFrame
+    x: FloatArray
+    y: FloatArray
+    indices: list[SobolIndices]
+
+
+@overload
+def sobol_convergence(
+    evaluate: Evaluator,
+    metrics: Sequence[str],
+    parameters: Sequence[StudyParameter] = ...,
+    *,
+    n_bases: Sequence[int] = ...,
+    seed: int = ...,
+    progress: bool = ...,
+    keep_design: Literal[False] = ...,
+) -> pd.DataFrame: ...
+
+
+@overload
+def sobol_convergence(
+    evaluate: Evaluator,
+    metrics: Sequence[str],
+    parameters: Sequence[StudyParameter] = ...,
+    *,
+    n_bases: Sequence[int] = ...,
+    seed: int = ...,
+    progress: bool = ...,
+    keep_design: Literal[True],
+) -> SobolConvergence: ...
+
+
 def sobol_convergence(
     evaluate: Evaluator,
     metrics: Sequence[str],
@@ -199,36 +243,42 @@ def sobol_convergence(
     n_bases: Sequence[int] = (16, 32, 64, 128, 256),
     seed: int = 0,
     progress: bool = True,
-) -> pd.DataFrame:
+    keep_design: bool = False,
+) -> pd.DataFrame | SobolConvergence:
     """Sobol' indices against the number of base samples, as a tidy DataFrame.
 
     One design of ``max(n_bases)`` is evaluated once; the indices at each smaller N are computed
     from its first N blocks, which are exactly the design of N (a Sobol' prefix), so the study
     costs ``max(n_bases) · (k + 2)`` evaluations. Columns: metric, parameter, index (S1/ST),
     value, conf, n_base (complete base samples used), n_evaluations.
+
+    With ``keep_design`` the answer is a :class:`SobolConvergence`: the table, the evaluated
+    design and outputs, and the indices at the largest N (the direct indices, not analysed
+    again).
     """
     sizes = sorted(set(n_bases))
     x = saltelli(sizes[-1], parameters, seed)
     y = evaluate_checked(evaluate, x, names(parameters), len(metrics))
     block = saltelli_block_size(len(parameters))
     frames = []
+    indices: list[SobolIndices] = []
     for n in tqdm(sizes, desc="Sobol convergence", disable=not progress):
-        for j, m in enumerate(metrics):
-            ind = analyse_saltelli(y[: n * block, j], parameters, metric=m, seed=seed)
-            frames.append(ind.to_frame())
-    return pd.concat(frames, ignore_index=True)
+        indices = [
+            analyse_saltelli(y[: n * block, j], parameters, metric=m, seed=seed)
+            for j, m in enumerate(metrics)
+        ]
+        frames += [ind.to_frame() for ind in indices]
+    frame = pd.concat(frames, ignore_index=True)
+    if keep_design:
+        return SobolConvergence(frame=frame, x=x, y=y, indices=indices)
+    return frame
 
 
 def plot_convergence(frame: pd.DataFrame, path: str | Path, *, title: str = "") -> None:
     """Save the indices of :func:`sobol_convergence` against base samples (one panel per metric
     and order, error bars = confidence half-widths) as PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     metrics = list(dict.fromkeys(frame["metric"]))
-    fig, axes = plt.subplots(
+    fig, axes = pyplot().subplots(
         len(metrics), 2, figsize=(9, 3.2 * len(metrics)), squeeze=False, layout="constrained"
     )
     for r, metric in enumerate(metrics):
@@ -244,8 +294,7 @@ def plot_convergence(frame: pd.DataFrame, path: str | Path, *, title: str = "") 
     axes[0, 1].legend(fontsize=7, ncol=2)
     if title:
         fig.suptitle(title)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def plot_indices(
@@ -253,15 +302,10 @@ def plot_indices(
 ) -> None:
     """Save bar charts of S1 and ST with confidence intervals, several estimates side by side
     (``(label, indices)`` pairs, e.g. direct and surrogate) for one metric, as PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     params = results[0][1].parameters
     width = 0.8 / len(results)
     pos = np.arange(len(params))
-    fig, axes = plt.subplots(1, 2, figsize=(10, 3.6), layout="constrained")
+    fig, axes = pyplot().subplots(1, 2, figsize=(10, 3.6), layout="constrained")
     for ax, order in zip(axes, ("S1", "ST"), strict=True):
         for i, (label, ind) in enumerate(results):
             value = ind.S1 if order == "S1" else ind.ST
@@ -274,5 +318,4 @@ def plot_indices(
     axes[1].legend()
     if title:
         fig.suptitle(title)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save_figure(fig, path)

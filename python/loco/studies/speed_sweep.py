@@ -9,15 +9,17 @@ Quantities (names of the package's channels and metrics):
 
 - W_y: Sperling lateral ride index, metric ``wy_max`` (largest 5 s segment index);
 - A_yb: bogie frame lateral acceleration above the leading wheelset, 10 Hz low-passed peak,
-  metric ``ayb_peak_lp`` (m/s²), channel ``frame1_ay_wheelset1``;
+  metric ``ayb_peak_lp`` (m/s²), channel ``METRIC_CHANNELS["A_yb"]``;
 - A_yc: carbody floor lateral acceleration above the leading bogie, channel
-  ``carbody_floor_ay_front`` (m/s²).
+  ``METRIC_CHANNELS["A_yc"]`` (m/s²).
+
+The channels are those the core computes the metrics from (``loco._loco.metric_channels()``).
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -27,28 +29,39 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
-from loco import dampers, metrics
+from loco import _loco, dampers, metrics
+from loco.studies.plotting import Spectrum, draw_spectra, pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 
 __all__ = [
     "A_YB",
     "A_YC",
+    "CHANNELS",
+    "METRIC_CHANNELS",
+    "PEAK_METRICS",
+    "RMS_METRICS",
     "SCENARIOS",
     "SpeedSweep",
     "plot_psds",
     "plot_sweep",
     "run_speed_sweep",
     "save_speed_sweep",
+    "spectrum",
 ]
 
 FloatArray = npt.NDArray[np.float64]
 
 #: The three wheel states of SPEC §2.
 SCENARIOS: tuple[str, ...] = ("S_low", "S_norm", "S_high")
+#: Channel of each quantity whose metrics the core computes (``A_yc``, ``A_zc``, ``A_yb``), as the
+#: core names it.
+METRIC_CHANNELS: dict[str, str] = dict(_loco.metric_channels())
 #: (label, channel) of the carbody floor lateral acceleration A_yc.
-A_YC: tuple[str, str] = ("A_yc", "carbody_floor_ay_front")
+A_YC: tuple[str, str] = ("A_yc", METRIC_CHANNELS["A_yc"])
 #: (label, channel) of the bogie frame lateral acceleration A_yb.
-A_YB: tuple[str, str] = ("A_yb", "frame1_ay_wheelset1")
+A_YB: tuple[str, str] = ("A_yb", METRIC_CHANNELS["A_yb"])
+#: Channel of each quantity of the sweep's spectra.
+CHANNELS: dict[str, str] = dict((A_YC, A_YB))
 #: Metrics plotted against speed: (metric name, axis label).
 SWEEP_METRICS: tuple[tuple[str, str], ...] = (
     ("wy_max", "W_y (Sperling, lateral)"),
@@ -56,25 +69,23 @@ SWEEP_METRICS: tuple[tuple[str, str], ...] = (
 )
 
 
-@dataclass(frozen=True)
-class Spectrum:
-    """Welch PSD of one channel of one run and its peak (by :mod:`loco.metrics`)."""
-
-    frequency: FloatArray
-    """Frequencies, Hz."""
-    density: FloatArray
-    """PSD, (m/s²)²/Hz."""
-    dominant_hz: float
-    """Frequency of the PSD peak (above 0.2 Hz), Hz."""
-    peak: float
-    """PSD at the peak, (m/s²)²/Hz."""
+#: Run metrics (the core's) of the PSD peak of each quantity: (dominant frequency Hz, PSD peak
+#: (m/s²)²/Hz). A_yc is searched over 0.2-20 Hz, A_yb over the EN 14363 f0 band.
+PEAK_METRICS: dict[str, tuple[str, str]] = {
+    "A_yc": ("ayc_dominant_hz", "ayc_psd_peak"),
+    "A_yb": ("ayb_f0_hz", "ayb_psd_peak"),
+}
+#: Run metric of the rms of each quantity, m/s².
+RMS_METRICS: dict[str, str] = {"A_yc": "ayc_rms", "A_yb": "ayb_rms"}
 
 
-def spectrum(signal: FloatArray, fs: float) -> Spectrum:
-    """The :class:`Spectrum` of ``signal`` (m/s²) sampled at ``fs`` (Hz), by :mod:`loco.metrics`."""
-    f, p = metrics.psd(signal, fs)
-    dom = metrics.dominant_frequency(signal, fs)
-    return Spectrum(f, p, dom.frequency, dom.peak)
+def spectrum(result: loco.SimulationResult, quantity: str) -> Spectrum:
+    """The :class:`Spectrum` of ``quantity`` (``"A_yc"`` or ``"A_yb"``) of a run: the Welch PSD of
+    its channel by :func:`loco.metrics.psd` (for the curves), its peak from the run's metrics
+    (:data:`PEAK_METRICS`)."""
+    f, p = metrics.psd(result.channel(CHANNELS[quantity]), result.sampling_rate)
+    frequency, peak = PEAK_METRICS[quantity]
+    return Spectrum(f, p, result.metrics[frequency], result.metrics[peak])
 
 
 @dataclass(frozen=True)
@@ -128,7 +139,7 @@ class SpeedSweep:
 
     def psd_frame(self) -> pd.DataFrame:
         """The spectra as a tidy table: scenario, quantity, channel, frequency_hz, psd."""
-        channels = dict((A_YC, A_YB))
+        channels = self.settings.get("channels", CHANNELS)
         frames = [
             pd.DataFrame(
                 {
@@ -143,8 +154,14 @@ class SpeedSweep:
         ]
         return pd.concat(frames, ignore_index=True) if frames else pd.DataFrame()
 
+    @property
+    def damper_label(self) -> str:
+        """Name of the yaw damper of the sweep (e.g. ``YD2``), from the settings."""
+        return str(self.settings.get("yaw_damper_label", "yaw damper"))
+
     def peaks_frame(self) -> pd.DataFrame:
-        """Dominant frequency (Hz) and PSD peak ((m/s²)²/Hz) of each spectrum."""
+        """Dominant frequency (Hz) and PSD peak ((m/s²)²/Hz) of each spectrum (the core's run
+        metrics :data:`PEAK_METRICS`)."""
         return pd.DataFrame(
             [
                 {
@@ -225,8 +242,8 @@ def run_speed_sweep(
         messages.append([str(m) for m in batch.messages])
         history = batch.histories.get(psd_row)
         if history is not None:
-            for label, channel in (A_YC, A_YB):
-                spectra[(name, label)] = spectrum(history.channel(channel), history.sampling_rate)
+            for label in CHANNELS:
+                spectra[(name, label)] = spectrum(history, label)
     settings = {
         "loco_version": loco.__version__,
         "scenarios": list(scenarios),
@@ -234,11 +251,10 @@ def run_speed_sweep(
         "psd_speed_kmh": psd_speed_kmh,
         "distance_m": distance,
         "track_seed": seed,
-        "yaw_damper": None
-        if yaw_damper is None
-        else {"kind": yaw_damper.kind, **yaw_damper.parameters()},
+        "yaw_damper": None if yaw_damper is None else dampers.describe(yaw_damper),
+        "yaw_damper_label": dampers.label(yaw_damper),
         "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
-        "channels": dict((A_YC, A_YB)),
+        "channels": dict(CHANNELS),
     }
     return SpeedSweep(
         scenarios=tuple(scenarios),
@@ -256,11 +272,7 @@ def run_speed_sweep(
 
 def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
     """Save W_y and A_yb against speed (one line per scenario, failed runs as ×) as PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, axes = plt.subplots(1, len(SWEEP_METRICS), figsize=(11, 4), layout="constrained")
     for ax, (metric, label) in zip(axes, SWEEP_METRICS, strict=True):
         values = sweep.metric(metric)
@@ -277,59 +289,28 @@ def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
                     transform=ax.get_xaxis_transform(),
                 )
         ax.axvline(sweep.psd_speed_kmh, color="0.7", lw=0.8, ls="--")
-        ax.set(xlabel="speed (km/h)", ylabel=label, title=f"{label.split(' ')[0]}, YD2")
+        ax.set(
+            xlabel="speed (km/h)",
+            ylabel=label,
+            title=f"{label.split(' ')[0]}, {sweep.damper_label}",
+        )
         ax.set_ylim(bottom=0.0)
         ax.grid(True, alpha=0.3)
         ax.legend()
     fig.suptitle(f"Speed sweep (loco {loco.__version__}; × = failed run or too short a record)")
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
-
-
-def draw_spectra(
-    ax: Any, lines: Mapping[str, Spectrum | None], label: str, title: str, fmax: float
-) -> None:
-    """Draw PSDs on a log axis up to ``fmax`` (Hz), one line per name with its dominant frequency
-    and PSD peak in the legend; ``label`` names the signal (e.g. A_yc). None entries are skipped
-    (failed runs)."""
-    for name, sp in lines.items():
-        if sp is None:
-            continue
-        shown = (sp.frequency > 0) & (sp.frequency <= fmax)
-        ax.semilogy(
-            sp.frequency[shown],
-            sp.density[shown],
-            label=f"{name}: {sp.dominant_hz:.2f} Hz, {sp.peak:.3g}",
-        )
-    ax.set(
-        xlabel="frequency (Hz)",
-        ylabel=f"PSD of {label} ((m/s²)²/Hz)",
-        xlim=(0, fmax),
-        title=title,
-    )
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(title="dominant frequency, PSD peak", fontsize=8)
+    return save_figure(fig, path)
 
 
 def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Path:
     """Save the PSDs of A_yc and A_yb at ``psd_speed_kmh`` (one line per scenario) as PNG;
     ``fmax`` is the upper frequency shown, Hz."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4), layout="constrained")
-    for ax, (label, channel) in zip(axes, (A_YC, A_YB), strict=True):
+    channels = sweep.settings.get("channels", CHANNELS)
+    fig, axes = pyplot().subplots(1, len(channels), figsize=(11, 4), layout="constrained")
+    for ax, (label, channel) in zip(axes, channels.items(), strict=True):
         lines = {sc: sweep.spectra.get((sc, label)) for sc in sweep.scenarios}
-        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, YD2"
+        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}"
         draw_spectra(ax, lines, label, title, fmax)
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, path)
 
 
 def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
@@ -360,14 +341,14 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
         for s in sweep.scenarios
     ]
     n_failed = int((sweep.status != 0).sum())
-    notes = f"At {v:g} km/h with YD2: " + "; ".join(parts) + "."
+    notes = f"At {v:g} km/h with {sweep.damper_label}: " + "; ".join(parts) + "."
     if n_failed:
         notes += (
             f" {n_failed} of {sweep.status.size} runs failed (× in the figure, NaN in the CSV)."
         )
     return StudyRecord(
         name=out.name,
-        title="Speed sweep with the YD2 yaw damper (SPEC §6.1)",
+        title=f"Speed sweep with the {sweep.damper_label} yaw damper (SPEC §6.1)",
         figures=figures,
         tables=tables,
         parameters={k: v for k, v in sweep.settings.items() if k != "yaw_damper"},

@@ -41,6 +41,7 @@ from sklearn.cluster import KMeans
 from sklearn.model_selection import KFold
 
 from loco.studies.evaluators import Evaluator
+from loco.studies.plotting import pyplot, save_figure
 
 __all__ = [
     "CrossValidation",
@@ -324,18 +325,13 @@ def parity_plot(
 
     ``label`` and ``unit`` name the quantity on the axes; returns the path written.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     t = np.asarray(y_true, dtype=np.float64).ravel()
     p = np.asarray(y_pred, dtype=np.float64).ravel()
     r2 = float(r2_score(t, p)[0])
     lo, hi = float(min(t.min(), p.min())), float(max(t.max(), p.max()))
     pad = 0.05 * (hi - lo or 1.0)
     suffix = f" ({unit})" if unit else ""
-    fig, ax = plt.subplots(figsize=(4.5, 4.5), layout="constrained")
+    fig, ax = pyplot().subplots(figsize=(4.5, 4.5), layout="constrained")
     ax.plot([lo - pad, hi + pad], [lo - pad, hi + pad], color="0.5", lw=1, label="1:1")
     ax.scatter(t, p, s=12, alpha=0.7, label=f"samples, R² = {r2:.3f}")
     ax.set(xlim=(lo - pad, hi + pad), ylim=(lo - pad, hi + pad), aspect="equal")
@@ -343,8 +339,4 @@ def parity_plot(
     ax.set_ylabel(f"{label} surrogate{suffix}")
     ax.set_title(title or f"RBF surrogate of {label}")
     ax.legend(loc="upper left")
-    out = Path(path)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, path)

@@ -100,6 +100,9 @@ pub enum ValveState {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FsdDamper {
     params: FsdParams,
+    /// Series spring taken as rigid (the reduced law of [`super::Damper::for_step`], massless
+    /// only): the force is `c(s)·ẋ`, no internal state.
+    rigid_series: bool,
 }
 
 impl FsdDamper {
@@ -121,13 +124,17 @@ impl FsdDamper {
         check_positive("cutoff_frequency_hz", params.cutoff_frequency_hz)?;
         check_positive("switching_delay_s", params.switching_delay_s)?;
         params.trigger.validate()?;
-        Ok(Self { params })
+        Ok(Self {
+            params,
+            rigid_series: false,
+        })
     }
 
     /// The spec's FSD yaw damper (§4).
     pub fn spec() -> Self {
         Self {
             params: FsdParams::default(),
+            rigid_series: false,
         }
     }
 
@@ -136,9 +143,36 @@ impl FsdDamper {
         &self.params
     }
 
-    /// Number of continuous states: 2 (`x_d`, `ẋ_d`) with a mass, 1 (`x_d`) without.
+    /// Whether the series spring is taken as rigid (see [`super::Damper::for_step`]).
+    pub fn has_rigid_series(&self) -> bool {
+        self.rigid_series
+    }
+
+    /// The same damper without its equivalent mass.
+    pub(crate) fn without_mass(self) -> Self {
+        Self {
+            params: FsdParams {
+                equivalent_mass_kg: 0.0,
+                ..self.params
+            },
+            ..self
+        }
+    }
+
+    /// The same (massless) damper with its series spring rigid.
+    pub(crate) fn with_rigid_series(self) -> Self {
+        Self {
+            rigid_series: true,
+            ..self
+        }
+    }
+
+    /// Number of continuous states: 2 (`x_d`, `ẋ_d`) with a mass, 1 (`x_d`) without, 0 with a
+    /// rigid series spring.
     pub fn n_states(&self) -> usize {
-        if self.params.equivalent_mass_kg > 0.0 {
+        if self.rigid_series {
+            0
+        } else if self.params.equivalent_mass_kg > 0.0 {
             2
         } else {
             1
@@ -217,11 +251,14 @@ impl FsdDamper {
         }
     }
 
-    /// Fastest decay rate of the internal states (1/s), for the choice of an explicit step.
+    /// Fastest decay rate of the internal states (1/s), for the choice of an explicit step; 0
+    /// with a rigid series spring (no internal state).
     pub fn fastest_rate_per_s(&self) -> f64 {
         let p = &self.params;
         let (m, k) = (p.equivalent_mass_kg, p.equivalent_stiffness_npm);
-        if m > 0.0 {
+        if self.rigid_series {
+            0.0
+        } else if m > 0.0 {
             let c = p.high_damping_nspm;
             let discriminant = c * c - 4.0 * m * k;
             if discriminant >= 0.0 {

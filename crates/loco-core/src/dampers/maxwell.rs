@@ -58,6 +58,9 @@ pub struct MaxwellDamper {
     params: MaxwellParams,
     /// Force at the knee (N), `damping·knee_velocity`, or infinity for a linear law.
     knee_force_n: f64,
+    /// Series spring taken as rigid (the reduced law of [`super::Damper::for_step`]): the force
+    /// is the damper element's at the elongation rate, no internal state.
+    rigid_series: bool,
 }
 
 impl MaxwellDamper {
@@ -84,6 +87,7 @@ impl MaxwellDamper {
         Ok(Self {
             params,
             knee_force_n,
+            rigid_series: false,
         })
     }
 
@@ -106,12 +110,26 @@ impl MaxwellDamper {
                 blow_off: None,
             },
             knee_force_n: f64::INFINITY,
+            rigid_series: false,
         }
     }
 
     /// The validated parameters.
     pub fn params(&self) -> &MaxwellParams {
         &self.params
+    }
+
+    /// Whether the series spring is taken as rigid (see [`super::Damper::for_step`]).
+    pub fn has_rigid_series(&self) -> bool {
+        self.rigid_series
+    }
+
+    /// The same damper with its series spring rigid.
+    pub(crate) fn with_rigid_series(self) -> Self {
+        Self {
+            rigid_series: true,
+            ..self
+        }
     }
 
     /// Damper force (N) of the damper element at piston velocity `velocity_mps`.
@@ -148,8 +166,12 @@ impl MaxwellDamper {
     }
 
     /// Fastest decay rate of the internal state (1/s): `k/c_min` (the blow-off slope is the
-    /// smallest damping, hence the fastest spring-damper time constant).
+    /// smallest damping, hence the fastest spring-damper time constant); 0 with a rigid series
+    /// spring (no internal state).
     pub fn fastest_rate_per_s(&self) -> f64 {
+        if self.rigid_series {
+            return 0.0;
+        }
         let c_min = self
             .params
             .blow_off

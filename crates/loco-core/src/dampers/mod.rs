@@ -25,7 +25,40 @@
 //! **Step size**: [`Damper::fastest_rate_per_s`] is the magnitude of the fastest internal pole; an
 //! explicit integrator needs roughly `dt·rate < 2.7` (RK4). The spec's FSD with its 15 kg
 //! equivalent mass has a pole near `-c2/m = -5.3e4 1/s` (dt < 5e-5 s); the Maxwell presets are
-//! slow (`k/c` = 28–113 1/s).
+//! slow (`k/c` = 28–113 1/s). [`Damper::for_step`] gives the law an explicit integrator with a
+//! given step uses (below).
+//!
+//! # Reduced laws for a step
+//! An explicit integrator carries an internal pole of rate `r` (1/s) at step `dt` when
+//! `r·dt ≤` [`MAX_RATE_STEP`]. [`Damper::for_step`] returns the law itself when its fastest pole
+//! fits, and otherwise a reduced law (singular perturbations), or a typed `step` error:
+//!
+//! 1. **FSD without its mass.** The FSD's equivalent mass (15 kg against 15 kN/mm and up to
+//!    800 kN·s/m) adds a pole at −c2/m ≈ −5·10⁴ 1/s, a 19 µs lag. Its effect on the force at
+//!    frequency f is of relative order m·(2πf)²/k: 0.4 % at 10 Hz, 10⁻⁴ at 2 Hz. When the pole
+//!    does not fit, the mass is left out (and the massless law is checked again below).
+//! 2. **Rigid series spring.** A Maxwell element (series spring `k`, N/m, damper `c`, N·s/m; a
+//!    massless FSD alike with `c(s)`) has an internal pole at `−k/c`. SPEC §6 reaches
+//!    `k/c = 5·10³ 1/s` (C_sy = 10 kN·s/m with K_ncsy = 50 kN/mm). When even the slowest pole,
+//!    `k/c_max` with `c_max` the largest slope of the law, does not fit (`k/c_max·dt >`
+//!    [`MAX_RATE_STEP`]), the spring is far stiffer than the damper at every frequency a vehicle
+//!    responds to and the element is the pure damper `F = c·ẋ` (the limit `c/k → 0`, no internal
+//!    state). Error bound, from the complex stiffness of the Maxwell element
+//!    `k·iωc/(k + iωc) = iωc/(1 + iε)` with `ε = ωc/k` (ω in rad/s):
+//!    - dissipation: the equivalent damping is `c/(1 + ε²)`, so the rigid form dissipates a
+//!      fraction `ε²` more energy per cycle;
+//!    - force: the Maxwell force lags the damper force by `atan ε`, the difference is at most `ε`
+//!      times the force amplitude (the series spring's in-phase stiffness `k·ε²/(1 + ε²)` is left
+//!      out).
+//!
+//!    As `k/c_max·dt > 2.5`, `ε < ω·dt/2.5`: at a 1 ms step ε < 0.005 at 2 Hz, 0.025 at 10 Hz and
+//!    0.05 at 20 Hz (dissipation 2.5·10⁻⁵, 6·10⁻⁴, 2.5·10⁻³). At the C_sy/K_ncsy corner itself
+//!    (`c/k = 2·10⁻⁴ s`) ε is half of that.
+//! 3. A law stiff only in part of its range (a blow-off slope much smaller than the slope below
+//!    the knee) or whose slope has no upper bound (the hydraulic orifice law) is refused with a
+//!    typed `step` error giving the longest step that fits.
+//!
+//! The bench keeps the full model.
 //!
 //! ```
 //! use loco_core::dampers::{Damper, MAX_STATES};
@@ -57,8 +90,15 @@ pub use fsd_trigger::{FsdTriggerParams, TriggerMemory};
 pub use hydraulic::{HydraulicDamper, HydraulicFrequencyValve, HydraulicParams};
 pub use maxwell::{BlowOff, MaxwellDamper, MaxwellParams};
 
+use crate::error::{LocoError, Result};
+
 /// The largest [`Damper::n_states`] of any damper: size fixed arrays with it.
 pub const MAX_STATES: usize = 2;
+
+/// Largest `rate·dt` of an internal pole (rate in 1/s, dt in s) that an explicit RK4 step
+/// carries: inside RK4's real-axis stability limit (2.785) with a margin. The one threshold of
+/// [`Damper::for_step`].
+pub const MAX_RATE_STEP: f64 = 2.5;
 
 /// Any damper of the crate; see the module documentation for the interface.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -99,12 +139,65 @@ impl Damper {
         Self::Fsd(FsdDamper::spec())
     }
 
-    /// Number of continuous states (≤ [`MAX_STATES`]).
+    /// Number of continuous states (≤ [`MAX_STATES`]; 0 with a rigid series spring).
     pub fn n_states(&self) -> usize {
         match self {
+            Self::Maxwell(d) if d.has_rigid_series() => 0,
             Self::Maxwell(_) | Self::Hydraulic(_) => 1,
             Self::Fsd(d) => d.n_states(),
         }
+    }
+
+    /// Whether this is a reduced law with a rigid series spring ([`Damper::for_step`]).
+    pub fn has_rigid_series(&self) -> bool {
+        match self {
+            Self::Maxwell(d) => d.has_rigid_series(),
+            Self::Fsd(d) => d.has_rigid_series(),
+            Self::Hydraulic(_) => false,
+        }
+    }
+
+    /// The law an explicit integrator with step `dt` (s) uses: the law itself when its fastest
+    /// internal pole fits the step (`rate·dt ≤` [`MAX_RATE_STEP`]), otherwise the reduced law of
+    /// the module documentation (FSD without its mass; a series spring rigid, no internal state),
+    /// or an `InvalidParameter` error on `step` when no reduced law applies.
+    pub fn for_step(&self, dt: f64) -> Result<Self> {
+        let fits = |law: &Self| law.fastest_rate_per_s() * dt <= MAX_RATE_STEP;
+        let law = match *self {
+            Self::Fsd(d) if d.params().equivalent_mass_kg > 0.0 && !fits(self) => {
+                Self::Fsd(d.without_mass())
+            }
+            other => other,
+        };
+        if fits(&law) {
+            return Ok(law);
+        }
+        // The slowest internal pole, k/c_max (validation keeps a blow-off slope at or below the
+        // damping under the knee).
+        let rigid = match law {
+            Self::Maxwell(d) => {
+                let p = d.params();
+                (p.series_stiffness_npm / p.damping_nspm * dt > MAX_RATE_STEP)
+                    .then(|| Self::Maxwell(d.with_rigid_series()))
+            }
+            Self::Fsd(d) => {
+                let p = d.params();
+                (p.equivalent_stiffness_npm / p.high_damping_nspm * dt > MAX_RATE_STEP)
+                    .then(|| Self::Fsd(d.with_rigid_series()))
+            }
+            Self::Hydraulic(_) => None,
+        };
+        rigid.ok_or_else(|| {
+            let fastest = law.fastest_rate_per_s();
+            LocoError::param(
+                "step",
+                format!(
+                    "{dt} s is too long for the damper (internal rate {fastest:.3e} 1/s, not stiff \
+                     over its whole law); use < {:.2e} s",
+                    MAX_RATE_STEP / fastest
+                ),
+            )
+        })
     }
 
     /// Writes the initial continuous states (zero deflection and velocity: no force at rest).
@@ -138,9 +231,13 @@ impl Damper {
         dstates: &mut [f64],
     ) -> f64 {
         // Series elements: the force depends on the elongation and the internal states only;
-        // the elongation rate enters through the integration of the states.
-        let _ = elongation_rate_mps;
+        // the elongation rate enters through the integration of the states, or directly when
+        // the series spring is rigid (the damper element at the elongation rate).
         match self {
+            Self::Maxwell(d) if d.has_rigid_series() => d.damper_force(elongation_rate_mps),
+            Self::Fsd(d) if d.has_rigid_series() => {
+                d.damping_at(discrete.scale_factor) * elongation_rate_mps
+            }
             Self::Maxwell(d) => {
                 let (force_n, rate) = d.force_and_rate(elongation_m, states[0]);
                 dstates[0] = rate;

@@ -30,14 +30,15 @@
 //! fold, so the nonlinear critical speed is at or below the linear one (Polach, "On non-linear
 //! methods of bogie stability assessment using computer simulations", Proc. IMechE Part F, 2006).
 
-use super::integrator::Rk4Workspace;
 use super::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
 use super::parameters::ParameterSet;
+use super::run::{integrate, Flow};
 use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
-use super::simulation::VehicleSystem;
+use super::simulation::{SpeedProfile, VehicleSystem};
 use super::statics::static_equilibrium;
 use crate::error::{check_positive, LocoError, Result};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::collections::VecDeque;
+use std::sync::atomic::AtomicBool;
 
 /// Relative change between successive windows below which the hunting has settled (–).
 const SETTLED: f64 = 0.05;
@@ -168,17 +169,15 @@ pub fn nonlinear_critical_speed(
     };
     let dt = scenario.run.step;
     let mut system = PerfectTrackVehicle::new(parameters, &perfect)?.system(start_speed)?;
-    system.deceleration = settings.deceleration;
-    // The ramp starts when the hunting has settled (set below); until then V stays V0.
-    system.ramp_start = f64::INFINITY;
+    // The ramp starts when the hunting has settled (below); until then V stays V0.
+    system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
     let mut y = static_equilibrium(&mut system)?;
     disturb(&system, &mut y, settings.disturbance);
 
-    let mut workspace = Rk4Workspace::new(y.len());
     let steps_per_window = (settings.window / dt).round().max(2.0) as usize;
     let hop = steps_per_window.div_ceil(2);
-    // Lateral displacement of the four wheelsets after each step.
-    let mut history: Vec<[f64; N_WHEELSETS]> = Vec::new();
+    // Lateral displacement of the four wheelsets after each of the last `steps_per_window` steps.
+    let mut history: VecDeque<[f64; N_WHEELSETS]> = VecDeque::with_capacity(steps_per_window);
     let mut result = RampResult {
         outcome: RampOutcome::HuntsAtEnd,
         critical_speed: settings.end_speed,
@@ -186,56 +185,64 @@ pub fn nonlinear_critical_speed(
         window_amplitude: Vec::new(),
     };
     let mut ramping = false;
-    for step in 0.. {
-        let t = step as f64 * dt;
-        if system.speed_at(t) <= settings.end_speed {
-            break;
-        }
-        if cancel.is_some_and(|flag| flag.load(Ordering::Relaxed)) {
-            return Err(LocoError::Interrupted);
-        }
-        workspace.step(&mut system, t, dt, &mut y);
-        system.finish_step(t + dt, &y)?;
-        history.push(std::array::from_fn(|w| y[wheelset(w) + Y]));
-        let n = history.len();
-        if n < steps_per_window || (n - steps_per_window) % hop != 0 {
-            continue;
-        }
-        let amplitude = window_amplitude(&history[n - steps_per_window..]);
-        let window_start = (n - steps_per_window) as f64 * dt;
-        let window_end = n as f64 * dt;
-        let amplitudes = &mut result.window_amplitude;
-        // The previous window that does not overlap this one (hop is half a window).
-        let previous = amplitudes.len().checked_sub(2).map(|i| amplitudes[i]);
-        amplitudes.push(amplitude);
-        result
-            .window_speed
-            .push(system.speed_at(0.5 * (window_start + window_end)));
-        if ramping {
-            if amplitude < settings.threshold {
-                result.outcome = RampOutcome::DiedOut;
-                result.critical_speed = system.speed_at(window_start);
-                return Ok(result);
+    integrate(
+        &mut system,
+        &mut y,
+        dt,
+        usize::MAX,
+        cancel,
+        |n, t, system, y| {
+            if n > 0 {
+                if history.len() == steps_per_window {
+                    history.pop_front();
+                }
+                history.push_back(std::array::from_fn(|w| y[wheelset(w) + Y]));
             }
-        } else if window_end >= settings.hold - 0.5 * dt {
-            if amplitude < settings.threshold {
-                result.outcome = RampOutcome::StableAtStart;
-                result.critical_speed = f64::INFINITY;
-                return Ok(result);
+            if n >= steps_per_window && (n - steps_per_window) % hop == 0 {
+                let amplitude = window_amplitude(&history);
+                let window_start = (n - steps_per_window) as f64 * dt;
+                let window_end = n as f64 * dt;
+                let amplitudes = &mut result.window_amplitude;
+                // The previous window that does not overlap this one (hop is half a window).
+                let previous = amplitudes.len().checked_sub(2).map(|i| amplitudes[i]);
+                amplitudes.push(amplitude);
+                result
+                    .window_speed
+                    .push(system.speed_at(0.5 * (window_start + window_end)));
+                if ramping {
+                    if amplitude < settings.threshold {
+                        result.outcome = RampOutcome::DiedOut;
+                        result.critical_speed = system.speed_at(window_start);
+                        return Ok(Flow::Stop);
+                    }
+                } else if window_end >= settings.hold - 0.5 * dt {
+                    if amplitude < settings.threshold {
+                        result.outcome = RampOutcome::StableAtStart;
+                        result.critical_speed = f64::INFINITY;
+                        return Ok(Flow::Stop);
+                    }
+                    let settled = previous.is_some_and(|p| (amplitude / p - 1.0).abs() < SETTLED);
+                    if settled || window_end >= settings.max_hold - 0.5 * dt {
+                        ramping = true;
+                        system.speed.start_ramp(window_end);
+                    }
+                }
             }
-            let settled = previous.is_some_and(|p| (amplitude / p - 1.0).abs() < SETTLED);
-            if settled || window_end >= settings.max_hold - 0.5 * dt {
-                ramping = true;
-                system.ramp_start = window_end;
-            }
-        }
-    }
+            Ok(if system.speed_at(t) <= settings.end_speed {
+                Flow::Stop
+            } else {
+                Flow::Step
+            })
+        },
+        |_, _, _, _| {},
+    )?;
     Ok(result)
 }
 
-/// Moves every wheelset laterally by `d` (m) along its rails: its rise and roll change as the
-/// contact table's rigid pose does, which keeps each wheel's interference with its rail.
-fn disturb(system: &VehicleSystem, y: &mut [f64], d: f64) {
+/// Moves every wheelset laterally by `d` (m) along its rails (the ramp's and a scenario's initial
+/// disturbance): its rise and roll change as the contact table's rigid pose does, which keeps
+/// each wheel's interference with its rail.
+pub(crate) fn disturb(system: &VehicleSystem, y: &mut [f64], d: f64) {
     let table = system.wheel_rail.table();
     for w in 0..N_WHEELSETS {
         let i = wheelset(w);
@@ -247,7 +254,7 @@ fn disturb(system: &VehicleSystem, y: &mut [f64], d: f64) {
 }
 
 /// Half the peak-to-peak lateral displacement in a window, the largest of the wheelsets, m.
-fn window_amplitude(samples: &[[f64; N_WHEELSETS]]) -> f64 {
+fn window_amplitude(samples: &VecDeque<[f64; N_WHEELSETS]>) -> f64 {
     (0..N_WHEELSETS)
         .map(|w| {
             let (lo, hi) = samples

@@ -1,5 +1,6 @@
-//! Eigenvalues of a real square matrix, for the linear stability of the vehicle in Rust (the
-//! Python front end uses LAPACK through numpy for the full modal analysis).
+//! Eigenvalues of a real square matrix, for the linear stability of the vehicle: the least damped
+//! mode and the linear critical speed ([`super::linearise`], `loco.critical_speed`). Only
+//! `loco.eigen`, which also needs the mode shapes, uses LAPACK through numpy.
 //!
 //! The classical dense algorithm (Wilkinson and Reinsch, Handbook for Automatic Computation II,
 //! 1971: `balanc`, `elmhes`, `hqr`): balancing by powers of two (the vehicle's state matrix mixes

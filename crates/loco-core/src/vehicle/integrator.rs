@@ -10,7 +10,7 @@
 //! ≈ 320 Hz; wheelset on the Hertz contact) stay inside RK4's stability region at that step. A
 //! Maxwell damper whose internal pole k/c is too fast for the step (SPEC §6 reaches 5·10³ 1/s) is
 //! integrated as the pure damper, its series spring rigid, with the error bound of
-//! [`super::damper_elements`]; `tests/parameter_box.rs` runs every damper corner of the box and
+//! [`crate::dampers`]; `tests/parameter_box.rs` runs every damper corner of the box and
 //! checks the step convergence on every CI run.
 //! Discrete states (the FSD valve) are advanced once per accepted step through
 //! [`OdeSystem::after_step`].

@@ -3,8 +3,9 @@
 //!
 //! The state matrix is formed by central finite differences of the full nonlinear right-hand side
 //! (contact table, Hertz, FASTSIM, dampers' internal states), so it is the Jacobian of exactly the
-//! model that the time integration runs. Eigenvalues are computed by the caller (numpy/LAPACK in
-//! Python): frequencies `|Im λ|/2π`, damping ratios `−Re λ/|λ|`.
+//! model that the time integration runs. [`least_damped`] and [`linear_critical_speed`] take its
+//! eigenvalues with the solver of [`super::eigenvalues`] (frequencies `|Im λ|/2π`, damping ratios
+//! `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses numpy/LAPACK.
 
 use super::eigenvalues::eigenvalues;
 use super::integrator::OdeSystem;

@@ -11,6 +11,8 @@
 //! - [`integrator`]: fixed-step RK4.
 //! - [`linearise`], [`eigenvalues`]: the state matrix about equilibrium, its eigenvalues and the
 //!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
+//! - [`modes`]: which bodies and motions carry a mode's kinetic energy.
+//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once.
 
 pub mod bodies;
 pub mod critical_speed;
@@ -23,10 +25,12 @@ pub mod layout;
 pub mod linalg;
 pub mod linearise;
 pub mod mass;
+pub mod modes;
 pub mod parameters;
 pub mod run;
 pub mod run_metrics;
 pub mod scenario;
+pub mod scenario_settings;
 pub mod simulation;
 pub mod statics;
 pub mod structure;

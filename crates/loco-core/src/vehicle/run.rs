@@ -11,6 +11,7 @@ use super::integrator::{OdeSystem, Rk4Workspace};
 use super::kinematics::point_motion;
 use super::layout::*;
 use super::simulation::VehicleSystem;
+use super::structure::VehicleStructure;
 use super::suspension::DamperRole;
 use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -67,18 +68,35 @@ impl RunOutput {
 struct Probes {
     /// (name, body, point from the body's centre of gravity, m, component 0..3).
     acceleration: Vec<(String, usize, [f64; 3], usize)>,
-    /// Dampers whose force is recorded: yaw, secondary lateral, primary vertical, secondary
-    /// vertical (the first two kept first so that older channel positions do not move).
-    force_dampers: Vec<usize>,
-    /// Yaw dampers, whose frequency-valve scale factor is recorded.
-    yaw_dampers: Vec<usize>,
-    /// Primary and secondary vertical dampers, whose force is recorded after the valve channels
-    /// (added later, so appended to keep the positions of the older channels).
-    vertical_dampers: Vec<usize>,
+    /// Recorded damper quantities: (damper index, quantity), in [`DAMPER_CHANNELS`] order.
+    dampers: Vec<(usize, DamperQuantity)>,
 }
 
-fn probes(system: &VehicleSystem) -> Result<Probes> {
-    let s = &system.structure;
+/// A recorded quantity of a damper.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum DamperQuantity {
+    /// Force, N (channel `<damper>_force`).
+    Force,
+    /// Frequency-valve scale factor, – (channel `<damper>_valve`).
+    Valve,
+}
+
+/// The damper channels, in order: the force of the yaw and secondary lateral dampers, the valve
+/// of the yaw dampers, then the force of the primary and secondary vertical dampers (added
+/// later, so appended to keep the positions of the older channels).
+const DAMPER_CHANNELS: [(&[DamperRole], DamperQuantity); 3] = [
+    (
+        &[DamperRole::Yaw, DamperRole::SecondaryLateral],
+        DamperQuantity::Force,
+    ),
+    (&[DamperRole::Yaw], DamperQuantity::Valve),
+    (
+        &[DamperRole::PrimaryVertical, DamperRole::SecondaryVertical],
+        DamperQuantity::Force,
+    ),
+];
+
+fn probes(s: &VehicleStructure) -> Result<Probes> {
     let p = &s.parameters;
     let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
     let side = p.get("carbody.sperling_point_lateral_offset")?;
@@ -107,33 +125,31 @@ fn probes(system: &VehicleSystem) -> Result<Probes> {
             ));
         }
     }
-    let by_role = |role: DamperRole| {
-        system
-            .dampers
-            .iter()
-            .enumerate()
-            .filter(|(_, d)| d.placement.role == role)
-            .map(|(i, _)| i)
-            .collect::<Vec<_>>()
-    };
-    let roles = |roles: [DamperRole; 2]| roles.into_iter().flat_map(by_role).collect();
+    let mut dampers = Vec::new();
+    for (roles, quantity) in DAMPER_CHANNELS {
+        for &role in roles {
+            for (i, placement) in s.suspension.dampers.iter().enumerate() {
+                if placement.role == role {
+                    dampers.push((i, quantity));
+                }
+            }
+        }
+    }
     Ok(Probes {
         acceleration,
-        force_dampers: roles([DamperRole::Yaw, DamperRole::SecondaryLateral]),
-        yaw_dampers: by_role(DamperRole::Yaw),
-        vertical_dampers: roles([DamperRole::PrimaryVertical, DamperRole::SecondaryVertical]),
+        dampers,
     })
 }
 
-/// Names of the channels [`run`] records for `system`, in order (accelerations m/s², wheelset
+/// Names of the channels [`run`] records for a vehicle of this structure, in order (accelerations m/s², wheelset
 /// displacement m and yaw rad, wheel forces N, Y/Q –, damper forces N, valve scale factors –).
 /// The one source of the names: the batch binary checks a study's channels against it before
 /// running anything.
-pub fn channel_names(system: &VehicleSystem) -> Result<Vec<String>> {
-    Ok(names_of(system, &probes(system)?))
+pub fn channel_names(structure: &VehicleStructure) -> Result<Vec<String>> {
+    Ok(names_of(structure, &probes(structure)?))
 }
 
-fn names_of(system: &VehicleSystem, probes: &Probes) -> Vec<String> {
+fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<String> {
     let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
     for w in 0..N_WHEELSETS {
         names.push(format!("wheelset{}_y", w + 1));
@@ -146,15 +162,12 @@ fn names_of(system: &VehicleSystem, probes: &Probes) -> Vec<String> {
             }
         }
     }
-    let damper = |i: usize| &system.dampers[i].placement.name;
-    for &i in &probes.force_dampers {
-        names.push(format!("{}_force", damper(i)));
-    }
-    for &i in &probes.yaw_dampers {
-        names.push(format!("{}_valve", damper(i)));
-    }
-    for &i in &probes.vertical_dampers {
-        names.push(format!("{}_force", damper(i)));
+    for &(i, quantity) in &probes.dampers {
+        let name = &structure.suspension.dampers[i].name;
+        names.push(match quantity {
+            DamperQuantity::Force => format!("{name}_force"),
+            DamperQuantity::Valve => format!("{name}_valve"),
+        });
     }
     names
 }
@@ -176,53 +189,98 @@ pub fn run(
         .max(1.0) as usize;
     let dt = 1.0 / (settings.output_rate * steps_per_sample as f64);
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
-    let probes = probes(system)?;
+    let probes = probes(&system.structure)?;
 
-    let names = names_of(system, &probes);
+    let names = names_of(&system.structure, &probes);
     let mut channels: Vec<Vec<f64>> = vec![Vec::with_capacity(n_samples); names.len()];
     let mut time = Vec::with_capacity(n_samples);
 
-    let mut workspace = Rk4Workspace::new(system.dimension());
-    let mut dy = vec![0.0; system.dimension()];
-    let mut t = 0.0;
     let total_steps = (n_samples - 1) * steps_per_sample;
     let settle_steps = (settings.settle / dt).round() as usize;
-    let last = settle_steps + total_steps;
     let t0 = settle_steps as f64 * dt;
-    for step in 0..=last {
-        let sample = step >= settle_steps && (step - settle_steps) % steps_per_sample == 0;
-        if step == last {
-            if sample {
-                // Accelerations at the last sample time: one evaluation of the right-hand side.
-                system.derivatives(t, y, &mut dy);
-                record(system, &probes, y, &dy, &mut channels);
-                time.push(t - t0);
-            }
-            break;
-        }
-        if let Some(flag) = cancel {
-            if flag.load(Ordering::Relaxed) {
-                return Err(LocoError::Interrupted);
-            }
-        }
-        if sample {
-            // Accelerations at the sample time are the first RK4 stage of the step from it.
-            workspace.step_observed(system, t, dt, y, |system, y0, dy0| {
-                record(system, &probes, y0, dy0, &mut channels);
-            });
+    let is_sample = |n: usize| n >= settle_steps && (n - settle_steps) % steps_per_sample == 0;
+    integrate(
+        system,
+        y,
+        dt,
+        settle_steps + total_steps,
+        cancel,
+        |n, _, _, _| {
+            Ok(if is_sample(n) {
+                Flow::Observe
+            } else {
+                Flow::Step
+            })
+        },
+        |t, system, y, dy| {
+            record(system, &probes, y, dy, &mut channels);
             time.push(t - t0);
-        } else {
-            workspace.step(system, t, dt, y);
-        }
-        t = (step + 1) as f64 * dt;
-        system.finish_step(t, y)?;
-    }
+        },
+    )?;
     Ok(RunOutput {
         sampling_rate: settings.output_rate,
         time,
         names,
         channels,
     })
+}
+
+/// What [`integrate`] does with the state of a step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flow {
+    /// Step on.
+    Step,
+    /// Pass the state and its derivatives to the observer, then step on.
+    Observe,
+    /// End the integration here.
+    Stop,
+}
+
+/// The one time loop of the vehicle: RK4 steps of `dt` (s) from t = 0 and state `y`, at most
+/// `steps` of them. Before each step `n` (at `t = n·dt`, and at the final state, n = `steps`)
+/// `on_step(n, t, system, y)` decides: [`Flow::Observe`] calls `observe(t, system, y, ẏ)` with the
+/// derivatives at that state (free with the step's first RK4 stage; one extra evaluation at the
+/// final state), [`Flow::Stop`] ends the loop. Every step is checked by
+/// [`VehicleSystem::finish_step`]; `cancel`, when set from another thread, stops the loop with
+/// `Interrupted`.
+pub fn integrate(
+    system: &mut VehicleSystem,
+    y: &mut [f64],
+    dt: f64,
+    steps: usize,
+    cancel: Option<&AtomicBool>,
+    mut on_step: impl FnMut(usize, f64, &mut VehicleSystem, &[f64]) -> Result<Flow>,
+    mut observe: impl FnMut(f64, &VehicleSystem, &[f64], &[f64]),
+) -> Result<()> {
+    let mut workspace = Rk4Workspace::new(system.dimension());
+    let mut t = 0.0;
+    for n in 0..=steps {
+        let flow = on_step(n, t, system, y)?;
+        if flow == Flow::Stop {
+            break;
+        }
+        if n == steps {
+            if flow == Flow::Observe {
+                let mut dy = vec![0.0; system.dimension()];
+                system.derivatives(t, y, &mut dy);
+                observe(t, system, y, &dy);
+            }
+            break;
+        }
+        if cancel.is_some_and(|flag| flag.load(Ordering::Relaxed)) {
+            return Err(LocoError::Interrupted);
+        }
+        if flow == Flow::Observe {
+            workspace.step_observed(system, t, dt, y, |system, y0, dy0| {
+                observe(t, system, y0, dy0);
+            });
+        } else {
+            workspace.step(system, t, dt, y);
+        }
+        t = (n + 1) as f64 * dt;
+        system.finish_step(t, y)?;
+    }
+    Ok(())
 }
 
 fn record(
@@ -258,13 +316,10 @@ fn record(
             });
         }
     }
-    for &i in &probes.force_dampers {
-        push(system.damper_forces[i]);
-    }
-    for &i in &probes.yaw_dampers {
-        push(system.discrete[i].scale_factor);
-    }
-    for &i in &probes.vertical_dampers {
-        push(system.damper_forces[i]);
+    for &(i, quantity) in &probes.dampers {
+        push(match quantity {
+            DamperQuantity::Force => system.damper_forces[i],
+            DamperQuantity::Valve => system.discrete[i].scale_factor,
+        });
     }
 }

@@ -299,9 +299,8 @@ pub fn simulate_prepared(
     )?;
     let mut y = static_equilibrium(&mut system)?;
     if scenario.initial_lateral_offset != 0.0 {
-        for w in 0..super::layout::N_WHEELSETS {
-            y[super::layout::wheelset(w) + super::layout::Y] += scenario.initial_lateral_offset;
-        }
+        // On the rails: rise and roll follow the contact table, as in the critical-speed ramp.
+        super::critical_speed::disturb(&system, &mut y, scenario.initial_lateral_offset);
     }
     let settings = RunSettings {
         duration: scenario.distance / scenario.speed,

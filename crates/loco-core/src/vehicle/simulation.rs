@@ -4,15 +4,15 @@
 //! damper module's units. The reference frame moves along the track at the running speed V(t);
 //! wheelset `w` is at distance `s = s_start + ∫V dt + x_w` along the track.
 //!
-//! The speed is constant in a run. A speed ramp (the nonlinear critical speed,
-//! [`super::critical_speed`]) holds V0 until `ramp_start` = t0 and then lowers it at a constant
-//! deceleration `a`: `V(t) = V0 − a·max(t − t0, 0)` and `s = s_start + V0·t − a·max(t − t0, 0)²/2
-//! + x_w`.
+//! The speed follows a [`SpeedProfile`]: constant in a run; a speed ramp (the nonlinear critical
+//! speed, [`super::critical_speed`]) holds V0 until the ramp is started at t0 and then lowers it at
+//! a constant deceleration `a`: `V(t) = V0 − a·max(t − t0, 0)` and
+//! `s = s_start + V0·t − a·max(t − t0, 0)²/2 + x_w`.
 //! The speed is imposed as a slowly varying parameter: creepages, rolling spin, gyroscopic moments
 //! and the track position all follow it, while the inertia forces of the deceleration itself
 //! (`m·a` on every body, a braking force the real vehicle's brakes would supply) are left out.
 
-use super::damper_elements::{damper_law, law_for_step, series_form, DamperElement};
+use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::OdeSystem;
 use super::layout::{
@@ -36,6 +36,81 @@ pub const RUNAWAY_ROTATION: f64 = 0.5;
 /// contact tables' half range (±25 mm, which already covers flange climbing).
 pub const DERAILED_LATERAL: f64 = 0.05;
 
+/// Running speed against time: constant, or a ramp that holds its start speed until it is started
+/// and then decelerates at a constant rate (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SpeedProfile {
+    /// Constant speed, m/s.
+    Constant(f64),
+    /// Speed `speed` (m/s) until `start` (s; `None`: not yet started), then falling at
+    /// `deceleration` (m/s²).
+    Ramp {
+        speed: f64,
+        deceleration: f64,
+        start: Option<f64>,
+    },
+}
+
+impl SpeedProfile {
+    /// A ramp from `speed` (m/s) at `deceleration` (m/s²), not yet started.
+    pub fn ramp(speed: f64, deceleration: f64) -> Self {
+        Self::Ramp {
+            speed,
+            deceleration,
+            start: None,
+        }
+    }
+
+    /// Starts the ramp at time `t` (s); a constant speed stays constant.
+    pub fn start_ramp(&mut self, t: f64) {
+        if let Self::Ramp { start, .. } = self {
+            *start = Some(t);
+        }
+    }
+
+    /// Speed at t = 0 (the start speed of a ramp), m/s.
+    pub fn initial_speed(&self) -> f64 {
+        match *self {
+            Self::Constant(speed) | Self::Ramp { speed, .. } => speed,
+        }
+    }
+
+    /// Running speed at time `t` (s), m/s.
+    #[inline]
+    pub fn speed_at(&self, t: f64) -> f64 {
+        match *self {
+            Self::Constant(speed) => speed,
+            Self::Ramp {
+                speed,
+                deceleration,
+                start,
+            } => speed - deceleration * ramp_time(start, t),
+        }
+    }
+
+    /// Distance run from t = 0 to time `t` (s), m.
+    #[inline]
+    pub fn distance_at(&self, t: f64) -> f64 {
+        match *self {
+            Self::Constant(speed) => speed * t,
+            Self::Ramp {
+                speed,
+                deceleration,
+                start,
+            } => {
+                let ramp = ramp_time(start, t);
+                speed * t - 0.5 * deceleration * ramp * ramp
+            }
+        }
+    }
+}
+
+/// Time spent ramping at time `t` (s) by a ramp started at `start` (0 before or unstarted), s.
+#[inline]
+fn ramp_time(start: Option<f64>, t: f64) -> f64 {
+    start.map_or(0.0, |t0| (t - t0).max(0.0))
+}
+
 /// The system integrated in time: vehicle, dampers, contact, track and speed.
 #[derive(Debug, Clone)]
 pub struct VehicleSystem {
@@ -44,12 +119,8 @@ pub struct VehicleSystem {
     pub discrete: Vec<DamperDiscreteState>,
     pub wheel_rail: Arc<WheelRail>,
     pub track: Arc<TrackIrregularity>,
-    /// Running speed V (the start speed of a ramp), m/s.
-    pub speed: f64,
-    /// Deceleration of a speed ramp, m/s² (0: constant speed).
-    pub deceleration: f64,
-    /// Time at which a speed ramp starts, s (+∞: not yet).
-    pub ramp_start: f64,
+    /// Running speed V against time, m/s.
+    pub speed: SpeedProfile,
     /// Track distance of the vehicle origin at t = 0, m.
     pub start_distance: f64,
     /// Tangential contact stiffness (N/m) used instead of creep in the static search; 0 in runs.
@@ -82,11 +153,9 @@ impl VehicleSystem {
         let mut offset = 2 * N_DOF;
         let mut dampers = Vec::with_capacity(structure.suspension.dampers.len());
         for placement in &structure.suspension.dampers {
-            let law = law_for_step(damper_law(placement, yaw_damper)?, dt)?;
             let element = DamperElement {
                 placement: placement.clone(),
-                law,
-                form: series_form(&placement.name, &law, dt)?,
+                law: law_for_step(placement, yaw_damper, dt)?,
                 state_offset: offset,
                 static_elongation: 0.0,
             };
@@ -102,9 +171,7 @@ impl VehicleSystem {
             discrete,
             wheel_rail,
             track,
-            speed,
-            deceleration: 0.0,
-            ramp_start: 0.0,
+            speed: SpeedProfile::Constant(speed),
             start_distance,
             static_stiffness: 0.0,
             n_states: offset,
@@ -125,15 +192,13 @@ impl VehicleSystem {
     /// Running speed at time `t` (s), m/s.
     #[inline]
     pub fn speed_at(&self, t: f64) -> f64 {
-        self.speed - self.deceleration * (t - self.ramp_start).max(0.0)
+        self.speed.speed_at(t)
     }
 
     /// Track distance of wheelset `w` at time `t` (s), m.
     #[inline]
     pub fn wheelset_distance(&self, w: usize, t: f64) -> f64 {
-        let ramp = (t - self.ramp_start).max(0.0);
-        self.start_distance + self.speed * t - 0.5 * self.deceleration * ramp * ramp
-            + self.structure.layout.wheelset_x[w]
+        self.start_distance + self.speed.distance_at(t) + self.structure.layout.wheelset_x[w]
     }
 
     /// Generalized forces `Q(q, q̇)` (N, N·m) at time `t` with damper states from `y`; also fills
