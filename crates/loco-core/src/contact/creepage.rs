@@ -38,7 +38,9 @@ use crate::error::{check_finite, check_positive, Result};
 /// A 3-vector in the track frame (x forward, y left, z up).
 pub type Vec3 = [f64; 3];
 
-fn dot(a: &Vec3, b: &Vec3) -> f64 {
+/// Scalar product of two track-frame vectors.
+#[inline]
+pub fn dot(a: &Vec3, b: &Vec3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
@@ -118,17 +120,36 @@ pub fn creepages(
     frame: &ContactFrame,
     speed: f64,
 ) -> Creepages {
+    let slip = slip_velocity(body, contact_offset, rail_velocity);
+    creepages_of_slip(&slip, &body.angular_velocity, frame, speed)
+}
+
+/// Velocity `v_c = v + ω × r − v_rail` (m/s) of the wheel material at the contact point relative
+/// to the rail material there; its part along the normal is the rate at which the bodies separate.
+#[inline]
+pub fn slip_velocity(body: &BodyVelocity, contact_offset: &Vec3, rail_velocity: &Vec3) -> Vec3 {
     let spin_velocity = cross(&body.angular_velocity, contact_offset);
-    let relative = [
+    [
         body.velocity[0] + spin_velocity[0] - rail_velocity[0],
         body.velocity[1] + spin_velocity[1] - rail_velocity[1],
         body.velocity[2] + spin_velocity[2] - rail_velocity[2],
-    ];
+    ]
+}
+
+/// Creepages from the slip velocity `slip` (m/s) and the wheel's angular velocity `angular`
+/// (rad/s) in the contact frame, at speed `speed` V (m/s, > 0).
+#[inline]
+pub fn creepages_of_slip(
+    slip: &Vec3,
+    angular: &Vec3,
+    frame: &ContactFrame,
+    speed: f64,
+) -> Creepages {
     let inv_v = 1.0 / speed;
     Creepages {
-        longitudinal: dot(&relative, &frame.longitudinal) * inv_v,
-        lateral: dot(&relative, &frame.lateral) * inv_v,
-        spin: dot(&body.angular_velocity, &frame.normal) * inv_v,
+        longitudinal: dot(slip, &frame.longitudinal) * inv_v,
+        lateral: dot(slip, &frame.lateral) * inv_v,
+        spin: dot(angular, &frame.normal) * inv_v,
     }
 }
 
@@ -208,8 +229,8 @@ impl WheelsetMotion {
 /// the lead is a fraction of a mm, but a flange contact (γ ≈ 1.2 rad) yawed by 15 mrad leads by
 /// about 17 mm. There the wheel material moves vertically at Ω·x, which the steep contact plane
 /// turns into lateral creepage (Manchester benchmark, flange cases: 0.04 against 0.006
-/// without the lead; `tests/manchester_normal_force.rs`). [`WheelsetMotion::creepages`] and the
-/// vehicle model do not include it.
+/// without the lead; `tests/manchester_normal_force.rs`). The vehicle model places its contact
+/// points with it (`vehicle::wheel_rail`); [`WheelsetMotion::creepages`] does not.
 pub fn contact_lead(
     side: Side,
     rolling_radius: f64,

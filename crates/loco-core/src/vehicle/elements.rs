@@ -87,7 +87,16 @@ impl Attachment {
 }
 
 /// A three-axis spring-damper with rotational stiffness (rubber bushing, coil spring, flexicoil,
-/// coupling), stiffness and damping along the vehicle axes.
+/// coupling), stiffness and damping along the element's axes.
+///
+/// The element's axes turn with the mean rotation θ_m of its two ends (corotational): the force
+/// is `f = R(θ_m)·(−K Rᵀd − C Rᵀv)` and each end gets the moment `−½ d × f`, the gradient of the
+/// spring energy `½ (Rᵀd)ᵀ K (Rᵀd)` with respect to the ends' rotations. For the loaded springs
+/// this is what makes a preload turn with the suspension: a carbody rolled with its bogies on a
+/// cross level (or a cant) is pushed downhill by its weight times the roll and sags laterally,
+/// and the element's forces exert no net moment on the vehicle (the `P·Δ` couple of a laterally
+/// deflected loaded spring is taken by its ends). With a fixed-axis spring both were missing:
+/// preloads stayed vertical in the track frame whatever the vehicle's roll.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bushing {
     pub name: String,
@@ -98,6 +107,9 @@ pub struct Bushing {
     pub damping: [f64; 3],
     /// Rotational stiffness about x, y, z for the relative rotation of B to A, N·m/rad.
     pub rotational_stiffness: [f64; 3],
+    /// Which rotations of A and B turn the element's axes (1) and which do not (0): a
+    /// wheelset's or hollow shaft's pitch coordinate is its spin, which turns no axle box.
+    pub turns_with: [[f64; 3]; 2],
 }
 
 impl Bushing {
@@ -105,18 +117,22 @@ impl Bushing {
     #[inline]
     pub fn apply(&self, s: &BodyStates, wrenches: &mut Wrenches) -> [f64; 3] {
         let (d, v) = self.at.relative_motion(s);
-        let mut f = [0.0; 3];
-        for k in 0..3 {
-            f[k] = -self.stiffness[k] * d[k] - self.damping[k] * v[k];
-        }
+        let (ua, ub) = (&s.position[self.at.body_a], &s.position[self.at.body_b]);
+        let [ma, mb] = &self.turns_with;
+        let theta: [f64; 3] =
+            std::array::from_fn(|k| 0.5 * (ua[3 + k] * ma[k] + ub[3 + k] * mb[k]));
+        let d_local = sub(d, cross(theta, d));
+        let v_local = sub(v, cross(theta, v));
+        let f_local: [f64; 3] = std::array::from_fn(|k| {
+            -self.stiffness[k] * d_local[k] - self.damping[k] * v_local[k]
+        });
+        let f = add(f_local, cross(theta, f_local));
         self.at.apply_pair(s, f, wrenches);
-        if self.rotational_stiffness.iter().any(|k| *k != 0.0) {
-            let (ua, ub) = (&s.position[self.at.body_a], &s.position[self.at.body_b]);
-            for k in 0..3 {
-                let m = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
-                wrenches[self.at.body_b][3 + k] += m;
-                wrenches[self.at.body_a][3 + k] -= m;
-            }
+        let couple = cross(d, f);
+        for k in 0..3 {
+            let elastic = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
+            wrenches[self.at.body_b][3 + k] += elastic - 0.5 * couple[k];
+            wrenches[self.at.body_a][3 + k] -= elastic + 0.5 * couple[k];
         }
         f
     }

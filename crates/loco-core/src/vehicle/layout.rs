@@ -129,6 +129,12 @@ pub const fn body_traction_rod(b: usize) -> usize {
 pub const fn body_rotary_arm(w: usize, side: usize) -> usize {
     17 + 2 * w + side
 }
+/// Whether a body's pitch coordinate is its spin beyond steady rolling (wheelsets, and the
+/// hollow shafts whose spin follows them): a rotation that moves no attachment frame.
+pub const fn body_pitch_is_spin(body: usize) -> bool {
+    (body >= body_wheelset(0) && body < body_motor(0))
+        || (body >= body_hollow_shaft(0) && body < body_traction_rod(0))
+}
 
 const SIDE: [&str; 2] = ["left", "right"];
 const SIX: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];

@@ -27,6 +27,7 @@ pub mod linearise;
 pub mod mass;
 pub mod modes;
 pub mod parameters;
+pub mod rail_plane;
 pub mod run;
 pub mod run_metrics;
 pub mod scenario;

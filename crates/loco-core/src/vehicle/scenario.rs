@@ -248,6 +248,7 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
                 parameters.get("contact.normal_contact_damping")?,
             )?,
             nominal_radius: r0,
+            contact_half_distance: half,
         },
     ))
 }

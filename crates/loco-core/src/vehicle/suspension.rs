@@ -86,8 +86,16 @@ fn attach2(
 }
 
 fn bushing(name: String, at: Attachment, stiffness: [f64; 3]) -> Bushing {
+    let turns = |body: usize| {
+        if body_pitch_is_spin(body) {
+            [1.0, 0.0, 1.0]
+        } else {
+            [1.0; 3]
+        }
+    };
     Bushing {
         name,
+        turns_with: [turns(at.body_a), turns(at.body_b)],
         at,
         stiffness,
         damping: [0.0; 3],

@@ -1,21 +1,35 @@
 //! Wheel-rail forces on the four wheelsets: elastic normal contact, creepages and FASTSIM.
 //!
-//! For each wheel the contact table of the scenario's wheel/rail pair is read at the wheelset's
-//! lateral position relative to that wheel's rail (so gauge irregularities move each contact on
-//! its own). The table gives the rigid pose at which both wheels just touch (rise, roll) and up to
-//! two contact points per wheel (tread and flange) with their geometry. The normal contact is
-//! elastic: the vertical interference of a point is how far the wheel sits below its rigid pose at
-//! that point (`rise + roll·l + z_rail − z − φ·l − gap`), its normal part `δ = interference·cos γ`
-//! gives the Hertz force `N = K_H δ^{3/2}` (K_H from the curvatures at the point) plus a small
-//! normal damping `c_n δ̇` that keeps the unsprung masses from ringing on the stiff contact.
-//! Creepages follow the general definition of `contact::creepage` with the wheel's angular
-//! velocity about its rolled and yawed axle; the vertical velocity of a wheel following a vertical
-//! irregularity is along the rail's longitudinal slope, not a slip, so the rail surface's vertical
-//! rate `V·dz/ds` is subtracted. FASTSIM gives the tangential forces in the contact plane.
+//! Everything geometric is done in the rails' plane at the wheelset ([`super::rail_plane`]): on a
+//! cross level the two rails stand at different heights, the plane is rolled by θ, and the
+//! wheelset's pose relative to the rails (lateral `y'`, which includes `h0·θ`, and roll `φ − θ`)
+//! is what the contact table is read at; contact points and frames come back into the track frame
+//! rotated by θ. Each wheel reads the table at the wheelset's position relative to its own rail
+//! (so gauge irregularities move each contact on its own). The table gives the rigid pose at
+//! which both wheels just touch (rise, roll) and up to two contact points per wheel (tread and
+//! flange) with their geometry. The normal contact is elastic: the interference of a point is how
+//! far the wheel sits below its rigid pose at that point (`rise + roll·l + z_rail − z − φ·l −
+//! gap`, all in the plane), its normal part `δ = interference·cos γ` gives the Hertz force
+//! `N = K_H δ^{3/2}` (K_H from the curvatures at the point) plus a small normal damping `c_n δ̇`
+//! (δ̇ from the slip velocity along the normal) that keeps the unsprung masses from ringing on
+//! the stiff contact.
+//!
+//! Creepages follow the general definition of `contact::creepage`: the wheel's angular velocity
+//! about its rolled and yawed axle, the contact offsets rotated with the rails, so rolled rails
+//! give no rolling-radius difference. A yawed wheel touches a steep flange ahead of or behind its
+//! axle (`contact::creepage::contact_lead`, 17 mm at 15 mrad on a flange); the contact point is
+//! placed there, which gives the flange's lateral creepage and the lead's yaw moment (Manchester
+//! normal force in flange contact within 1 % with it, 5–32 % high without). The vertical
+//! velocity of a wheel following a vertical irregularity is along the rail's longitudinal slope,
+//! not a slip, so the rail surface's velocity (the plane's vertical and roll rates) is
+//! subtracted. FASTSIM gives the tangential forces in the contact plane.
 
 use super::elements::{add_force, BodyStates, Wrenches};
 use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
-use crate::contact::creepage::{creepages, BodyVelocity, ContactFrame, Side};
+use super::rail_plane::RailPlane;
+use crate::contact::creepage::{
+    contact_lead, creepages_of_slip, dot, slip_velocity, BodyVelocity, ContactFrame, Side,
+};
 use crate::contact::fastsim::Fastsim;
 use crate::contact::fastsim_table::FastsimTable;
 use crate::contact::geometry::WheelsetContact;
@@ -37,6 +51,9 @@ pub struct WheelRailSettings {
     pub normal_damping: f64,
     /// Nominal rolling radius r0, m.
     pub nominal_radius: f64,
+    /// Half the lateral distance between the nominal contact points, b, m: the rails' roll on a
+    /// cross level c is atan(c / 2b).
+    pub contact_half_distance: f64,
 }
 
 /// Forces at one wheel, for outputs (track frame, on the wheel).
@@ -154,11 +171,13 @@ impl WheelRail {
             let r0 = self.centred_radius;
             wrenches[body][PITCH] -= static_stiffness * r0 * r0 * u[PITCH];
         }
-        let rail_y = [rails.y_left, rails.y_right];
-        let rail_z = [rails.z_left, rails.z_right];
-        let rail_dz = [rails.dz_left_ds, rails.dz_right_ds];
+        // The table is read in the rails' plane (see `rail_plane`).
+        let h0 = self.centred_radius;
+        let plane = RailPlane::new(rails, self.settings.contact_half_distance, speed);
+        let pose_in_plane = plane.pose(u[1], u[2], u[ROLL], h0);
         for (side_index, side) in SIDES.iter().enumerate() {
-            let y_rel = u[1] - rail_y[side_index];
+            let s = side.sign();
+            let y_rel = plane.table_position(pose_in_plane.lateral, side_index);
             let (lo, hi) = self.table.y_range();
             if !(lo..=hi).contains(&y_rel) {
                 // A runaway state (numerical divergence) is told apart from this by
@@ -176,14 +195,28 @@ impl WheelRail {
             let mut forces = WheelForces::default();
             for point in pose.wheels[side_index].points.iter().flatten() {
                 let l = point.lateral;
-                let interference =
-                    pose.rise + pose.roll * l + rail_z[side_index] - u[2] - u[ROLL] * l - point.gap;
+                let interference = pose.rise + pose.roll * l + plane.rail_height(side_index)
+                    - pose_in_plane.vertical
+                    - pose_in_plane.roll * l
+                    - point.gap;
                 if interference <= 0.0 {
                     continue;
                 }
                 let cg = point.contact_angle.cos();
                 let approach = interference * cg;
-                let approach_rate = (speed * rail_dz[side_index] - v[2] - v[ROLL] * l) * cg;
+                // A yawed wheel touches a steep flange ahead of or behind its axle.
+                let lead = contact_lead(
+                    *side,
+                    point.rolling_radius,
+                    point.contact_angle,
+                    pose.roll,
+                    u[YAW],
+                );
+                let offset = plane.to_track([lead - u[YAW] * l, l, point.vertical]);
+                let frame = ContactFrame::new(*side, point.contact_angle + s * plane.roll, u[YAW]);
+                let rail_surface = plane.surface_velocity(u[1], u[2], h0, &offset);
+                let slip = slip_velocity(&velocity, &offset, &rail_surface);
+                let approach_rate = -dot(&slip, &frame.normal);
                 let hertz = self.hertz.coefficients(
                     // Rolling-direction curvature of the wheel at a point whose normal is tilted
                     // by the contact angle from the radius (Meusnier): cos γ / r.
@@ -199,21 +232,20 @@ impl WheelRail {
                 if normal == 0.0 {
                     continue;
                 }
-                let frame = ContactFrame::new(*side, point.contact_angle, u[YAW]);
-                let offset = [-u[YAW] * l, l, point.vertical];
                 let tangential = if static_stiffness > 0.0 {
                     // Static search: contact patches do not slide; displacement of the wheel
-                    // surface at the contact (x − r·β, y + r·φ_el) against a tangential spring.
+                    // surface at the contact (x − r·β, y + r·φ_el, in the rails' plane) against
+                    // a tangential spring.
                     let dx = u[0] - point.rolling_radius * u[PITCH] - l * u[YAW];
-                    let dy = u[1] + point.rolling_radius * (u[ROLL] - pose.roll);
+                    let dy = pose_in_plane.lateral
+                        + point.rolling_radius * (pose_in_plane.roll - pose.roll);
                     CreepForces {
                         fx: -static_stiffness * dx,
                         fy: -static_stiffness * dy * cg,
                         mz: 0.0,
                     }
                 } else {
-                    let rail_surface = [0.0, 0.0, speed * rail_dz[side_index]];
-                    let creep = creepages(&velocity, &offset, &rail_surface, &frame, speed);
+                    let creep = creepages_of_slip(&slip, &angular, &frame, speed);
                     let ellipse = hertz.contact(normal);
                     self.creep.creep_forces(
                         ellipse.semi_axis_long,
