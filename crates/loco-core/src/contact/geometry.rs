@@ -222,6 +222,34 @@ impl ContactGeometry {
         })
     }
 
+    /// The contact of each wheel with the wheelset at lateral displacement `y` (m) and roll
+    /// `roll` (rad), each wheel lowered onto its own rail: per wheel `[LEFT, RIGHT]` the rise of
+    /// the wheelset centre (m, from the centred pose) at which that wheel touches, and its
+    /// points. At the rigid pose of [`Self::solve`] both rises are its rise; away from it the
+    /// contact tables' relative-roll layers come from here.
+    pub fn solve_rolled(
+        &self,
+        y: f64,
+        roll: f64,
+        ws: &mut ContactWorkspace,
+    ) -> Result<[(f64, WheelContact); 2]> {
+        check_finite("y", y)?;
+        check_finite("roll", roll)?;
+        let mut out = [(0.0, WheelContact::default()); 2];
+        for (s, (rise, wheel)) in out.iter_mut().enumerate() {
+            let (u_ws, phi) = side_pose(s, y, roll);
+            let z = -self.sides[s].minimum(u_ws, phi, &mut ws.gap)?.h;
+            *wheel = self.sides[s].contacts(u_ws, phi, z, &self.params, &mut ws.gap)?;
+            if s == RIGHT {
+                for p in wheel.points.iter_mut().flatten() {
+                    p.lateral = -p.lateral;
+                }
+            }
+            *rise = z - self.z_reference;
+        }
+        Ok(out)
+    }
+
     /// Rolling radius difference r_left − r_right (m) at lateral displacement `y` (m) of the
     /// wheelset translated **without roll**, each wheel lowered onto its own rail: the Δr of
     /// EN 15302 (see [`super::table::rolling_radius_difference`]). [`Self::solve`] instead rolls

@@ -7,6 +7,17 @@
 //! profiles' own accuracy. Because the grid is uniform the lookup is an index computation (no
 //! search), well under 100 ns (bench `contact_table`).
 //!
+//! Relative roll. The rigid pose rolls the wheelset until both wheels touch; a running wheelset
+//! rolls a little more or less relative to its rails (elastic load transfer, and on a gauge
+//! irregularity each wheel is read at its own rail's offset, where the rigid roll differs: on the
+//! conformal worn tread, 0.43 rad/m of rigid roll against lateral position). Measured in
+//! `tests/rolled_rails.rs`: up to 2.5e-4 rad on S_high, 5e-5 on S_norm and S_low — enough to
+//! move a conformal contact point by a tenth of a millimetre and the study's S_high metrics by
+//! about 2 %. So each wheel's contact is also solved at the rigid roll ± [`ROLL_LAYER`], each
+//! wheel lowered onto its own rail ([`ContactGeometry::solve_rolled`]), and
+//! [`ContactTable::lookup_wheel`] interpolates in the wheelset's roll as well (bilinear, clamped
+//! to the layers; beyond them the vehicle's interference term carries the rest of the roll).
+//!
 //! Each wheel keeps two slots (field-side/tread and gauge-side/flange point, see
 //! [`WheelContact`]); while building, a single contact point is put in the slot whose position on
 //! the wheel at the neighbouring grid point is nearest, so that each slot varies continuously.
@@ -39,12 +50,31 @@ impl Default for ContactTableParams {
     }
 }
 
+/// Roll (rad) of the relative-roll layers about the rigid pose: the table holds the wheels'
+/// contact at the rigid roll and at ± this.
+pub const ROLL_LAYER: f64 = 1e-3;
+
 /// Contact states on a uniform grid of lateral displacements.
 #[derive(Debug, Clone)]
 pub struct ContactTable {
     y_min: f64,
     step: f64,
     rows: Vec<WheelsetContact>,
+    /// Per layer (rigid roll − and + [`ROLL_LAYER`]), per row, per wheel: the rise (m) at which
+    /// that wheel touches and its contact.
+    rolled: [Vec<[(f64, WheelContact); 2]>; 2],
+}
+
+/// One wheel's contact read from a table at a roll of the wheelset relative to its rails.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelLookup {
+    /// Roll of the wheelset at which the points hold, rad: the asked roll, clamped to the
+    /// layers around the rigid pose.
+    pub roll: f64,
+    /// Rise of the wheelset centre from its centred pose at which this wheel touches, m.
+    pub rise: f64,
+    /// The wheel's contact points at that pose.
+    pub contact: WheelContact,
 }
 
 impl ContactTable {
@@ -81,10 +111,32 @@ impl ContactTable {
             keep_slots_continuous(&mut row, &rows[i + 1]);
             rows[i] = row;
         }
+        let rolled = [-ROLL_LAYER, ROLL_LAYER].map(|offset| -> Result<_> {
+            let mut layer = vec![[(0.0, WheelContact::default()); 2]; n];
+            let mut solve = |i: usize, neighbour: Option<&[(f64, WheelContact); 2]>| {
+                let mut wheels = geometry.solve_rolled(y_at(i), rows[i].roll + offset, &mut ws)?;
+                if let Some(prev) = neighbour {
+                    for s in 0..2 {
+                        keep_slot_continuous(&mut wheels[s].1, &prev[s].1);
+                    }
+                }
+                Ok::<_, LocoError>(wheels)
+            };
+            layer[centre] = solve(centre, None)?;
+            for i in (centre + 1)..n {
+                layer[i] = solve(i, Some(&layer[i - 1]))?;
+            }
+            for i in (0..centre).rev() {
+                layer[i] = solve(i, Some(&layer[i + 1]))?;
+            }
+            Ok(layer)
+        });
+        let [minus, plus] = rolled;
         Ok(Self {
             y_min: params.y_min,
             step: params.step,
             rows,
+            rolled: [minus?, plus?],
         })
     }
 
@@ -111,11 +163,7 @@ impl ContactTable {
     /// [`Self::y_range`] for derailment.
     #[inline]
     pub fn lookup(&self, y: f64) -> WheelsetContact {
-        let last = self.rows.len() - 1;
-        let x = ((y - self.y_min) / self.step).clamp(0.0, last as f64);
-        let x = if x.is_nan() { 0.0 } else { x };
-        let i = (x as usize).min(last - 1);
-        let w = x - i as f64;
+        let (i, w) = self.cell(y);
         let (a, b) = (&self.rows[i], &self.rows[i + 1]);
         let mut out = WheelsetContact {
             lateral_displacement: y,
@@ -124,16 +172,40 @@ impl ContactTable {
             wheels: [WheelContact::default(); 2],
         };
         for s in 0..2 {
-            for k in 0..2 {
-                out.wheels[s].points[k] = match (&a.wheels[s].points[k], &b.wheels[s].points[k]) {
-                    (Some(p), Some(q)) => Some(lerp_point(p, q, w)),
-                    (Some(p), None) if w < 0.5 => Some(*p),
-                    (None, Some(q)) if w >= 0.5 => Some(*q),
-                    _ => None,
-                };
-            }
+            out.wheels[s] = lerp_wheel(&a.wheels[s], &b.wheels[s], w);
         }
         out
+    }
+
+    /// The contact of the wheel on `side` (0 left, 1 right) at lateral displacement `y` (m)
+    /// with the wheelset rolled by `roll` (rad, relative to the rails), interpolated in both.
+    #[inline]
+    pub fn lookup_wheel(&self, y: f64, side: usize, roll: f64) -> WheelLookup {
+        let (i, w) = self.cell(y);
+        let (a, b) = (&self.rows[i], &self.rows[i + 1]);
+        let rigid = lerp(a.roll, b.roll, w);
+        let offset = (roll - rigid).clamp(-ROLL_LAYER, ROLL_LAYER);
+        let offset = if offset.is_nan() { 0.0 } else { offset };
+        let layer = &self.rolled[usize::from(offset > 0.0)];
+        let f = offset.abs() / ROLL_LAYER;
+        let (ra, rb) = (&layer[i][side], &layer[i + 1][side]);
+        let at_rigid = lerp_wheel(&a.wheels[side], &b.wheels[side], w);
+        let at_layer = lerp_wheel(&ra.1, &rb.1, w);
+        WheelLookup {
+            roll: rigid + offset,
+            rise: lerp(lerp(a.rise, b.rise, w), lerp(ra.0, rb.0, w), f),
+            contact: lerp_wheel(&at_rigid, &at_layer, f),
+        }
+    }
+
+    /// Grid cell `i` and weight `w` of `y` (m): clamped to the grid, a NaN reads the first cell.
+    #[inline]
+    fn cell(&self, y: f64) -> (usize, f64) {
+        let last = self.rows.len() - 1;
+        let x = ((y - self.y_min) / self.step).clamp(0.0, last as f64);
+        let x = if x.is_nan() { 0.0 } else { x };
+        let i = (x as usize).min(last - 1);
+        (i, x - i as f64)
     }
 
     /// Rolling radius difference left − right (m) at each `ys` (m), from the table.
@@ -168,6 +240,21 @@ fn lerp(a: f64, b: f64, w: f64) -> f64 {
     a + (b - a) * w
 }
 
+/// Interpolates a wheel's slots; a slot present at one end only is kept in its half.
+#[inline]
+fn lerp_wheel(a: &WheelContact, b: &WheelContact, w: f64) -> WheelContact {
+    let mut out = WheelContact::default();
+    for k in 0..2 {
+        out.points[k] = match (&a.points[k], &b.points[k]) {
+            (Some(p), Some(q)) => Some(lerp_point(p, q, w)),
+            (Some(p), None) if w < 0.5 => Some(*p),
+            (None, Some(q)) if w >= 0.5 => Some(*q),
+            _ => None,
+        };
+    }
+    out
+}
+
 #[inline]
 fn lerp_point(p: &ContactPoint, q: &ContactPoint, w: f64) -> ContactPoint {
     ContactPoint {
@@ -186,15 +273,18 @@ fn lerp_point(p: &ContactPoint, q: &ContactPoint, w: f64) -> ContactPoint {
 /// Moves a lone contact point into the slot it occupied at the neighbouring grid point.
 fn keep_slots_continuous(row: &mut WheelsetContact, neighbour: &WheelsetContact) {
     for s in 0..2 {
-        let wheel = &mut row.wheels[s];
-        if let [Some(p), None] = wheel.points {
-            let prev = &neighbour.wheels[s].points;
-            let dist = |q: &Option<ContactPoint>| {
-                q.map_or(f64::INFINITY, |q| (q.wheel_y - p.wheel_y).abs())
-            };
-            if dist(&prev[1]) < dist(&prev[0]) {
-                wheel.points = [None, Some(p)];
-            }
+        keep_slot_continuous(&mut row.wheels[s], &neighbour.wheels[s]);
+    }
+}
+
+/// As [`keep_slots_continuous`] for one wheel.
+fn keep_slot_continuous(wheel: &mut WheelContact, neighbour: &WheelContact) {
+    if let [Some(p), None] = wheel.points {
+        let prev = &neighbour.points;
+        let dist =
+            |q: &Option<ContactPoint>| q.map_or(f64::INFINITY, |q| (q.wheel_y - p.wheel_y).abs());
+        if dist(&prev[1]) < dist(&prev[0]) {
+            wheel.points = [None, Some(p)];
         }
     }
 }

@@ -3,6 +3,7 @@
 
 use super::spectrum::{Channel, TrackSpectrum};
 use crate::error::{check_non_negative, check_positive, LocoError, Result};
+use std::sync::Arc;
 
 /// Rail irregularities at one distance along the track (track frame: y left, z up).
 ///
@@ -45,6 +46,19 @@ pub struct TrackIrregularity {
     run_in: f64,
     /// The target spectrum of a synthesised track (None for a measured one).
     spectrum: Option<TrackSpectrum>,
+    /// The file rows of a measured track, for errors that name a line.
+    origin: Option<Arc<TrackOrigin>>,
+}
+
+/// The rows of the file a measured track was read from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrackOrigin {
+    /// The file's path as given.
+    pub path: String,
+    /// Line number (1-based) of each data row.
+    pub lines: Vec<usize>,
+    /// Each row's vertical, alignment, cross level and gauge (m), indexed by [`Channel::index`].
+    pub channels: [Vec<f64>; 4],
 }
 
 impl TrackIrregularity {
@@ -118,7 +132,19 @@ impl TrackIrregularity {
             nodes,
             run_in,
             spectrum,
+            origin: None,
         })
+    }
+
+    /// The same track, remembering the file rows it was read from.
+    pub fn with_origin(mut self, origin: TrackOrigin) -> Self {
+        self.origin = Some(Arc::new(origin));
+        self
+    }
+
+    /// The file rows of a measured track (None for a synthesised one).
+    pub fn origin(&self) -> Option<&TrackOrigin> {
+        self.origin.as_deref()
     }
 
     /// Rail irregularities at distance `s` (m). Cheap: two node reads and a cubic.

@@ -8,7 +8,7 @@
 //! the median spacing of the file), slopes by centred differences, then a cosine run-in is
 //! applied as for synthesised tracks.
 
-use super::irregularity::TrackIrregularity;
+use super::irregularity::{TrackIrregularity, TrackOrigin};
 use crate::error::{check_non_negative, check_positive, LocoError, Result};
 
 /// Options for reading a measured file.
@@ -51,6 +51,7 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
     };
     let mut distance: Vec<f64> = Vec::new();
     let mut columns: [Vec<f64>; 4] = Default::default();
+    let mut lines: Vec<usize> = Vec::new();
     let mut seen_data_line = false;
     for (index, raw) in text.lines().enumerate() {
         let line_no = index + 1;
@@ -95,6 +96,7 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
             }
         }
         distance.push(numbers[0]);
+        lines.push(line_no);
         for c in 0..4 {
             columns[c].push(numbers[c + 1] * 1e-3);
         }
@@ -137,7 +139,15 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
     let grid: Vec<f64> = (0..nodes).map(|i| i as f64 * step).collect();
     let values: [Vec<f64>; 4] = std::array::from_fn(|c| interpolate(&distance, &columns[c], &grid));
     let slopes: [Vec<f64>; 4] = std::array::from_fn(|c| centred_slopes(&values[c], step));
-    TrackIrregularity::from_channels(step, &values, &slopes, params.run_in, None)
+    Ok(
+        TrackIrregularity::from_channels(step, &values, &slopes, params.run_in, None)?.with_origin(
+            TrackOrigin {
+                path: path.to_string(),
+                lines,
+                channels: columns,
+            },
+        ),
+    )
 }
 
 /// Median of the spacings of increasing `x`.

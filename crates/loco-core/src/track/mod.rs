@@ -13,7 +13,7 @@ pub mod measured;
 pub mod spectrum;
 pub mod synthesis;
 
-pub use irregularity::{RailIrregularity, TrackIrregularity};
+pub use irregularity::{RailIrregularity, TrackIrregularity, TrackOrigin};
 pub use measured::{load_csv, parse_csv, MeasuredParams};
 pub use spectrum::{Channel, TrackSpectrum};
 pub use synthesis::{synthesize, SynthesisParams};

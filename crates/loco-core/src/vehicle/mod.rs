@@ -36,4 +36,5 @@ pub mod simulation;
 pub mod statics;
 pub mod structure;
 pub mod suspension;
+pub mod track_limits;
 pub mod wheel_rail;

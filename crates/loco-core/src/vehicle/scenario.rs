@@ -10,6 +10,7 @@ use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
 use super::structure::VehicleStructure;
+use super::track_limits::TrackLimits;
 use super::wheel_rail::{CreepSolver, WheelRail, WheelRailSettings};
 use crate::contact::builtin::builtin_profile;
 use crate::contact::fastsim::{Fastsim, FastsimParams};
@@ -287,6 +288,7 @@ pub fn simulate_prepared(
     cancel: Option<&AtomicBool>,
 ) -> Result<SimulationResult> {
     scenario.validate()?;
+    TrackLimits::of(&wheel_rail).check(&track)?;
     let start = start_distance(&structure);
     let bogie_mass = structure.parameters.get("bogie_frame.mass")?;
     let mut system = VehicleSystem::new(

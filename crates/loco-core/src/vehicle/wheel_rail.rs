@@ -5,11 +5,12 @@
 //! wheelset's pose relative to the rails (lateral `y'`, which includes `h0·θ`, and roll `φ − θ`)
 //! is what the contact table is read at; contact points and frames come back into the track frame
 //! rotated by θ. Each wheel reads the table at the wheelset's position relative to its own rail
-//! (so gauge irregularities move each contact on its own). The table gives the rigid pose at
-//! which both wheels just touch (rise, roll) and up to two contact points per wheel (tread and
+//! (so gauge irregularities move each contact on its own), and at the wheelset's roll relative
+//! to the rails (the table's relative-roll layers, `contact::table`). The table gives the pose
+//! (rise, roll) at which the wheel just touches and up to two contact points per wheel (tread and
 //! flange) with their geometry. The normal contact is elastic: the interference of a point is how
-//! far the wheel sits below its rigid pose at that point (`rise + roll·l + z_rail − z − φ·l −
-//! gap`, all in the plane), its normal part `δ = interference·cos γ` gives the Hertz force
+//! far the wheel sits below that pose at that point (`rise + roll·l + z_rail − z − φ·l − gap`,
+//! all in the plane), its normal part `δ = interference·cos γ` gives the Hertz force
 //! `N = K_H δ^{3/2}` (K_H from the curvatures at the point) plus a small normal damping `c_n δ̇`
 //! (δ̇ from the slip velocity along the normal) that keeps the unsprung masses from ringing on
 //! the stiff contact.
@@ -32,7 +33,6 @@ use crate::contact::creepage::{
 };
 use crate::contact::fastsim::Fastsim;
 use crate::contact::fastsim_table::FastsimTable;
-use crate::contact::geometry::WheelsetContact;
 use crate::contact::hertz_table::HertzShapeTable;
 use crate::contact::kalker::{CreepForces, Creepages};
 use crate::contact::table::ContactTable;
@@ -131,6 +131,11 @@ impl WheelRail {
         self.centred_radius
     }
 
+    /// Half the lateral distance between the nominal contact points, m.
+    pub fn contact_half_distance(&self) -> f64 {
+        self.settings.contact_half_distance
+    }
+
     /// The contact table.
     pub fn table(&self) -> &ContactTable {
         &self.table
@@ -191,11 +196,13 @@ impl WheelRail {
                     ),
                 });
             }
-            let pose: WheelsetContact = self.table.lookup(y_rel);
+            let wheel = self
+                .table
+                .lookup_wheel(y_rel, side_index, pose_in_plane.roll);
             let mut forces = WheelForces::default();
-            for point in pose.wheels[side_index].points.iter().flatten() {
+            for point in wheel.contact.points.iter().flatten() {
                 let l = point.lateral;
-                let interference = pose.rise + pose.roll * l + plane.rail_height(side_index)
+                let interference = wheel.rise + wheel.roll * l + plane.rail_height(side_index)
                     - pose_in_plane.vertical
                     - pose_in_plane.roll * l
                     - point.gap;
@@ -209,7 +216,7 @@ impl WheelRail {
                     *side,
                     point.rolling_radius,
                     point.contact_angle,
-                    pose.roll,
+                    wheel.roll,
                     u[YAW],
                 );
                 let offset = plane.to_track([lead - u[YAW] * l, l, point.vertical]);
@@ -238,7 +245,7 @@ impl WheelRail {
                     // a tangential spring.
                     let dx = u[0] - point.rolling_radius * u[PITCH] - l * u[YAW];
                     let dy = pose_in_plane.lateral
-                        + point.rolling_radius * (pose_in_plane.roll - pose.roll);
+                        + point.rolling_radius * (pose_in_plane.roll - wheel.roll);
                     CreepForces {
                         fx: -static_stiffness * dx,
                         fy: -static_stiffness * dy * cg,
