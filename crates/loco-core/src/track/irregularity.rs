@@ -163,7 +163,10 @@ impl TrackIrregularity {
     /// track scaled down to amplitudes where the vehicle responds linearly.
     pub fn scaled(&self, factor: f64) -> Result<Self> {
         if !factor.is_finite() {
-            return Err(LocoError::param("factor", format!("must be finite, got {factor}")));
+            return Err(LocoError::param(
+                "factor",
+                format!("must be finite, got {factor}"),
+            ));
         }
         let mut track = self.clone();
         for node in &mut track.nodes {

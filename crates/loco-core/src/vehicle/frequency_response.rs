@@ -35,6 +35,8 @@ pub struct FrequencyResponse {
     pub h: Vec<C64>,
     /// Running speed, m/s.
     pub speed: f64,
+    /// Longitudinal position of each wheelset ahead of the vehicle origin, m (the delays).
+    pub wheelset_x: [f64; N_WHEELSETS],
 }
 
 impl FrequencyResponse {
@@ -138,7 +140,9 @@ impl ResponseSolver {
                         let feed = |offset: usize| -> Vec<f64> {
                             rows.iter()
                                 .map(|&r| {
-                                    (0..4).map(|k| model.d[r * p + col(offset + k)] * rails[k]).sum()
+                                    (0..4)
+                                        .map(|k| model.d[r * p + col(offset + k)] * rails[k])
+                                        .sum()
                                 })
                                 .collect()
                         };
@@ -163,7 +167,11 @@ impl ResponseSolver {
     }
 
     /// Transfer functions from `inputs` to the prepared outputs at `frequencies` (Hz).
-    pub fn response(&mut self, inputs: &[Channel], frequencies: &[f64]) -> Result<FrequencyResponse> {
+    pub fn response(
+        &mut self,
+        inputs: &[Channel],
+        frequencies: &[f64],
+    ) -> Result<FrequencyResponse> {
         check_frequencies(frequencies)?;
         if inputs.is_empty() {
             return Err(LocoError::param("inputs", "must not be empty"));
@@ -207,6 +215,7 @@ impl ResponseSolver {
             outputs: self.outputs.clone(),
             h,
             speed: self.speed,
+            wheelset_x: self.wheelset_x,
         })
     }
 }

@@ -157,7 +157,10 @@ mod tests {
                 let d = if i == j { s } else { C64::new(0.0, 0.0) };
                 d - C64::new(a[i * n + j], 0.0)
             });
-            let reference = dense.lu().solve(&nalgebra::DVector::from_vec(b.clone())).unwrap();
+            let reference = dense
+                .lu()
+                .solve(&nalgebra::DVector::from_vec(b.clone()))
+                .unwrap();
             for i in 0..n {
                 assert!((x[i] - reference[i]).norm() < 1e-12 * (1.0 + reference[i].norm()));
             }
