@@ -19,14 +19,14 @@ from loco._loco import (
     __version__,
 )
 from loco.batch import BatchResult, run_batch
+from loco.simulation import Scenario, SimulationResult, simulate
+from loco.stability import critical_speed, eigen
 from loco.track_response import (
     FrequencyResponse,
     ResponsePsd,
     frequency_response,
     response_psd,
 )
-from loco.simulation import Scenario, SimulationResult, simulate
-from loco.stability import critical_speed, eigen
 from loco.vehicle import Locomotive
 
 __all__ = [

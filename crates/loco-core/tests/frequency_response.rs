@@ -213,14 +213,10 @@ fn symmetric_channels_leave_the_lateral_motion_alone() {
         .map(|&c| run_case(&model, &base, c, 40.0).unwrap())
         .collect();
     for case in &cases[1..] {
-        for o in 0..OUTPUTS.len() {
+        for (o, name) in OUTPUTS.iter().enumerate() {
             let reference = cases[0].time_domain[o].norm();
-            assert!(
-                case.time_domain[o].norm() < 1e-8 * reference,
-                "{}",
-                OUTPUTS[o]
-            );
-            assert!(case.linear[o].norm() < 1e-8 * reference, "{}", OUTPUTS[o]);
+            assert!(case.time_domain[o].norm() < 1e-8 * reference, "{name}");
+            assert!(case.linear[o].norm() < 1e-8 * reference, "{name}");
         }
     }
 }

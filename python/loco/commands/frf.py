@@ -17,8 +17,8 @@ import pandas as pd
 
 import loco
 from loco import dampers
-from loco.track_response import DEFAULT_OUTPUTS, INPUTS
 from loco.studies.report import save_json, save_table
+from loco.track_response import DEFAULT_OUTPUTS, INPUTS
 
 NAME = "frf"
 HELP = "frequency response of the linearised vehicle to track irregularities and output PSDs"
@@ -46,7 +46,9 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     vehicle = (
-        loco.Locomotive.default() if args.vehicle is None else loco.Locomotive.from_toml(args.vehicle)
+        loco.Locomotive.default()
+        if args.vehicle is None
+        else loco.Locomotive.from_toml(args.vehicle)
     )
     scenario = loco.Scenario(
         scenario=args.scenario,

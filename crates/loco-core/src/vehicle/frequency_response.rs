@@ -191,11 +191,13 @@ impl ResponseSolver {
                     // e^{ik x_w} times (position + ik · slope).
                     let delay = C64::from_polar(1.0, k * self.wheelset_x[w]);
                     let (pos, slope) = (delay, delay * C64::new(0.0, k));
-                    for i in 0..n {
-                        rhs[ii][i] += pos * cols.position[i] + slope * cols.slope[i];
+                    let reduced = cols.position.iter().zip(&cols.slope);
+                    for (x, (p, d)) in rhs[ii].iter_mut().zip(reduced) {
+                        *x += pos * *p + slope * *d;
                     }
-                    for o in 0..m {
-                        feed[ii][o] += pos * cols.d_position[o] + slope * cols.d_slope[o];
+                    let direct = cols.d_position.iter().zip(&cols.d_slope);
+                    for (x, (p, d)) in feed[ii].iter_mut().zip(direct) {
+                        *x += pos * *p + slope * *d;
                     }
                 }
             }
