@@ -108,6 +108,12 @@ def test_response_psd_bookkeeping(vehicle: loco.Locomotive) -> None:
     # W_y scales as A^0.3 with the amplitude: (0.5)^0.3.
     assert half.sperling_lateral / full.sperling_lateral == pytest.approx(0.5**0.3, rel=1e-9)
     assert "rms_carbody_floor_ay_front" in full.to_xarray().attrs
+    assert full.stable and full.least_damping_ratio > 0.0
+    # Worn wheels with the soft yaw damper hunt at 200 km/h (see test_stability.py).
+    hunting = loco.response_psd(
+        vehicle, loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1), frequencies=f
+    )
+    assert not hunting.stable
 
 
 @pytest.mark.parametrize(

@@ -163,6 +163,14 @@ class ResponsePsd:
     rms: dict[str, float]
     sperling_lateral: float
     spectrum: str
+    #: Damping ratio of the least damped mode in 0.3–20 Hz (–, NaN when none).
+    least_damping_ratio: float = float("nan")
+
+    @property
+    def stable(self) -> bool:
+        """Whether the linear model is stable (no growing mode in 0.3–20 Hz): only then do
+        the spectra describe the running vehicle."""
+        return bool(np.isnan(self.least_damping_ratio) or self.least_damping_ratio > 0.0)
 
     def to_xarray(self) -> Any:
         """``xarray.DataArray`` on (output, frequency), rms and W_y as attributes."""
@@ -171,6 +179,7 @@ class ResponsePsd:
         attrs: dict[str, Any] = {f"rms_{k}": v for k, v in self.rms.items()}
         attrs.update(
             sperling_lateral=self.sperling_lateral,
+            least_damping_ratio=self.least_damping_ratio,
             spectrum=self.spectrum,
             loco_version=_loco.__version__,
         )
@@ -225,7 +234,7 @@ def response_psd(
     f = _frequencies(frequencies)
     name = scenario.spectrum if spectrum is None else spectrum
     lo, hi = scenario.band if band is None else band
-    psd, rms, wy = _loco.response_psd(
+    psd, rms, wy, zeta = _loco.response_psd(
         scenario.native(),
         outs,
         f,
@@ -243,4 +252,5 @@ def response_psd(
         rms=dict(zip(outs, rms.tolist(), strict=True)),
         sperling_lateral=float(wy),
         spectrum=name,
+        least_damping_ratio=float(zeta),
     )

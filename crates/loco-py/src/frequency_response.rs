@@ -73,7 +73,8 @@ fn frequency_response<'py>(
 
 /// One-sided output PSDs `[output][frequency]` (unit²/Hz), rms values over the grid (unit) and
 /// the Sperling index W_y of the carbody floor (–) from the four channels of `spectrum` in the
-/// wavelength `band` (m), amplitudes times `amplitude_scale`.
+/// wavelength `band` (m), amplitudes times `amplitude_scale`, and the damping ratio of the least
+/// damped mode in 0.3–20 Hz (–, NaN when none: the spectra hold only when it is positive).
 #[pyfunction]
 #[pyo3(signature = (
     scenario, outputs, frequencies, *, spectrum="cn-hsr".to_string(), band=(2.0, 200.0),
@@ -116,11 +117,17 @@ fn response_psd<'py>(
         psd.into_pyarray(py),
         result.rms.into_pyarray(py),
         result.sperling_lateral,
+        result.least_damping_ratio,
     ))
 }
 
 /// `(psd, rms, W_y)` of [`response_psd`].
-type PsdTuple<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<f64>>, f64);
+type PsdTuple<'py> = (
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    f64,
+    f64,
+);
 
 /// Names of the four irregularity channels, in storage order (vertical, alignment, cross level,
 /// gauge).

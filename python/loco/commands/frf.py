@@ -88,6 +88,7 @@ def run(args: argparse.Namespace) -> int:
     )
     summary = [{"quantity": f"rms_{o}", "value": v} for o, v in psd.rms.items()]
     summary.append({"quantity": "W_y", "value": psd.sperling_lateral})
+    summary.append({"quantity": "least_damping_ratio", "value": psd.least_damping_ratio})
     save_table(pd.DataFrame(summary), out / "frf_summary.csv")
     save_json(
         {
@@ -105,5 +106,7 @@ def run(args: argparse.Namespace) -> int:
     )
     for row in summary:
         print(f"{row['quantity']}: {row['value']:.4g}")
+    if not psd.stable:
+        print("warning: the linear model is unstable here; the spectra are not a steady state")
     print(f"written to {out}")
     return 0

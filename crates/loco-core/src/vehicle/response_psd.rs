@@ -23,6 +23,7 @@
 //!   (see the README's verification of the linear stochastic method for the measured ratio).
 
 use super::frequency_response::{check_frequencies, FrequencyResponse, ResponseSolver};
+use super::linearise::{least_damped, LinearSearch};
 use super::run_metrics::CARBODY_LATERAL;
 use super::track_input::TrackInputModel;
 use crate::error::{check_positive, LocoError, Result};
@@ -99,6 +100,9 @@ pub struct ResponsePsd {
     pub rms: Vec<f64>,
     /// Sperling index W_y of [`CARBODY_LATERAL`] (–).
     pub sperling_lateral: f64,
+    /// Damping ratio of the least damped mode in 0.3–20 Hz (–; NaN: no mode there). The
+    /// spectra describe the running vehicle only when it is positive (linearly stable).
+    pub least_damping_ratio: f64,
 }
 
 /// Output PSD of one output of a frequency response (all its inputs summed as independent).
@@ -146,6 +150,8 @@ pub fn response_psd(
         psd,
         rms,
         sperling_lateral: expected_sperling(model, settings)?,
+        least_damping_ratio: least_damped(&model.a, model.n, LinearSearch::default().band)?
+            .map_or(f64::NAN, |m| m.damping_ratio),
     })
 }
 
