@@ -21,6 +21,12 @@ from loco._loco import (
 from loco.batch import BatchResult, run_batch
 from loco.simulation import Scenario, SimulationResult, simulate
 from loco.stability import critical_speed, eigen
+from loco.track_response import (
+    FrequencyResponse,
+    ResponsePsd,
+    frequency_response,
+    response_psd,
+)
 from loco.vehicle import Locomotive
 
 __all__ = [
@@ -28,18 +34,22 @@ __all__ = [
     "ContactError",
     "DerailmentError",
     "DivergenceError",
+    "FrequencyResponse",
     "InternalError",
     "LocoError",
     "LocoIOError",
     "Locomotive",
     "ParameterError",
     "ProfileFormatError",
+    "ResponsePsd",
     "Scenario",
     "SimulationError",
     "SimulationResult",
     "__version__",
     "critical_speed",
     "eigen",
+    "frequency_response",
+    "response_psd",
     "run_batch",
     "simulate",
 ]

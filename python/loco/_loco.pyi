@@ -519,3 +519,31 @@ def run_batch(
     list[tuple[int, NDArray[np.float64], list[str], NDArray[np.float64]]],
 ]: ...
 def batch_status_names() -> list[str]: ...
+
+# --- frequency response (frequency_response.rs) --------------------------------------------------
+
+__all__ += ["frequency_response", "irregularity_channels", "response_psd"]
+
+def irregularity_channels() -> list[str]: ...
+def frequency_response(
+    scenario: RunScenario,
+    inputs: list[str],
+    outputs: list[str],
+    frequencies: NDArray[np.float64],
+    *,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+) -> tuple[NDArray[np.complex128], float, list[float]]: ...
+def response_psd(
+    scenario: RunScenario,
+    outputs: list[str],
+    frequencies: NDArray[np.float64],
+    *,
+    spectrum: str = ...,
+    band: tuple[float, float] = ...,
+    amplitude_scale: float = 1.0,
+    toml_text: str | None = None,
+    origin: str = ...,
+    overrides: dict[str, float] = ...,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float]: ...

@@ -10,6 +10,7 @@ mod contact;
 mod creep;
 mod dampers;
 mod errors;
+mod frequency_response;
 mod metrics;
 mod scenario;
 mod track;
@@ -30,6 +31,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     dampers::register(m)?;
     scenario::register(m)?;
     vehicle::register(m)?;
+    frequency_response::register(m)?;
     batch::register(m)?;
     Ok(())
 }

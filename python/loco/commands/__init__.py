@@ -8,5 +8,6 @@ COMMAND_MODULES: list[str] = [
     "contact_report",
     "info",
     "damper_bench",
+    "frf",
     "reproduce",
 ]

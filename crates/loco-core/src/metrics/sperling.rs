@@ -159,7 +159,12 @@ pub(crate) fn segment_starts(n: usize, len: usize) -> Vec<usize> {
 }
 
 /// Combined index of one segment from its power per bin.
-fn segment_index(power: &[f64], df: f64, direction: Direction, params: &SperlingParams) -> f64 {
+pub(crate) fn segment_index(
+    power: &[f64],
+    df: f64,
+    direction: Direction,
+    params: &SperlingParams,
+) -> f64 {
     let mut sum_w10 = 0.0;
     spectral_lines(power, df, |energy, f| {
         if f >= params.f_min && f <= params.f_max {

@@ -103,28 +103,15 @@ impl TrackIrregularity {
                 let (w, dw) = taper(s, run_in);
                 let ch = |c: Channel| values[c.index()][i] * w;
                 let dch = |c: Channel| slopes[c.index()][i] * w + values[c.index()][i] * dw;
-                let (v, a, c, g) = (
-                    ch(Channel::Vertical),
-                    ch(Channel::Alignment),
-                    ch(Channel::CrossLevel),
-                    ch(Channel::Gauge),
-                );
-                let (dv, da, dc, dg) = (
-                    dch(Channel::Vertical),
-                    dch(Channel::Alignment),
-                    dch(Channel::CrossLevel),
-                    dch(Channel::Gauge),
-                );
-                [
-                    a + 0.5 * g,
-                    v + 0.5 * c,
-                    a - 0.5 * g,
-                    v - 0.5 * c,
-                    da + 0.5 * dg,
-                    dv + 0.5 * dc,
-                    da - 0.5 * dg,
-                    dv - 0.5 * dc,
-                ]
+                let mut node = [0.0; 8];
+                for c in Channel::ALL {
+                    let (value, slope) = (ch(c), dch(c));
+                    for (k, weight) in c.rails().into_iter().enumerate() {
+                        node[k] += weight * value;
+                        node[k + 4] += weight * slope;
+                    }
+                }
+                node
             })
             .collect();
         Ok(Self {
@@ -196,6 +183,22 @@ impl TrackIrregularity {
             dy_right_ds: slope(2),
             dz_right_ds: slope(3),
         }
+    }
+
+    /// The same track with every irregularity multiplied by `factor` (–), e.g. a synthesised
+    /// track scaled down to amplitudes where the vehicle responds linearly.
+    pub fn scaled(&self, factor: f64) -> Result<Self> {
+        if !factor.is_finite() {
+            return Err(LocoError::param(
+                "factor",
+                format!("must be finite, got {factor}"),
+            ));
+        }
+        let mut track = self.clone();
+        for node in &mut track.nodes {
+            node.iter_mut().for_each(|v| *v *= factor);
+        }
+        Ok(track)
     }
 
     /// Errors unless the data covers distances up to `s_end` (m), naming both lengths.

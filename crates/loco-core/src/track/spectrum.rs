@@ -71,6 +71,20 @@ impl Channel {
     pub fn index(self) -> usize {
         self as usize
     }
+
+    /// How a unit value of the channel moves the rails, as (y_left, z_left, y_right, z_right)
+    /// (m per m): `z_left = v + c/2`, `z_right = v − c/2`, `y_left = a + g/2`,
+    /// `y_right = a − g/2` (cross level c is left minus right height; gauge widening g moves each
+    /// rail outward by g/2, y being + left). The one definition: the track's rails are built from
+    /// it and the frequency response feeds it to the linear model.
+    pub fn rails(self) -> [f64; 4] {
+        match self {
+            Channel::Vertical => [0.0, 1.0, 0.0, 1.0],
+            Channel::Alignment => [1.0, 0.0, 1.0, 0.0],
+            Channel::CrossLevel => [0.0, 0.5, 0.0, -0.5],
+            Channel::Gauge => [0.5, 0.0, -0.5, 0.0],
+        }
+    }
 }
 
 /// A piecewise power law `S(f) = A_i / f^{n_i}` for `f` in `[breaks[i-1], breaks[i])`, in

@@ -12,6 +12,9 @@
 //! - [`linearise`], [`eigenvalues`]: the state matrix about equilibrium, its eigenvalues and the
 //!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
 //! - [`modes`]: which bodies and motions carry a mode's kinetic energy.
+//! - [`track_input`], [`shifted_hessenberg`], [`frequency_response`], [`response_psd`]: the model
+//!   linearised with the track as input, its transfer functions to every recorded channel and the
+//!   output spectra on a random track.
 //! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once.
 
 pub mod bodies;
@@ -19,6 +22,7 @@ pub mod critical_speed;
 pub mod damper_elements;
 pub mod eigenvalues;
 pub mod elements;
+pub mod frequency_response;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
@@ -28,13 +32,16 @@ pub mod mass;
 pub mod modes;
 pub mod parameters;
 pub mod rail_plane;
+pub mod response_psd;
 pub mod run;
 pub mod run_metrics;
 pub mod scenario;
 pub mod scenario_settings;
+pub mod shifted_hessenberg;
 pub mod simulation;
 pub mod statics;
 pub mod structure;
 pub mod suspension;
+pub mod track_input;
 pub mod track_limits;
 pub mod wheel_rail;

@@ -65,7 +65,7 @@ impl RunOutput {
 }
 
 /// Where the acceleration channels are measured.
-struct Probes {
+pub(crate) struct Probes {
     /// (name, body, point from the body's centre of gravity, m, component 0..3).
     acceleration: Vec<(String, usize, [f64; 3], usize)>,
     /// Recorded damper quantities: (damper index, quantity), in [`DAMPER_CHANNELS`] order.
@@ -96,7 +96,7 @@ const DAMPER_CHANNELS: [(&[DamperRole], DamperQuantity); 3] = [
     ),
 ];
 
-fn probes(s: &VehicleStructure) -> Result<Probes> {
+pub(crate) fn probes(s: &VehicleStructure) -> Result<Probes> {
     let p = &s.parameters;
     let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
     let side = p.get("carbody.sperling_point_lateral_offset")?;
@@ -149,7 +149,7 @@ pub fn channel_names(structure: &VehicleStructure) -> Result<Vec<String>> {
     Ok(names_of(structure, &probes(structure)?))
 }
 
-fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<String> {
+pub(crate) fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<String> {
     let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
     for w in 0..N_WHEELSETS {
         names.push(format!("wheelset{}_y", w + 1));
@@ -290,13 +290,25 @@ fn record(
     dy: &[f64],
     channels: &mut [Vec<f64>],
 ) {
-    let s = &system.structure;
-    let acc = &dy[N_DOF..2 * N_DOF];
     let mut c = 0;
-    let mut push = |v: f64| {
+    sample(system, probes, y, dy, |v| {
         channels[c].push(v);
         c += 1;
-    };
+    });
+}
+
+/// One sample of every channel, in [`channel_names`] order, from state `y` and its derivatives
+/// `dy` (the system's wheel and damper forces must be those of the evaluation that gave `dy`).
+/// The one recording function: the runs record it and the frequency response linearises it.
+pub(crate) fn sample(
+    system: &VehicleSystem,
+    probes: &Probes,
+    y: &[f64],
+    dy: &[f64],
+    mut push: impl FnMut(f64),
+) {
+    let s = &system.structure;
+    let acc = &dy[N_DOF..2 * N_DOF];
     for (_, body, point, component) in &probes.acceleration {
         let a = s.bodies[*body].map.apply(acc);
         push(point_motion(&a, *point)[*component]);

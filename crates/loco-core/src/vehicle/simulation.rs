@@ -125,6 +125,9 @@ pub struct VehicleSystem {
     pub start_distance: f64,
     /// Tangential contact stiffness (N/m) used instead of creep in the static search; 0 in runs.
     pub static_stiffness: f64,
+    /// Rail irregularities each wheelset sees in place of the track look-up (`None` in runs): the
+    /// track as an input of the linearisation ([`super::track_input`]).
+    pub rail_inputs: Option<[RailIrregularity; N_WHEELSETS]>,
     /// Number of continuous states.
     n_states: usize,
     /// First error met inside a right-hand side (reported after the step).
@@ -174,6 +177,7 @@ impl VehicleSystem {
             speed: SpeedProfile::Constant(speed),
             start_distance,
             static_stiffness: 0.0,
+            rail_inputs: None,
             n_states: offset,
             error: None,
             body_states: BodyStates::default(),
@@ -224,7 +228,9 @@ impl VehicleSystem {
             self.damper_forces[i] = force;
         }
         for w in 0..N_WHEELSETS {
-            let rails = if statics {
+            let rails = if let Some(inputs) = &self.rail_inputs {
+                inputs[w]
+            } else if statics {
                 RailIrregularity::default()
             } else {
                 self.track.at(self.wheelset_distance(w, t))

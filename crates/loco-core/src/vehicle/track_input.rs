@@ -1,0 +1,157 @@
+//! The locomotive linearised about its static equilibrium at a running speed with the track as an
+//! input: `ẏ = A y + B u`, `z = C y + D u` (deviations from equilibrium, SI units).
+//!
+//! - `u` holds, per wheelset, the eight rail inputs that [`VehicleSystem`] reads at the wheelset's
+//!   own distance ([`RailIrregularity`]: y_left, z_left, y_right, z_right in m, then their slopes
+//!   d/ds in m/m), wheelset 1 first: `4 × 8 = 32` inputs.
+//! - `z` is every channel a run records ([`super::run::channel_names`], their units), through the
+//!   same recording function ([`super::run::sample`]), so any recorded channel is an output.
+//!
+//! All four matrices are central finite differences of the full nonlinear right-hand side and of
+//! the recording function about the equilibrium, as [`super::linearise`] forms `A` for the
+//! eigenvalue analysis (same perturbation; the rail inputs are perturbed by 1e-7 m and 1e-7 m/m,
+//! small against the 0.1 mm contact table grid). Discrete damper states (a frequency valve) stay
+//! at their start state, as in the eigenvalue analysis: an FSD is linearised with its valve in the
+//! `start_closed` position.
+
+use super::integrator::OdeSystem;
+use super::layout::N_WHEELSETS;
+use super::run::{names_of, probes, sample};
+use super::simulation::VehicleSystem;
+use super::statics::static_equilibrium;
+use crate::error::Result;
+use crate::track::RailIrregularity;
+
+/// Rail inputs per wheelset (positions then slopes).
+pub const RAIL_INPUTS: usize = 8;
+
+/// Relative perturbation of states and inputs (see [`super::linearise`]).
+const PERTURBATION: f64 = 1e-7;
+
+/// The linearised vehicle with the rails as inputs; matrices row-major.
+#[derive(Debug, Clone)]
+pub struct TrackInputModel {
+    /// Number of states n.
+    pub n: usize,
+    /// Number of inputs, `4 · 8`.
+    pub n_inputs: usize,
+    /// Output channel names, in the order of the rows of C and D.
+    pub outputs: Vec<String>,
+    /// n×n state matrix, 1/s.
+    pub a: Vec<f64>,
+    /// n×32 input matrix.
+    pub b: Vec<f64>,
+    /// m×n output matrix.
+    pub c: Vec<f64>,
+    /// m×32 feed-through matrix.
+    pub d: Vec<f64>,
+    /// Longitudinal position of each wheelset ahead of the vehicle origin, m.
+    pub wheelset_x: [f64; N_WHEELSETS],
+    /// Running speed, m/s.
+    pub speed: f64,
+    /// Equilibrium state.
+    pub y0: Vec<f64>,
+}
+
+/// The field of a rail irregularity with index `j` (0..8, [`RailIrregularity`] field order).
+fn rail_field(r: &mut RailIrregularity, j: usize) -> &mut f64 {
+    match j {
+        0 => &mut r.y_left,
+        1 => &mut r.z_left,
+        2 => &mut r.y_right,
+        3 => &mut r.z_right,
+        4 => &mut r.dy_left_ds,
+        5 => &mut r.dz_left_ds,
+        6 => &mut r.dy_right_ds,
+        _ => &mut r.dz_right_ds,
+    }
+}
+
+/// Right-hand side and outputs of `system` at `y` with the current rail inputs.
+fn evaluate(
+    system: &mut VehicleSystem,
+    probes: &super::run::Probes,
+    y: &[f64],
+    dy: &mut [f64],
+    z: &mut Vec<f64>,
+) {
+    system.derivatives(0.0, y, dy);
+    z.clear();
+    sample(system, probes, y, dy, |v| z.push(v));
+}
+
+/// Linearises `system` about its static equilibrium at its (constant) speed with the rails as
+/// inputs. The system's own track is not read.
+pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> {
+    let y0 = static_equilibrium(system)?;
+    let probes = probes(&system.structure)?;
+    let outputs = names_of(&system.structure, &probes);
+    let (n, m, p) = (system.dimension(), outputs.len(), N_WHEELSETS * RAIL_INPUTS);
+    let (mut a, mut c) = (vec![0.0; n * n], vec![0.0; m * n]);
+    let (mut b, mut d) = (vec![0.0; n * p], vec![0.0; m * p]);
+    let (mut plus, mut minus) = (vec![0.0; n], vec![0.0; n]);
+    let (mut z_plus, mut z_minus) = (Vec::with_capacity(m), Vec::with_capacity(m));
+    let perfect = [RailIrregularity::default(); N_WHEELSETS];
+    system.rail_inputs = Some(perfect);
+    let mut y = y0.clone();
+    for j in 0..n {
+        let h = PERTURBATION * (1.0 + y0[j].abs());
+        y[j] = y0[j] + h;
+        evaluate(system, &probes, &y, &mut plus, &mut z_plus);
+        y[j] = y0[j] - h;
+        evaluate(system, &probes, &y, &mut minus, &mut z_minus);
+        y[j] = y0[j];
+        for i in 0..n {
+            a[i * n + j] = (plus[i] - minus[i]) / (2.0 * h);
+        }
+        for i in 0..m {
+            c[i * n + j] = (z_plus[i] - z_minus[i]) / (2.0 * h);
+        }
+    }
+    for w in 0..N_WHEELSETS {
+        for k in 0..RAIL_INPUTS {
+            let col = w * RAIL_INPUTS + k;
+            let h = PERTURBATION;
+            let mut rails = perfect;
+            *rail_field(&mut rails[w], k) = h;
+            system.rail_inputs = Some(rails);
+            evaluate(system, &probes, &y0, &mut plus, &mut z_plus);
+            *rail_field(&mut rails[w], k) = -h;
+            system.rail_inputs = Some(rails);
+            evaluate(system, &probes, &y0, &mut minus, &mut z_minus);
+            for i in 0..n {
+                b[i * p + col] = (plus[i] - minus[i]) / (2.0 * h);
+            }
+            for i in 0..m {
+                d[i * p + col] = (z_plus[i] - z_minus[i]) / (2.0 * h);
+            }
+        }
+    }
+    system.rail_inputs = None;
+    if let Some(e) = system.error.take() {
+        return Err(e);
+    }
+    Ok(TrackInputModel {
+        n,
+        n_inputs: p,
+        outputs,
+        a,
+        b,
+        c,
+        d,
+        wheelset_x: system.structure.layout.wheelset_x,
+        speed: system.speed_at(0.0),
+        y0,
+    })
+}
+
+/// The track-input model of a vehicle parameter set in a scenario (wheel, rail, speed, yaw
+/// damper; the scenario's track is not used) about its equilibrium at the scenario's speed.
+pub fn scenario_track_model(
+    parameters: super::parameters::ParameterSet,
+    scenario: &super::scenario::Scenario,
+) -> Result<TrackInputModel> {
+    let vehicle = super::scenario::PerfectTrackVehicle::new(parameters, scenario)?;
+    let mut system = vehicle.system(scenario.speed)?;
+    track_input_model(&mut system)
+}
