@@ -15,6 +15,8 @@
 //! - [`track_input`], [`shifted_hessenberg`], [`frequency_response`], [`response_psd`]: the model
 //!   linearised with the track as input, its transfer functions to every recorded channel and the
 //!   output spectra on a random track.
+//! - [`rail_plane`]: the rails' plane at a wheelset, in which the contact table is read (cross
+//!   level rolls it); [`track_limits`]: which irregularities the contact can follow.
 //! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once.
 
 pub mod bodies;
