@@ -140,10 +140,11 @@ pub struct HertzContact {
 /// Load-independent Hertz coefficients of one geometry: solve once, evaluate cheaply.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HertzCoefficients {
-    /// a = `long_coef` · N^{1/3} (m·N^{-1/3}).
-    long_coef: f64,
-    /// b = `lat_coef` · N^{1/3} (m·N^{-1/3}).
-    lat_coef: f64,
+    /// a³ = `long_cubed` · N (m³/N): the semi-axes grow as N^{1/3}, kept cubed so a contact
+    /// takes one cube root (the hot path evaluates the coefficients at every contact).
+    long_cubed: f64,
+    /// b / a (–).
+    lat_over_long: f64,
     /// Normal stiffness K_H of N = K_H δ^{3/2} (N·m^{-3/2}).
     stiffness: f64,
 }
@@ -172,20 +173,21 @@ impl HertzCoefficients {
         e: f64,
     ) -> Self {
         let sum = a_curv + b_curv;
-        // Semi-axes at N = 1 N.
-        let major = (3.0 * e / (2.0 * PI * g * g * sum * contact_modulus)).cbrt();
-        let minor = g * major;
-        let approach_unit = 3.0 * k / (2.0 * PI * major * contact_modulus);
+        // Semi-axes at N = 1 N, cubed: a³ = 3E/(2π g² (A+B) E*).
+        let major_cubed = 3.0 * e / (2.0 * PI * g * g * sum * contact_modulus);
+        // δ(N = 1) = 3K/(2π a E*), so K_H = δ^{-3/2} = (2π E*/(3K))^{3/2} · a^{3/2}.
+        let c = 2.0 * PI * contact_modulus / (3.0 * k);
+        let stiffness = c * c.sqrt() * major_cubed.sqrt();
         // The major axis lies along the direction of the smaller relative curvature.
-        let (long_coef, lat_coef) = if a_curv <= b_curv {
-            (major, minor)
+        let (long_cubed, lat_over_long) = if a_curv <= b_curv {
+            (major_cubed, g)
         } else {
-            (minor, major)
+            (g * g * g * major_cubed, 1.0 / g)
         };
         Self {
-            long_coef,
-            lat_coef,
-            stiffness: 1.0 / approach_unit.powf(1.5),
+            long_cubed,
+            lat_over_long,
+            stiffness,
         }
     }
 
@@ -203,7 +205,15 @@ impl HertzCoefficients {
 
     /// Ratio a/b of the semi-axes (rolling over lateral), independent of the load.
     pub fn axis_ratio(&self) -> f64 {
-        self.long_coef / self.lat_coef
+        1.0 / self.lat_over_long
+    }
+
+    /// Semi-axes (a along the rolling direction, b lateral; m) for normal force `normal_force`
+    /// (N, > 0): one cube root, for the vehicle's time loop.
+    #[inline]
+    pub fn semi_axes(&self, normal_force: f64) -> (f64, f64) {
+        let a = (self.long_cubed * normal_force).cbrt();
+        (a, a * self.lat_over_long)
     }
 
     /// Normal force (N) for an elastic approach `approach` (m); zero for δ ≤ 0 (no contact).
@@ -222,9 +232,7 @@ impl HertzCoefficients {
         if normal_force <= 0.0 || !normal_force.is_finite() {
             return HertzContact::default();
         }
-        let scale = normal_force.cbrt();
-        let a = self.long_coef * scale;
-        let b = self.lat_coef * scale;
+        let (a, b) = self.semi_axes(normal_force);
         HertzContact {
             semi_axis_long: a,
             semi_axis_lat: b,

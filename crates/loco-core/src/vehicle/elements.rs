@@ -122,9 +122,9 @@ impl Bushing {
         let theta: [f64; 3] =
             std::array::from_fn(|k| 0.5 * (ua[3 + k] * ma[k] + ub[3 + k] * mb[k]));
         let d_local = sub(d, cross(theta, d));
-        let v_local = sub(v, cross(theta, v));
+        // The velocity's own turning (θ × v) is a product of two small motions: left out.
         let f_local: [f64; 3] =
-            std::array::from_fn(|k| -self.stiffness[k] * d_local[k] - self.damping[k] * v_local[k]);
+            std::array::from_fn(|k| -self.stiffness[k] * d_local[k] - self.damping[k] * v[k]);
         let f = add(f_local, cross(theta, f_local));
         self.at.apply_pair(s, f, wrenches);
         let couple = cross(d, f);

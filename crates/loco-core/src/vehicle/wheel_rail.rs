@@ -253,14 +253,9 @@ impl WheelRail {
                     }
                 } else {
                     let creep = creepages_of_slip(&slip, &angular, &frame, speed);
-                    let ellipse = hertz.contact(normal);
-                    self.creep.creep_forces(
-                        ellipse.semi_axis_long,
-                        ellipse.semi_axis_lat,
-                        normal,
-                        self.settings.friction,
-                        &creep,
-                    )
+                    let (a, b) = hertz.semi_axes(normal);
+                    self.creep
+                        .creep_forces(a, b, normal, self.settings.friction, &creep)
                 };
                 let f: [f64; 3] = std::array::from_fn(|k| {
                     normal * frame.normal[k]
