@@ -88,6 +88,8 @@ struct StripLanes {
     eta: [f64; LANES],
     /// Strip half-length a_j / a (0 for padding).
     half_length: [f64; LANES],
+    /// a / a_j (0 for padding).
+    inv_half_length: [f64; LANES],
 }
 
 /// A ready-to-run FaStrip solver: parameters, Kalker table and the normalised grid.
@@ -96,14 +98,106 @@ pub struct Fastrip {
     params: FastripParams,
     table: KalkerTable,
     strips: Vec<StripLanes>,
-    /// Per element k of a strip: `(x_k/a_j, √(1 − (x_k/a_j)²))`.
-    elements: Vec<(f64, f64)>,
+    /// Per element k of a strip: `(u_k = x_k/a_j, √(1 − u_k²), u_k·nx/2)`.
+    elements: Vec<(f64, f64, f64)>,
     /// Elliptic pressure at shape factor 1 per N/(ab) (–), so that FASTSIM's discrete bound sums
     /// to μN.
     pressure_scale: f64,
     /// Σ_j (π/2)(a_j/a)² · 2/ny (–): the strips' semi-ellipses, so that p0 = N/(ab · this)
     /// (2π/3 in the limit, Hertz's p0 = 3N/(2πab)).
     strip_norm: f64,
+}
+
+/// Per-call constants of [`Fastrip::creep_forces`] (SI units; primed creepages in units of μ p0).
+struct Call {
+    a: f64,
+    b: f64,
+    inv_a: f64,
+    xi_s: f64,
+    eta_s: f64,
+    phi_s: f64,
+    d_factor: f64,
+    unit_spin: bool,
+    /// FASTSIM's slope of p_x: (ξ/L1, φ/L3), Pa/m and Pa/m².
+    slope_x: (f64, f64),
+    /// FASTSIM's slope of p_y: (η/L2, φ/L3), Pa/m and Pa/m².
+    slope_y: (f64, f64),
+    bound_peak: f64,
+    dy: f64,
+    /// μ p0/a · dy (N/m²).
+    strip_scale: f64,
+}
+
+/// Per-strip inputs of the FASTSIM march, [`LANES`] strips at a time.
+#[derive(Debug, Clone, Copy, Default)]
+struct Lanes {
+    y: [f64; LANES],
+    a_j: [f64; LANES],
+    slope_x: [f64; LANES],
+    bound_j: [f64; LANES],
+    /// x_i/a_j · nx/2 + 1/2 (–).
+    slip_offset: [f64; LANES],
+}
+
+/// The FASTSIM march's state and sums: traction p, slip-zone sums q (traction on the bound
+/// weighted by the slip fraction) and wb (slip fraction × bound, Pa), FASTSIM's own sums s for
+/// the fallback.
+#[derive(Debug, Clone, Copy, Default)]
+struct LaneState {
+    x_prev: [f64; LANES],
+    px: [f64; LANES],
+    py: [f64; LANES],
+    qx: [f64; LANES],
+    qy: [f64; LANES],
+    qxy: [f64; LANES],
+    wb: [f64; LANES],
+    sx: [f64; LANES],
+    sy: [f64; LANES],
+    sxy: [f64; LANES],
+}
+
+/// FASTSIM over `elements` for [`LANES`] strips; `SLIP`: accumulate the slip-zone sums,
+/// `FALLBACK`: FASTSIM's own sums.
+#[inline(always)]
+fn march<const SLIP: bool, const FALLBACK: bool>(
+    elements: &[(f64, f64, f64)],
+    lanes: &Lanes,
+    slope_y: (f64, f64),
+    st: &mut LaneState,
+) {
+    for &(u_k, shape_k, e_k) in elements {
+        for l in 0..LANES {
+            let x = u_k * lanes.a_j[l];
+            let h = st.x_prev[l] - x;
+            let x_mid = 0.5 * (st.x_prev[l] + x);
+            st.px[l] -= h * lanes.slope_x[l];
+            st.py[l] -= h * (slope_y.0 + slope_y.1 * x_mid);
+            let bound = lanes.bound_j[l] * shape_k;
+            let norm = (st.px[l] * st.px[l] + st.py[l] * st.py[l])
+                .sqrt()
+                .max(f64::MIN_POSITIVE);
+            // Finite even for p = 0 (where it multiplies zero tractions).
+            let to_bound = (bound / norm).min(f64::MAX);
+            if SLIP {
+                let w = (lanes.slip_offset[l] - e_k).clamp(0.0, 1.0);
+                let wt = w * to_bound;
+                let ty = wt * st.py[l];
+                st.qx[l] += wt * st.px[l];
+                st.qy[l] += ty;
+                st.qxy[l] += ty * x;
+                st.wb[l] += w * bound;
+            }
+            let scale = to_bound.min(1.0);
+            st.px[l] *= scale;
+            st.py[l] *= scale;
+            if FALLBACK {
+                st.sx[l] += st.px[l];
+                st.sy[l] += st.py[l];
+                st.sxy[l] += x * st.py[l];
+            }
+            st.x_prev[l] = x;
+        }
+    }
 }
 
 /// Per-strip result of the strip theory: slip half-length d (m; d = a_j means full slip),
@@ -141,15 +235,16 @@ impl Fastrip {
                     let j = group * LANES + lane;
                     if j < ny {
                         (lanes.eta[lane], lanes.half_length[lane]) = strip(j);
+                        lanes.inv_half_length[lane] = 1.0 / lanes.half_length[lane];
                     }
                 }
                 lanes
             })
             .collect();
-        let elements: Vec<(f64, f64)> = (0..nx)
+        let elements: Vec<(f64, f64, f64)> = (0..nx)
             .map(|k| {
                 let u = 1.0 - (2 * k + 1) as f64 / nx as f64;
-                (u, (1.0 - u * u).sqrt())
+                (u, (1.0 - u * u).sqrt(), 0.5 * u * nx as f64)
             })
             .collect();
         // p_n = scale · N/(ab) · s_j · √(1 − u²): Σ_j Σ_k s_j² √(1 − u_k²) · 4/(nx ny) = 1/scale.
@@ -205,122 +300,103 @@ impl Fastrip {
         let xi_s = -2.0 * (1.0 - nu) * g * coef.c11 * xi / (PI * PI * mu_p0);
         let eta_s = -2.0 * (1.0 - nu) * g * coef.c22 * eta / (PI * PI * mu_p0);
         let phi_s = -3.0 * g * (a * b).sqrt() * coef.c23 * phi / (2.0 * PI * mu_p0);
-        let check_bound = phi_s.abs() > 1.0;
-        let solve_strip = |y: f64, a_j: f64| -> StripSolution {
-            let u = xi_s - phi_s * y / a;
-            let one_m = 1.0 - phi_s * phi_s;
-            let disc = eta_s * eta_s + one_m * u * u;
-            let d = if (phi_s - 1.0).abs() <= UNIT_SPIN_TOLERANCE || disc < 0.0 {
-                a_j
-            } else {
-                let d = (disc.sqrt() + eta_s * phi_s) / one_m * a / (1.0 - nu);
-                // Negative, beyond the strip or not a number: full slip.
-                if d >= 0.0 && d < a_j {
-                    d
-                } else {
-                    a_j
-                }
-            };
-            let v = eta_s + phi_s * d / a;
-            let norm = (u * u + v * v).max(1e-20).sqrt();
-            StripSolution {
-                d,
-                kappa: u / norm,
-                lambda: v / norm,
-            }
+        let call = Call {
+            a,
+            b,
+            inv_a: 1.0 / a,
+            xi_s,
+            eta_s,
+            phi_s,
+            // d = (√disc + η'φ') · a/((1 − ν)(1 − φ'²)); |φ'| = 1 is full slip.
+            d_factor: a / ((1.0 - nu) * (1.0 - phi_s * phi_s)),
+            unit_spin: (phi_s.abs() - 1.0).abs() <= UNIT_SPIN_TOLERANCE,
+            slope_x: (xi * inv_l1, phi * inv_l3),
+            slope_y: (eta * inv_l2, phi * inv_l3),
+            bound_peak: mu * normal_force * self.pressure_scale / (a * b),
+            dy: 2.0 * b / self.params.ny as f64,
+            strip_scale: mu_p0 / a * 2.0 * b / self.params.ny as f64,
         };
-        let bound_peak = mu * normal_force * self.pressure_scale / (a * b);
+        // Beyond |φ'| = 1 the strip solution may exceed the bound: FASTSIM's own sums are kept
+        // for the fallback.
+        if phi_s.abs() > 1.0 {
+            self.integrate::<true>(&call)
+        } else {
+            self.integrate::<false>(&call)
+        }
+    }
+
+    fn integrate<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
         let nx = self.params.nx as f64;
-        let dy = 2.0 * b / self.params.ny as f64;
-        // μ p0/a · dy (N/m²).
-        let strip_scale = mu_p0 / a * dy;
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
         for group in &self.strips {
-            let mut y = [0.0; LANES];
-            let mut a_j = [0.0; LANES];
-            let mut slope_x = [0.0; LANES];
-            let mut bound_j = [0.0; LANES];
-            let mut x_i = [0.0; LANES];
-            let mut inv_h = [0.0; LANES];
+            let mut lanes = Lanes::default();
             let mut sol = [StripSolution::default(); LANES];
+            let mut first_slip = self.elements.len();
             for l in 0..LANES {
-                y[l] = group.eta[l] * b;
-                a_j[l] = group.half_length[l] * a;
-                slope_x[l] = xi * inv_l1 - phi * y[l] * inv_l3;
-                bound_j[l] = bound_peak * group.half_length[l];
-                sol[l] = solve_strip(y[l], a_j[l]);
-                x_i[l] = 2.0 * sol[l].d - a_j[l];
-                // Padding strips (a_j = 0) get weight 1/2 on zero tractions.
-                inv_h[l] = if a_j[l] > 0.0 { 0.5 * nx / a_j[l] } else { 0.0 };
-            }
-            // FASTSIM along the strips. For the slip zone: the traction before projection scaled
-            // onto the bound, weighted by the element's fraction behind x_i (q), and the weights
-            // times the bound (w); for the fallback: FASTSIM's own traction sums (s).
-            let mut px = [0.0; LANES];
-            let mut py = [0.0; LANES];
-            let mut qx = [0.0; LANES];
-            let mut qy = [0.0; LANES];
-            let mut qxy = [0.0; LANES];
-            let mut wb = [0.0; LANES];
-            let mut sx = [0.0; LANES];
-            let mut sy = [0.0; LANES];
-            let mut sxy = [0.0; LANES];
-            let mut x_prev = a_j;
-            for &(u_k, shape_k) in &self.elements {
-                for l in 0..LANES {
-                    let x = u_k * a_j[l];
-                    let h = x_prev[l] - x;
-                    let x_mid = 0.5 * (x_prev[l] + x);
-                    px[l] -= h * slope_x[l];
-                    py[l] -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
-                    let bound = bound_j[l] * shape_k;
-                    let norm = (px[l] * px[l] + py[l] * py[l])
-                        .sqrt()
-                        .max(f64::MIN_POSITIVE);
-                    let to_bound = bound / norm;
-                    let w = ((x_i[l] - x) * inv_h[l] + 0.5).clamp(0.0, 1.0);
-                    let wt = w * to_bound;
-                    qx[l] += wt * px[l];
-                    qy[l] += wt * py[l];
-                    qxy[l] += wt * x * py[l];
-                    wb[l] += w * bound;
-                    let scale = to_bound.min(1.0);
-                    px[l] *= scale;
-                    py[l] *= scale;
-                    sx[l] += px[l];
-                    sy[l] += py[l];
-                    sxy[l] += x * py[l];
-                    x_prev[l] = x;
+                let y = group.eta[l] * k.b;
+                let a_j = group.half_length[l] * k.a;
+                lanes.y[l] = y;
+                lanes.a_j[l] = a_j;
+                lanes.slope_x[l] = k.slope_x.0 - y * k.slope_x.1;
+                lanes.bound_j[l] = k.bound_peak * group.half_length[l];
+                // Strip theory, branch-free so that the lanes vectorise.
+                let u = k.xi_s - k.phi_s * y * k.inv_a;
+                let disc = k.eta_s * k.eta_s + (1.0 - k.phi_s * k.phi_s) * u * u;
+                let d_raw = (disc.max(0.0).sqrt() + k.eta_s * k.phi_s) * k.d_factor;
+                let partial = !k.unit_spin && disc >= 0.0 && d_raw >= 0.0 && d_raw < a_j;
+                let d = if partial { d_raw } else { a_j };
+                let v = k.eta_s + k.phi_s * d * k.inv_a;
+                let inv = 1.0 / (u * u + v * v).max(1e-20).sqrt();
+                sol[l] = StripSolution {
+                    d,
+                    kappa: u * inv,
+                    lambda: v * inv,
+                };
+                // x_i/a_j · nx/2 + 1/2: an element's slip fraction is this minus its u_k·nx/2.
+                let c = (2.0 * d - a_j) * k.inv_a * group.inv_half_length[l] * 0.5 * nx + 0.5;
+                lanes.slip_offset[l] = c;
+                if group.half_length[l] > 0.0 {
+                    // Elements before the first with a slip fraction (u_k·nx/2 < c) need none.
+                    // (`as` truncates: the floor of a non-negative number.)
+                    let before = (0.5 * nx - 1.5 - c).max(0.0);
+                    first_slip = first_slip.min(before as usize);
                 }
             }
+            let mut state = LaneState {
+                x_prev: lanes.a_j,
+                ..LaneState::default()
+            };
+            let (ahead, behind) = self.elements.split_at(first_slip.min(self.elements.len()));
+            march::<false, FALLBACK>(ahead, &lanes, k.slope_y, &mut state);
+            march::<true, FALLBACK>(behind, &lanes, k.slope_y, &mut state);
             for l in 0..LANES {
-                let s = sol[l];
-                let adhesion = s.d < a_j[l];
-                if adhesion && check_bound && self.exceeds_bound(a, a_j[l], s, phi_s) {
-                    let area = 2.0 * a_j[l] / nx * dy;
-                    fx += sx[l] * area;
-                    fy += sy[l] * area;
-                    mz += (sxy[l] - y[l] * sx[l]) * area;
+                let (s, a_j, y) = (sol[l], lanes.a_j[l], lanes.y[l]);
+                let adhesion = s.d < a_j;
+                if FALLBACK && adhesion && self.exceeds_bound(k.a, a_j, s, k.phi_s) {
+                    let area = 2.0 * a_j / nx * k.dy;
+                    fx += state.sx[l] * area;
+                    fy += state.sy[l] * area;
+                    mz += (state.sxy[l] - y * state.sx[l]) * area;
                     continue;
                 }
                 // ∫ S_c·a over the adhesion zone (m²) and its first moment (m³).
                 let (c0, c1) = if adhesion {
-                    segment(a_j[l], x_i[l])
+                    segment(a_j, 2.0 * s.d - a_j)
                 } else {
                     (0.0, 0.0)
                 };
                 if adhesion {
-                    let [gx, gy, gm] = adhesion_integrals(a_j[l], s, phi_s, c0, c1);
-                    fx += gx * strip_scale;
-                    fy += gy * strip_scale;
-                    mz += (gm - y[l] * gx) * strip_scale;
+                    let [gx, gy, gm] = adhesion_integrals(a_j, s, k.phi_s, c0, c1);
+                    fx += gx * k.strip_scale;
+                    fy += gy * k.strip_scale;
+                    mz += (gm - y * gx) * k.strip_scale;
                 }
                 // Slip zone: FASTSIM's directions, the exact magnitude ∫ μ p_n over the zone.
-                if wb[l] > 0.0 {
-                    let k = (0.5 * PI * a_j[l] * a_j[l] - c0) * strip_scale / wb[l];
-                    fx += qx[l] * k;
-                    fy += qy[l] * k;
-                    mz += (qxy[l] - y[l] * qx[l]) * k;
+                if state.wb[l] > 0.0 {
+                    let w = (0.5 * PI * a_j * a_j - c0) * k.strip_scale / state.wb[l];
+                    fx += state.qx[l] * w;
+                    fy += state.qy[l] * w;
+                    mz += (state.qxy[l] - y * state.qx[l]) * w;
                 }
             }
         }
@@ -332,7 +408,7 @@ impl Fastrip {
     fn exceeds_bound(&self, a: f64, a_j: f64, s: StripSolution, phi_s: f64) -> bool {
         let x_i = 2.0 * s.d - a_j;
         let r = a_j - s.d;
-        self.elements.iter().any(|&(u, _)| {
+        self.elements.iter().any(|&(u, _, _)| {
             let x = u * a_j;
             let sc = (a_j * a_j - x * x).max(0.0).sqrt() / a;
             let sa = (r * r - (x - s.d).powi(2)).max(0.0).sqrt() / a;

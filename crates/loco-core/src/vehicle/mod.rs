@@ -12,9 +12,11 @@
 //! - [`linearise`], [`eigenvalues`]: the state matrix about equilibrium, its eigenvalues and the
 //!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
 //! - [`modes`]: which bodies and motions carry a mode's kinetic energy.
-//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once.
+//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once;
+//!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
 
 pub mod bodies;
+pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
 pub mod eigenvalues;

@@ -16,6 +16,7 @@
 use super::elements::{add_force, BodyStates, Wrenches};
 use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
 use crate::contact::creepage::{creepages, BodyVelocity, ContactFrame, Side};
+use crate::contact::fastrip::Fastrip;
 use crate::contact::fastsim::Fastsim;
 use crate::contact::fastsim_table::FastsimTable;
 use crate::contact::geometry::WheelsetContact;
@@ -63,6 +64,8 @@ pub enum CreepSolver {
     /// FASTSIM's normalised results interpolated from a table built once (faster per call;
     /// force error about 2 % of μN, see `contact::fastsim_table`).
     Tabulated(Arc<FastsimTable>),
+    /// FaStrip (strip theory with spin, see `contact::fastrip`) at every evaluation.
+    Strip(Fastrip),
 }
 
 impl CreepSolver {
@@ -71,6 +74,7 @@ impl CreepSolver {
         match self {
             CreepSolver::Direct(f) => f.creep_forces(a, b, n, mu, creep),
             CreepSolver::Tabulated(t) => t.creep_forces(a, b, n, mu, creep),
+            CreepSolver::Strip(s) => s.creep_forces(a, b, n, mu, creep),
         }
     }
 }
