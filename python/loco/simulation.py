@@ -81,7 +81,7 @@ class Scenario:
         if creep_table is not None:
             raise _loco.ParameterError(
                 "invalid parameter `creep_table`: replaced by `creep`; "
-                "write creep=\"table\" (or \"fastsim\", \"fastrip\")"
+                'write creep="table" (or "fastsim", "fastrip")'
             )
 
     def profiles(self) -> tuple[Profile, Profile]:

@@ -1,6 +1,6 @@
 //! FaStrip: strip theory for steady rolling with spin (M. Sh. Sichani, R. Enblom, M. Berg, "An
 //! alternative to FASTSIM for tangential solution of the wheel–rail contact", Vehicle System
-//! Dynamics 54(6), 2016, pp. 748–764), in the modified form of CONTACT (E. Vollebregt, CONTACT user
+//! Dynamics 54(6), 2016), in the modified form of CONTACT (E. Vollebregt, CONTACT user
 //! guide, "Modified FaStrip", solver M = 5, 2024–2025).
 //!
 //! Each strip y = y_j of the Hertz ellipse (half-length a_j = a √(1 − y_j²/b²), peak pressure
@@ -18,7 +18,7 @@
 //!
 //! with c = √(ab) and Kalker's coefficients C_ij(a/b) (Sichani's scaling, chosen so that the
 //! strip theory reproduces Kalker's linear Fx and Fy at vanishing creepage). A strip has no
-//! adhesion (full slip) when the discriminant is negative, d < 0, d ≥ a_j or φ' = 1. In the slip
+//! adhesion (full slip) when the discriminant is negative, d < 0, d ≥ a_j or |φ'| = 1. In the slip
 //! zone the traction has the magnitude μ p_n of Hertz's elliptic pressure and the direction of
 //! FASTSIM's traction with three flexibilities (as in [`super::fastsim`], elliptic bound), which
 //! is integrated along every strip from the leading edge. Where |φ'| > 1 the strip solution can
@@ -26,20 +26,21 @@
 //! element centre keeps the FASTSIM solution instead.
 //!
 //! Quadrature: the adhesion zone is integrated in closed form per strip (∫S_c over [x_i, a_j]
-//! by the circular-segment formula, ∫S_a = π(a_j − d)²/(2a)), the slip zone by FASTSIM's
-//! elements, each weighted by the fraction of its length behind x_i, so the two zones partition
-//! every strip exactly. At vanishing creepage the only error left is the strip (y) quadrature;
-//! at full slip the discrete pressure sums to N, so |F| = μN on any grid (as for FASTSIM). The
-//! Kalker coefficient factor k multiplies G in the flexibilities and in the scaled creepages.
-//! [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
+//! by the circular-segment formula, ∫S_a = π(a_j − d)²/(2a)); the slip zone has the closed-form
+//! magnitude ∫ μ p_n over [−a_j, x_i], spread over FASTSIM's elements in proportion to each
+//! element's slip fraction times its bound, along each element's FASTSIM direction (sampling
+//! the bound at element centres instead would overstate the thin slip zones of small creepage).
+//! At vanishing creepage the only error left is the strip (y) quadrature; p0 is taken from the
+//! same strip sum (→ 3N/(2πab)), so full slip gives |F| = μN on any grid. The Kalker coefficient
+//! factor k multiplies G in the flexibilities and in the scaled creepages. Strips are integrated
+//! [`LANES`] at a time, as in FASTSIM, and the slip-zone sums start at a group's first slipping
+//! element. [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
 
+use super::fastrip_march::{march, Element, LaneState, Lanes, LANES};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
 use std::f64::consts::PI;
-
-/// Strips integrated together in the hot loop (as in FASTSIM).
-const LANES: usize = 4;
 
 /// Tolerance on φ' = 1, where the slip-length formula is singular (CONTACT's value).
 const UNIT_SPIN_TOLERANCE: f64 = 1e-6;
@@ -98,8 +99,7 @@ pub struct Fastrip {
     params: FastripParams,
     table: KalkerTable,
     strips: Vec<StripLanes>,
-    /// Per element k of a strip: `(u_k = x_k/a_j, √(1 − u_k²), u_k·nx/2)`.
-    elements: Vec<(f64, f64, f64)>,
+    elements: Vec<Element>,
     /// Elliptic pressure at shape factor 1 per N/(ab) (–), so that FASTSIM's discrete bound sums
     /// to μN.
     pressure_scale: f64,
@@ -126,78 +126,6 @@ struct Call {
     dy: f64,
     /// μ p0/a · dy (N/m²).
     strip_scale: f64,
-}
-
-/// Per-strip inputs of the FASTSIM march, [`LANES`] strips at a time.
-#[derive(Debug, Clone, Copy, Default)]
-struct Lanes {
-    y: [f64; LANES],
-    a_j: [f64; LANES],
-    slope_x: [f64; LANES],
-    bound_j: [f64; LANES],
-    /// x_i/a_j · nx/2 + 1/2 (–).
-    slip_offset: [f64; LANES],
-}
-
-/// The FASTSIM march's state and sums: traction p, slip-zone sums q (traction on the bound
-/// weighted by the slip fraction) and wb (slip fraction × bound, Pa), FASTSIM's own sums s for
-/// the fallback.
-#[derive(Debug, Clone, Copy, Default)]
-struct LaneState {
-    x_prev: [f64; LANES],
-    px: [f64; LANES],
-    py: [f64; LANES],
-    qx: [f64; LANES],
-    qy: [f64; LANES],
-    qxy: [f64; LANES],
-    wb: [f64; LANES],
-    sx: [f64; LANES],
-    sy: [f64; LANES],
-    sxy: [f64; LANES],
-}
-
-/// FASTSIM over `elements` for [`LANES`] strips; `SLIP`: accumulate the slip-zone sums,
-/// `FALLBACK`: FASTSIM's own sums.
-#[inline(always)]
-fn march<const SLIP: bool, const FALLBACK: bool>(
-    elements: &[(f64, f64, f64)],
-    lanes: &Lanes,
-    slope_y: (f64, f64),
-    st: &mut LaneState,
-) {
-    for &(u_k, shape_k, e_k) in elements {
-        for l in 0..LANES {
-            let x = u_k * lanes.a_j[l];
-            let h = st.x_prev[l] - x;
-            let x_mid = 0.5 * (st.x_prev[l] + x);
-            st.px[l] -= h * lanes.slope_x[l];
-            st.py[l] -= h * (slope_y.0 + slope_y.1 * x_mid);
-            let bound = lanes.bound_j[l] * shape_k;
-            let norm = (st.px[l] * st.px[l] + st.py[l] * st.py[l])
-                .sqrt()
-                .max(f64::MIN_POSITIVE);
-            // Finite even for p = 0 (where it multiplies zero tractions).
-            let to_bound = (bound / norm).min(f64::MAX);
-            if SLIP {
-                let w = (lanes.slip_offset[l] - e_k).clamp(0.0, 1.0);
-                let wt = w * to_bound;
-                let ty = wt * st.py[l];
-                st.qx[l] += wt * st.px[l];
-                st.qy[l] += ty;
-                st.qxy[l] += ty * x;
-                st.wb[l] += w * bound;
-            }
-            let scale = to_bound.min(1.0);
-            st.px[l] *= scale;
-            st.py[l] *= scale;
-            if FALLBACK {
-                st.sx[l] += st.px[l];
-                st.sy[l] += st.py[l];
-                st.sxy[l] += x * st.py[l];
-            }
-            st.x_prev[l] = x;
-        }
-    }
 }
 
 /// Per-strip result of the strip theory: slip half-length d (m; d = a_j means full slip),
@@ -241,14 +169,21 @@ impl Fastrip {
                 lanes
             })
             .collect();
-        let elements: Vec<(f64, f64, f64)> = (0..nx)
+        let centre = |k: usize| 1.0 - (2 * k + 1) as f64 / nx as f64;
+        let elements: Vec<Element> = (0..nx)
             .map(|k| {
-                let u = 1.0 - (2 * k + 1) as f64 / nx as f64;
-                (u, (1.0 - u * u).sqrt(), 0.5 * u * nx as f64)
+                let (u, previous) = (centre(k), if k == 0 { 1.0 } else { centre(k - 1) });
+                Element {
+                    u,
+                    shape: (1.0 - u * u).sqrt(),
+                    e: 0.5 * u * nx as f64,
+                    du: previous - u,
+                    u_mid: 0.5 * (previous + u),
+                }
             })
             .collect();
         // p_n = scale · N/(ab) · s_j · √(1 − u²): Σ_j Σ_k s_j² √(1 − u_k²) · 4/(nx ny) = 1/scale.
-        let element_sum: f64 = elements.iter().map(|e| e.1).sum();
+        let element_sum: f64 = elements.iter().map(|e| e.shape).sum();
         let strip_sum: f64 = (0..ny).map(|j| strip(j).1.powi(2)).sum();
         let pressure_scale = (nx * ny) as f64 / (4.0 * strip_sum * element_sum);
         let strip_norm = PI * strip_sum / ny as f64;
@@ -337,7 +272,9 @@ impl Fastrip {
                 let a_j = group.half_length[l] * k.a;
                 lanes.y[l] = y;
                 lanes.a_j[l] = a_j;
-                lanes.slope_x[l] = k.slope_x.0 - y * k.slope_x.1;
+                lanes.gx[l] = a_j * (k.slope_x.0 - y * k.slope_x.1);
+                lanes.gy0[l] = a_j * k.slope_y.0;
+                lanes.gy1[l] = a_j * a_j * k.slope_y.1;
                 lanes.bound_j[l] = k.bound_peak * group.half_length[l];
                 // Strip theory, branch-free so that the lanes vectorise.
                 let u = k.xi_s - k.phi_s * y * k.inv_a;
@@ -362,13 +299,10 @@ impl Fastrip {
                     first_slip = first_slip.min(before as usize);
                 }
             }
-            let mut state = LaneState {
-                x_prev: lanes.a_j,
-                ..LaneState::default()
-            };
+            let mut state = LaneState::default();
             let (ahead, behind) = self.elements.split_at(first_slip.min(self.elements.len()));
-            march::<false, FALLBACK>(ahead, &lanes, k.slope_y, &mut state);
-            march::<true, FALLBACK>(behind, &lanes, k.slope_y, &mut state);
+            march::<false, FALLBACK>(ahead, &lanes, &mut state);
+            march::<true, FALLBACK>(behind, &lanes, &mut state);
             for l in 0..LANES {
                 let (s, a_j, y) = (sol[l], lanes.a_j[l], lanes.y[l]);
                 let adhesion = s.d < a_j;
@@ -376,7 +310,7 @@ impl Fastrip {
                     let area = 2.0 * a_j / nx * k.dy;
                     fx += state.sx[l] * area;
                     fy += state.sy[l] * area;
-                    mz += (state.sxy[l] - y * state.sx[l]) * area;
+                    mz += (a_j * state.syu[l] - y * state.sx[l]) * area;
                     continue;
                 }
                 // ∫ S_c·a over the adhesion zone (m²) and its first moment (m³).
@@ -396,7 +330,7 @@ impl Fastrip {
                     let w = (0.5 * PI * a_j * a_j - c0) * k.strip_scale / state.wb[l];
                     fx += state.qx[l] * w;
                     fy += state.qy[l] * w;
-                    mz += (state.qxy[l] - y * state.qx[l]) * w;
+                    mz += (a_j * state.qyu[l] - y * state.qx[l]) * w;
                 }
             }
         }
@@ -408,8 +342,8 @@ impl Fastrip {
     fn exceeds_bound(&self, a: f64, a_j: f64, s: StripSolution, phi_s: f64) -> bool {
         let x_i = 2.0 * s.d - a_j;
         let r = a_j - s.d;
-        self.elements.iter().any(|&(u, _, _)| {
-            let x = u * a_j;
+        self.elements.iter().any(|e| {
+            let x = e.u * a_j;
             let sc = (a_j * a_j - x * x).max(0.0).sqrt() / a;
             let sa = (r * r - (x - s.d).powi(2)).max(0.0).sqrt() / a;
             let (tx, ty) = (s.kappa * (sc - sa), s.lambda * sc - (s.lambda - phi_s) * sa);

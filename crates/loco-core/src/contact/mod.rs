@@ -19,6 +19,7 @@ pub mod elliptic;
 #[cfg(test)]
 mod en15302_data;
 pub mod fastrip;
+mod fastrip_march;
 pub mod fastsim;
 pub mod fastsim_table;
 pub mod geometry;
