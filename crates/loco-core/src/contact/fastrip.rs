@@ -260,6 +260,8 @@ impl Fastrip {
         }
     }
 
+    // The lane index runs over several per-lane arrays in lockstep.
+    #[allow(clippy::needless_range_loop)]
     fn integrate<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
         let nx = self.params.nx as f64;
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);

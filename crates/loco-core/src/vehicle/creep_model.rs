@@ -72,13 +72,15 @@ mod tests {
             let model = CreepModel::from_name(name).unwrap();
             assert_eq!(model.name(), name);
             let solver = model.solver(FastsimParams::default()).unwrap();
-            let matches = match (model, solver) {
-                (CreepModel::Fastsim, CreepSolver::Direct(_))
-                | (CreepModel::Fastrip, CreepSolver::Strip(_))
-                | (CreepModel::Table(_), CreepSolver::Tabulated(_)) => true,
-                _ => false,
-            };
-            assert!(matches, "{name}");
+            assert!(
+                matches!(
+                    (model, solver),
+                    (CreepModel::Fastsim, CreepSolver::Direct(_))
+                        | (CreepModel::Fastrip, CreepSolver::Strip(_))
+                        | (CreepModel::Table(_), CreepSolver::Tabulated(_))
+                ),
+                "{name}"
+            );
         }
         assert_eq!(CreepModel::default(), CreepModel::Fastsim);
     }
