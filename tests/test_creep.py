@@ -1,8 +1,8 @@
-"""Hertz contact, creepages, Kalker's linear theory and FASTSIM (loco.creep).
+"""Hertz contact, creepages, Kalker's linear theory, FASTSIM and FaStrip (loco.creep).
 
 References: analytic Hertz (sphere on plane), CONTACT's output for the `fastsim` example
 (eve70a/CONTACT, in the shared reference data), Kalker's table (table nodes), and the linear
-theory as the small-creepage limit of FASTSIM.
+theory as the small-creepage limit of FASTSIM and FaStrip, CONTACT's FaStrip (case 7).
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import pytest
 
 from loco import ParameterError
 from loco.creep import (
+    fastrip,
     fastsim,
     hertz,
     hertz_stiffness,
@@ -225,3 +226,43 @@ def test_creepages_simple_cases() -> None:
         wheelset_creepages(v, "middle", l0, r0)  # type: ignore[arg-type]
     with pytest.raises(ParameterError, match="speed"):
         wheelset_creepages(0.0, "left", l0, r0)
+
+
+# --- FaStrip ----------------------------------------------------------------------------------
+
+
+def test_fastrip_matches_contacts_fastrip_fine_grid() -> None:
+    case = next(c for c in contact_cases(contact_reference()) if c["mater"] == 5 and c["mx"] == 220)
+    f = fastrip(**REF, creepage_long=0.0, creepage_lat=-6.25e-4, spin=0.625, grid=(200, 200))
+    assert f.fy / (0.3 * 82e3) == pytest.approx(case["fy_ratio"], rel=0.01)
+    assert f.mz == pytest.approx(case["mz_nmm"] * 1e-3, rel=0.01)
+
+
+def test_fastrip_tends_to_linear_theory_and_saturates() -> None:
+    f = fastrip(**REF, creepage_long=1e-9, creepage_lat=0.0, spin=0.0, grid=(10, 200))
+    lin = linear_creep_forces(8e-3, 4e-3, 1e-9, 0.0, 0.0, shear_modulus=82e9)
+    assert f.fx == pytest.approx(lin.fx, rel=2e-3)
+    full = fastrip(**REF, creepage_long=0.05, creepage_lat=0.05, spin=0.0)
+    assert math.hypot(full.fx, full.fy) == pytest.approx(0.3 * 82e3, rel=1e-9)
+    # Where both slide entirely they share the traction direction (FASTSIM's, elliptic bound).
+    both = {"creepage_long": 0.05, "creepage_lat": 0.05, "spin": 0.0}
+    assert full.fy / full.fx == pytest.approx(
+        fastsim(**REF, **both, bound="elliptic").fy / fastsim(**REF, **both, bound="elliptic").fx
+    )
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "name"),
+    [
+        ({"a": math.nan}, "a"),
+        ({"mu": -0.1}, "mu"),
+        ({"grid": (10, 0)}, "grid[1]"),
+        ({"kalker_factor": 0.0}, "kalker_factor"),
+        ({"spin": math.inf}, "spin"),
+    ],
+)
+def test_fastrip_bad_input_names_argument(kwargs: dict[str, object], name: str) -> None:
+    args: dict[str, object] = {**REF, "creepage_long": 0.0, "creepage_lat": 0.0, "spin": 0.0}
+    args.update(kwargs)
+    with pytest.raises(ParameterError, match=re.escape(f"`{name}`")):
+        fastrip(**args)  # type: ignore[arg-type]

@@ -118,6 +118,7 @@ def kinematic_swing(
 # --- creep (creep.rs) ---------------------------------------------------------------------------
 
 __all__ += [
+    "fastrip",
     "fastsim",
     "hertz_contact",
     "hertz_stiffness",
@@ -164,6 +165,20 @@ def fastsim(
     nx: int,
     ny: int,
     bound: str,
+    kalker_factor: float,
+) -> tuple[float, float, float]: ...
+def fastrip(
+    a: float,
+    b: float,
+    normal_force: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    mu: float,
+    nu: float,
+    shear_modulus: float,
+    nx: int,
+    ny: int,
     kalker_factor: float,
 ) -> tuple[float, float, float]: ...
 def wheelset_creepages(
@@ -371,7 +386,9 @@ def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _Be
 
 # --- scenario (scenario.rs) -----------------------------------------------------------------------
 
-__all__ += ["RunScenario"]
+__all__ += ["RunScenario", "creep_model_names"]
+
+def creep_model_names() -> list[str]: ...
 
 @final
 class RunScenario:
@@ -393,7 +410,7 @@ class RunScenario:
         step: float = 1e-3,
         output_rate: float = 500.0,
         fastsim_grid: tuple[int, int] = ...,
-        creep_table: bool = False,
+        creep: str = ...,
         initial_lateral_offset: float = 0.0,
         lead_in: float = 0.0,
         gauge: float = 1.435,

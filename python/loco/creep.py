@@ -1,4 +1,4 @@
-"""Wheel-rail contact mechanics: Hertz ellipse, creepages, Kalker's linear theory and FASTSIM.
+"""Wheel-rail contact mechanics: Hertz ellipse, creepages, Kalker's linear theory, FASTSIM, FaStrip.
 
 Units are SI: forces in N, lengths in m, moduli and pressures in Pa, spin creepage in 1/m.
 Frames follow ``docs/CONVENTIONS.md`` (x forward, y left, z up). The creep forces are those the
@@ -21,6 +21,7 @@ __all__ = [
     "Creepages",
     "HertzResult",
     "KalkerCoefficients",
+    "fastrip",
     "fastsim",
     "hertz",
     "hertz_stiffness",
@@ -165,6 +166,44 @@ def fastsim(
             nx,
             ny,
             bound,
+            kalker_factor,
+        )
+    )
+
+
+def fastrip(
+    a: float,
+    b: float,
+    normal_force: float,
+    creepage_long: float,
+    creepage_lat: float,
+    spin: float,
+    mu: float = 0.3,
+    nu: float = STEEL_POISSON_RATIO,
+    shear_modulus: float = STEEL_SHEAR_MODULUS,
+    grid: tuple[int, int] = (10, 10),
+    kalker_factor: float = 1.0,
+) -> CreepForces:
+    """Creep forces by FaStrip (Sichani, Enblom & Berg 2016, as modified in CONTACT).
+
+    Strip theory with spin in the adhesion zone of every strip, FASTSIM's traction direction on
+    the elliptic bound in the slip zone; ``grid = (nx, ny)``: ``nx`` elements per strip for the
+    slip zone, ``ny`` strips. ``kalker_factor`` scales the creepage coefficients (1: Kalker's).
+    """
+    nx, ny = grid
+    return CreepForces(
+        *_loco.fastrip(
+            a,
+            b,
+            normal_force,
+            creepage_long,
+            creepage_lat,
+            spin,
+            mu,
+            nu,
+            shear_modulus,
+            nx,
+            ny,
             kalker_factor,
         )
     )

@@ -8,7 +8,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import InitVar, dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,7 +23,7 @@ from loco.vehicle import Locomotive
 if TYPE_CHECKING:
     import xarray
 
-__all__ = ["SCENARIOS", "Scenario", "SimulationResult", "simulate"]
+__all__ = ["CREEP_MODELS", "SCENARIOS", "Scenario", "SimulationResult", "simulate"]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -35,6 +35,10 @@ SCENARIOS: dict[str, tuple[str, str]] = {
 }
 
 
+#: The creep models a scenario accepts (``Scenario(creep=...)``), from the core.
+CREEP_MODELS: tuple[str, ...] = tuple(_loco.creep_model_names())
+
+
 @dataclass(frozen=True)
 class Scenario:
     """What a run is: wheel and rail, speed (m/s), distance (m), track, yaw damper, settings.
@@ -43,9 +47,12 @@ class Scenario:
     :class:`loco.profiles.Profile` or a built-in name) with an optional ``rail`` (default
     ``cn60``). The track is ``track`` when given, perfect when ``perfect_track`` is true, and
     otherwise synthesised from ``spectrum`` (``"cn-hsr"``, ``"german-low"``, ``"german-high"``),
-    ``seed`` and the wavelength ``band`` (m). ``creep_table`` replaces FASTSIM at every
-    evaluation (the study's method) by FASTSIM tabulated once per run or batch: about 2 % of μN
-    force error for a faster time loop, worth it for large batches (the table takes ~0.5 s).
+    ``seed`` and the wavelength ``band`` (m). ``creep`` is the creep model (:data:`CREEP_MODELS`):
+    ``"fastsim"``, FASTSIM at every evaluation (the study's method, default); ``"fastrip"``,
+    FaStrip (strip theory with spin, closer to Kalker's exact theory in the spin moment); or
+    ``"table"``, FASTSIM tabulated once per run or batch: about 2 % of μN force error for a
+    faster time loop, worth it for large batches (the table takes ~0.5 s). ``fastsim_grid`` is
+    the grid of any of them. (``creep_table`` was replaced by ``creep="table"``.)
     ``lead_in`` (m) is run before the recorded ``distance`` and not recorded, so that start
     transients (an FSD valve leaving its defined start state) settle first; 0 as in the study.
     """
@@ -64,9 +71,18 @@ class Scenario:
     step: float = 1e-3
     output_rate: float = 500.0
     fastsim_grid: tuple[int, int] = (10, 10)
-    creep_table: bool = False
+    creep: str = "fastsim"
     initial_lateral_offset: float = 0.0
     lead_in: float = 0.0
+    creep_table: InitVar[object] = None
+    """Removed: refused with :class:`loco.ParameterError` naming ``creep``."""
+
+    def __post_init__(self, creep_table: object) -> None:
+        if creep_table is not None:
+            raise _loco.ParameterError(
+                "invalid parameter `creep_table`: replaced by `creep`; "
+                'write creep="table" (or "fastsim", "fastrip")'
+            )
 
     def profiles(self) -> tuple[Profile, Profile]:
         """The wheel and rail profiles of the run."""
@@ -110,7 +126,7 @@ class Scenario:
             step=float(self.step),
             output_rate=float(self.output_rate),
             fastsim_grid=(int(self.fastsim_grid[0]), int(self.fastsim_grid[1])),
-            creep_table=bool(self.creep_table),
+            creep=str(self.creep),
             initial_lateral_offset=float(self.initial_lateral_offset),
             lead_in=float(self.lead_in),
         )

@@ -21,8 +21,8 @@
 //! step = 1e-3                      # s
 //! output_rate = 500.0              # Hz
 //! per_sample_track = false         # a track per sample (seed + sample index)
-//! creep_table = false              # tabulated FASTSIM instead of FASTSIM at every evaluation
-//! fastsim_grid = [10, 10]          # FASTSIM grid (nx, ny)
+//! creep = "fastsim"                # fastsim (the study's) | fastrip | table (FASTSIM tabulated)
+//! fastsim_grid = [10, 10]          # grid (nx, ny) of the creep model
 //! initial_lateral_offset = 0.0     # m, every wheelset at t = 0
 //! gauge = 1.435                    # m
 //! gauge_height = 0.016             # m below the rail top

@@ -1,7 +1,9 @@
-//! FASTSIM cost per call (target: < 2 µs on a 10 × 10 grid) and the Hertz evaluations the vehicle
-//! model makes per contact and right-hand side.
+//! FASTSIM cost per call (target: < 2 µs on a 10 × 10 grid), FaStrip's on the same grids (target:
+//! at most 1.5 × FASTSIM's) and the Hertz evaluations the vehicle model makes per contact and
+//! right-hand side.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use loco_core::contact::fastrip::{Fastrip, FastripParams};
 use loco_core::contact::fastsim::{Fastsim, FastsimParams, TractionBound};
 use loco_core::contact::fastsim_table::{FastsimTable, FastsimTableParams};
 use loco_core::contact::hertz::{ContactRadii, ElasticMaterial, HertzCoefficients};
@@ -29,6 +31,34 @@ fn bench_fastsim(c: &mut Criterion) {
         })
         .expect("valid parameters");
         c.bench_function(&format!("fastsim {n}x{n} {bound:?}"), |bench| {
+            bench.iter(|| {
+                solver.creep_forces(
+                    black_box(8e-3),
+                    black_box(4e-3),
+                    black_box(82e3),
+                    black_box(0.3),
+                    black_box(&creep),
+                )
+            })
+        });
+    }
+}
+
+fn bench_fastrip(c: &mut Criterion) {
+    // The same case as FASTSIM's.
+    let creep = Creepages {
+        longitudinal: 1e-4,
+        lateral: -6.25e-4,
+        spin: 0.625,
+    };
+    for n in [10, 20] {
+        let solver = Fastrip::new(FastripParams {
+            nx: n,
+            ny: n,
+            ..FastripParams::default()
+        })
+        .expect("valid parameters");
+        c.bench_function(&format!("fastrip {n}x{n}"), |bench| {
             bench.iter(|| {
                 solver.creep_forces(
                     black_box(8e-3),
@@ -83,5 +113,11 @@ fn bench_hertz(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench_fastsim, bench_fastsim_table, bench_hertz);
+criterion_group!(
+    benches,
+    bench_fastsim,
+    bench_fastrip,
+    bench_fastsim_table,
+    bench_hertz
+);
 criterion_main!(benches);

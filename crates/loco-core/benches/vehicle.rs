@@ -1,7 +1,8 @@
-//! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated) and one evaluation of its
-//! right-hand side.
+//! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
+//! creep model) and with FaStrip, and one evaluation of its right-hand side.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::integrator::OdeSystem;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{
@@ -28,6 +29,23 @@ fn bench_vehicle(c: &mut Criterion) {
                 wheel_rail.clone(),
                 track.clone(),
                 black_box(&scenario),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    let fastrip = Scenario {
+        creep: CreepModel::Fastrip,
+        ..scenario.clone()
+    };
+    let fastrip_contact = Arc::new(build_wheel_rail(&structure.parameters, &fastrip).unwrap());
+    group.bench_function("run_500m_200kmh_fastrip", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                fastrip_contact.clone(),
+                track.clone(),
+                black_box(&fastrip),
                 None,
             )
             .unwrap()

@@ -1,8 +1,9 @@
-//! Bindings of `loco_core::contact::{hertz, creepage, kalker, fastsim}` (public API:
+//! Bindings of `loco_core::contact::{hertz, creepage, kalker, fastsim, fastrip}` (public API:
 //! `loco.creep`). Scalars in, tuples of floats out; every call goes through `run_detached`.
 
 use crate::errors::run_detached;
 use loco_core::contact::creepage::{Side, WheelContact, WheelsetMotion};
+use loco_core::contact::fastrip::{fastrip as core_fastrip, FastripParams};
 use loco_core::contact::fastsim::{fastsim as core_fastsim, FastsimParams, TractionBound};
 use loco_core::contact::hertz::HertzCoefficients;
 use loco_core::contact::hertz::{hertz_contact as core_hertz, ContactRadii, ElasticMaterial};
@@ -165,6 +166,43 @@ fn fastsim(
     })
 }
 
+/// FaStrip (Fx, Fy, Mz) in N, N, N·m.
+#[pyfunction]
+#[pyo3(signature = (a, b, normal_force, creepage_long, creepage_lat, spin, mu, nu, shear_modulus, nx, ny, kalker_factor))]
+#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
+fn fastrip(
+    py: Python<'_>,
+    a: f64,
+    b: f64,
+    normal_force: f64,
+    creepage_long: f64,
+    creepage_lat: f64,
+    spin: f64,
+    mu: f64,
+    nu: f64,
+    shear_modulus: f64,
+    nx: i64,
+    ny: i64,
+    kalker_factor: f64,
+) -> PyResult<(f64, f64, f64)> {
+    run_detached(py, move || {
+        let params = FastripParams {
+            nx: grid_size("grid[0]", nx)?,
+            ny: grid_size("grid[1]", ny)?,
+            kalker_factor,
+            poisson_ratio: nu,
+            shear_modulus,
+        };
+        let creep = Creepages {
+            longitudinal: creepage_long,
+            lateral: creepage_lat,
+            spin,
+        };
+        let f = core_fastrip(a, b, normal_force, mu, &creep, params)?;
+        Ok((f.fx, f.fy, f.mz))
+    })
+}
+
 /// Creepages (ξ, η, φ) of a wheelset contact on a fixed rail.
 #[pyfunction]
 #[pyo3(signature = (speed, lateral_velocity, yaw, yaw_rate, roll_rate, spin_rate, side, lateral_position, rolling_radius, contact_angle))]
@@ -220,6 +258,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(kalker_coefficients, m)?)?;
     m.add_function(wrap_pyfunction!(linear_creep_forces, m)?)?;
     m.add_function(wrap_pyfunction!(fastsim, m)?)?;
+    m.add_function(wrap_pyfunction!(fastrip, m)?)?;
     m.add_function(wrap_pyfunction!(wheelset_creepages, m)?)?;
     Ok(())
 }

@@ -5,6 +5,7 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
+use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::scenario::Scenario;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use pyo3::prelude::*;
@@ -13,7 +14,7 @@ use std::sync::Arc;
 
 /// A checked run scenario (SI units). The track is `track` when given, perfect when
 /// `track_kind == "perfect"`, else synthesised from `spectrum`, `seed` and `band` (m);
-/// `creep_table` selects tabulated FASTSIM (default table resolution) instead of the direct one;
+/// `creep` names the creep model (`fastsim`, `fastrip`, `table`: `CreepModel::NAMES`);
 /// `lead_in` (m) is run before the recorded `distance` and not recorded.
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
 pub struct PyRunScenario {
@@ -26,7 +27,7 @@ impl PyRunScenario {
     #[pyo3(signature = (
         wheel, rail, speed, distance, *, track=None, track_kind="synthetic".to_string(),
         spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
-        output_rate=500.0, fastsim_grid=(10, 10), creep_table=false, initial_lateral_offset=0.0,
+        output_rate=500.0, fastsim_grid=(10, 10), creep="fastsim".to_string(), initial_lateral_offset=0.0,
         lead_in=0.0,
         gauge=1.435, gauge_height=0.016, rail_inclination=None
     ))]
@@ -45,7 +46,7 @@ impl PyRunScenario {
         step: f64,
         output_rate: f64,
         fastsim_grid: (usize, usize),
-        creep_table: bool,
+        creep: String,
         initial_lateral_offset: f64,
         lead_in: f64,
         gauge: f64,
@@ -72,7 +73,7 @@ impl PyRunScenario {
             step: Some(step),
             output_rate: Some(output_rate),
             fastsim_grid: Some([fastsim_grid.0, fastsim_grid.1]),
-            creep_table: Some(creep_table),
+            creep: Some(creep),
             initial_lateral_offset: Some(initial_lateral_offset),
             gauge: Some(gauge),
             gauge_height: Some(gauge_height),
@@ -118,8 +119,15 @@ impl PyRunScenario {
     }
 }
 
-/// Adds the class to the module.
+/// The names of the creep models a scenario accepts (`CreepModel::NAMES`).
+#[pyfunction]
+fn creep_model_names() -> Vec<&'static str> {
+    CreepModel::NAMES.to_vec()
+}
+
+/// Adds the class and its function to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRunScenario>()?;
+    m.add_function(wrap_pyfunction!(creep_model_names, m)?)?;
     Ok(())
 }

@@ -7,7 +7,8 @@
 //! - [`delta_r`]: a sampled rolling radius difference Δr(y); [`conicity`]: equivalent conicity by
 //!   the nonlinear kinematic method of EN 15302; [`conicity_harmonic`]: by harmonic
 //!   linearisation.
-//! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables: normal and creep forces.
+//! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables, [`fastrip`]: normal and
+//!   creep forces.
 
 pub mod builtin;
 pub mod conicity;
@@ -17,6 +18,8 @@ pub mod delta_r;
 pub mod elliptic;
 #[cfg(test)]
 mod en15302_data;
+pub mod fastrip;
+mod fastrip_march;
 pub mod fastsim;
 pub mod fastsim_table;
 pub mod geometry;

@@ -17,9 +17,11 @@
 //!   output spectra on a random track.
 //! - [`rail_plane`]: the rails' plane at a wheelset, in which the contact table is read (cross
 //!   level rolls it); [`track_limits`]: which irregularities the contact can follow.
-//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once.
+//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once;
+//!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
 
 pub mod bodies;
+pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
 pub mod eigenvalues;

@@ -5,16 +5,16 @@
 //! `S_low` thin flange (equivalent conicity 0.04), `S_norm` new wheel (0.10), `S_high` worn wheel
 //! (0.70).
 
+use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::static_equilibrium;
 use super::structure::VehicleStructure;
 use super::track_limits::TrackLimits;
-use super::wheel_rail::{CreepSolver, WheelRail, WheelRailSettings};
+use super::wheel_rail::{WheelRail, WheelRailSettings};
 use crate::contact::builtin::builtin_profile;
-use crate::contact::fastsim::{Fastsim, FastsimParams};
-use crate::contact::fastsim_table::{FastsimTable, FastsimTableParams};
+use crate::contact::fastsim::FastsimParams;
 use crate::contact::geometry::ContactGeometry;
 use crate::contact::profile::Profile;
 use crate::contact::setup::{ContactSearchParams, TrackSetup, WheelsetSetup};
@@ -79,10 +79,11 @@ pub struct Scenario {
     /// Yaw damper law; `None` keeps the parameter file's Maxwell yaw damper.
     pub yaw_damper: Option<Damper>,
     pub run: RunSettings,
+    /// Grid, Kalker factor and material of the creep model (the material is replaced by the
+    /// parameter file's track material when the wheel-rail contact is built).
     pub fastsim: FastsimParams,
-    /// Tabulated FASTSIM with this resolution instead of FASTSIM at every evaluation (`None`,
-    /// the default and the study's method).
-    pub creep_table: Option<FastsimTableParams>,
+    /// Creep model (default FASTSIM, the study's method).
+    pub creep: CreepModel,
     /// Lateral disturbance of every wheelset at t = 0, m (0: start from equilibrium).
     pub initial_lateral_offset: f64,
 }
@@ -106,7 +107,7 @@ impl Scenario {
             yaw_damper: None,
             run: RunSettings::default(),
             fastsim: FastsimParams::default(),
-            creep_table: None,
+            creep: CreepModel::Fastsim,
             initial_lateral_offset: 0.0,
         })
     }
@@ -231,13 +232,9 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
         )?,
         ..scenario.fastsim
     };
-    let fastsim = match scenario.creep_table {
-        None => CreepSolver::Direct(Fastsim::new(fastsim_params)?),
-        Some(table) => CreepSolver::Tabulated(Arc::new(FastsimTable::new(fastsim_params, table)?)),
-    };
     Ok(WheelRail::new(
         table,
-        fastsim,
+        scenario.creep.solver(fastsim_params)?,
         WheelRailSettings {
             friction: check_positive(
                 "track.wheel_rail_friction",

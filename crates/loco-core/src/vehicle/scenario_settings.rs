@@ -7,11 +7,11 @@
 //! contradict each other (a spectrum with a perfect track, a scenario name with a wheel, a speed in
 //! both units) are refused with an error naming the field.
 
+use super::creep_model::CreepModel;
 use super::run::RunSettings;
 use super::scenario::{scenario_profiles, Scenario, TrackSpec};
 use crate::contact::builtin::{builtin_names, builtin_profile};
 use crate::contact::fastsim::FastsimParams;
-use crate::contact::fastsim_table::FastsimTableParams;
 use crate::contact::profile::{Profile, ProfileKind};
 use crate::contact::profile_io::load_profile;
 use crate::contact::setup::TrackSetup;
@@ -56,10 +56,13 @@ pub struct ScenarioSettings {
     pub step: Option<f64>,
     /// Output sampling rate, Hz.
     pub output_rate: Option<f64>,
-    /// FASTSIM grid (nx, ny).
+    /// Grid (nx, ny) of the creep model (FASTSIM's, FaStrip's, the table's solver).
     pub fastsim_grid: Option<[usize; 2]>,
-    /// Tabulated FASTSIM (default table resolution) instead of FASTSIM at every evaluation.
-    pub creep_table: Option<bool>,
+    /// Creep model: `fastsim` (default, the study's method), `fastrip` or `table` (FASTSIM
+    /// tabulated once, default resolution); see [`CreepModel`].
+    pub creep: Option<String>,
+    /// Removed (replaced by `creep = "table"`): refused with an error naming `creep`.
+    pub creep_table: Option<toml::Value>,
     /// Lateral disturbance of every wheelset at t = 0, m.
     pub initial_lateral_offset: Option<f64>,
     /// Track gauge, m.
@@ -146,6 +149,16 @@ impl ScenarioSettings {
             (Some(name), None) => yaw_damper_preset(name)?,
             (None, damper) => damper,
         };
+        if self.creep_table.is_some() {
+            return Err(conflict(
+                "creep_table",
+                "replaced by `creep`: write creep = \"table\" (or \"fastsim\", \"fastrip\")",
+            ));
+        }
+        let creep = match &self.creep {
+            Some(name) => CreepModel::from_name(name)?,
+            None => CreepModel::default(),
+        };
         let track_defaults = TrackSetup::default();
         let run_defaults = RunSettings::default();
         let fastsim_defaults = FastsimParams::default();
@@ -177,10 +190,7 @@ impl ScenarioSettings {
                 },
                 None => fastsim_defaults,
             },
-            creep_table: self
-                .creep_table
-                .unwrap_or(false)
-                .then(FastsimTableParams::default),
+            creep,
             initial_lateral_offset: self.initial_lateral_offset.unwrap_or(0.0),
         };
         scenario.track_setup.validate()?;
@@ -329,7 +339,8 @@ mod tests {
         assert_eq!(s.fastsim, FastsimParams::default());
         assert_eq!(s.lead_in, study.lead_in);
         assert_eq!(s.initial_lateral_offset, study.initial_lateral_offset);
-        assert!(s.creep_table.is_none() && s.yaw_damper.is_none());
+        assert!(s.creep == CreepModel::Fastsim && s.yaw_damper.is_none());
+        assert_eq!(s.creep, study.creep);
         match (&s.track, &study.track) {
             (TrackSpec::Synthetic(a), TrackSpec::Synthetic(b)) => {
                 assert_eq!(a, b);
@@ -352,7 +363,7 @@ mod tests {
             step: Some(5e-4),
             output_rate: Some(200.0),
             fastsim_grid: Some([8, 12]),
-            creep_table: Some(true),
+            creep: Some("table".into()),
             initial_lateral_offset: Some(0.002),
             lead_in: Some(20.0),
             gauge: Some(1.44),
@@ -369,7 +380,7 @@ mod tests {
         assert_eq!((s.fastsim.nx, s.fastsim.ny), (8, 12));
         assert_eq!(s.run.step, 5e-4);
         assert_eq!(s.run.output_rate, 200.0);
-        assert_eq!(s.creep_table, Some(FastsimTableParams::default()));
+        assert_eq!(s.creep, CreepModel::from_name("table").unwrap());
         assert_eq!(s.initial_lateral_offset, 0.002);
         assert_eq!(s.lead_in, 20.0);
         assert_eq!(
@@ -489,5 +500,22 @@ mod tests {
         .unwrap();
         assert_eq!(s.fastsim_grid, Some([6, 6]));
         assert!(toml::from_str::<ScenarioSettings>("name = 'S_high'\ndistanse = 10.0\n").is_err());
+    }
+
+    #[test]
+    fn creep_model_by_name_and_the_removed_key() {
+        let resolve = |text: &str| {
+            toml::from_str::<ScenarioSettings>(text)
+                .unwrap()
+                .resolve(GivenObjects::default(), Path::new("."))
+        };
+        let base = "name = 'S_norm'\nspeed = 50.0\ndistance = 10.0\ntrack = 'perfect'\n";
+        let s = resolve(&format!("{base}creep = 'fastrip'\n")).unwrap();
+        assert_eq!(s.creep, CreepModel::Fastrip);
+        let err = resolve(&format!("{base}creep = 'kalker'\n")).unwrap_err();
+        assert_eq!(field_of(err), "creep");
+        let err = resolve(&format!("{base}creep_table = true\n")).unwrap_err();
+        assert!(err.to_string().contains("creep = \"table\""), "{err}");
+        assert_eq!(field_of(err), "creep_table");
     }
 }

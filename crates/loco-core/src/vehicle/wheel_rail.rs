@@ -31,6 +31,7 @@ use super::rail_plane::RailPlane;
 use crate::contact::creepage::{
     contact_lead, creepages_of_slip, dot, slip_velocity, BodyVelocity, ContactFrame, Side,
 };
+use crate::contact::fastrip::Fastrip;
 use crate::contact::fastsim::Fastsim;
 use crate::contact::fastsim_table::FastsimTable;
 use crate::contact::hertz_table::HertzShapeTable;
@@ -80,6 +81,8 @@ pub enum CreepSolver {
     /// FASTSIM's normalised results interpolated from a table built once (faster per call;
     /// force error about 2 % of μN, see `contact::fastsim_table`).
     Tabulated(Arc<FastsimTable>),
+    /// FaStrip (strip theory with spin, see `contact::fastrip`) at every evaluation.
+    Strip(Fastrip),
 }
 
 impl CreepSolver {
@@ -88,6 +91,7 @@ impl CreepSolver {
         match self {
             CreepSolver::Direct(f) => f.creep_forces(a, b, n, mu, creep),
             CreepSolver::Tabulated(t) => t.creep_forces(a, b, n, mu, creep),
+            CreepSolver::Strip(s) => s.creep_forces(a, b, n, mu, creep),
         }
     }
 }

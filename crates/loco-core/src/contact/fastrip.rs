@@ -1,0 +1,404 @@
+//! FaStrip: strip theory for steady rolling with spin (M. Sh. Sichani, R. Enblom, M. Berg, "An
+//! alternative to FASTSIM for tangential solution of the wheel–rail contact", Vehicle System
+//! Dynamics 54(6), 2016), in the modified form of CONTACT (E. Vollebregt, CONTACT user
+//! guide, "Modified FaStrip", solver M = 5, 2024–2025).
+//!
+//! Each strip y = y_j of the Hertz ellipse (half-length a_j = a √(1 − y_j²/b²), peak pressure
+//! p0·a_j/a) carries the two-dimensional Carter / Haines–Ollerton solution: traction on the bound
+//! μ p_n in a slip zone at the trailing edge, and in the adhesion zone [x_i, a_j] at the leading
+//! edge, x_i = 2d − a_j, the bound minus a smaller semi-ellipse of radius a_j − d centred at d.
+//! In units of μ p0 (p0 = 3N/(2πab), S_c = √(a_j² − x²)/a, S_a = √((a_j − d)² − (x − d)²)/a):
+//!
+//! ```text
+//! p_x = κ (S_c − S_a),   p_y = λ S_c − (λ − φ') S_a                         (adhesion)
+//! ξ' = −2(1−ν) G C11 ξ / (π² μ p0),  η' = −2(1−ν) G C22 η / (π² μ p0),  φ' = −3 G c C23 φ / (2π μ p0)
+//! d  = (√(η'² + (1 − φ'²)(ξ' − φ' y/a)²) + η' φ') / (1 − φ'²) · a / (1 − ν)
+//! κ, λ = (ξ' − φ' y/a, η' + φ' d/a) / |(ξ' − φ' y/a, η' + φ' d/a)|
+//! ```
+//!
+//! with c = √(ab) and Kalker's coefficients C_ij(a/b) (Sichani's scaling, chosen so that the
+//! strip theory reproduces Kalker's linear Fx and Fy at vanishing creepage). A strip has no
+//! adhesion (full slip) when the discriminant is negative, d < 0, d ≥ a_j or |φ'| = 1. In the slip
+//! zone the traction has the magnitude μ p_n of Hertz's elliptic pressure and the direction of
+//! FASTSIM's traction with three flexibilities (as in [`super::fastsim`], elliptic bound), which
+//! is integrated along every strip from the leading edge. Where |φ'| > 1 the strip solution can
+//! exceed the traction bound; as in CONTACT, a strip whose adhesion tractions exceed μ p0 at an
+//! element centre keeps the FASTSIM solution instead.
+//!
+//! Quadrature: the adhesion zone is integrated in closed form per strip (∫S_c over [x_i, a_j]
+//! by the circular-segment formula, ∫S_a = π(a_j − d)²/(2a)); the slip zone has the closed-form
+//! magnitude ∫ μ p_n over [−a_j, x_i], spread over FASTSIM's elements in proportion to each
+//! element's slip fraction times its bound, along each element's FASTSIM direction (sampling
+//! the bound at element centres instead would overstate the thin slip zones of small creepage).
+//! At vanishing creepage the only error left is the strip (y) quadrature; p0 is taken from the
+//! same strip sum (→ 3N/(2πab)), so full slip gives |F| = μN on any grid. The Kalker coefficient
+//! factor k multiplies G in the flexibilities and in the scaled creepages. Strips are integrated
+//! [`LANES`] at a time, as in FASTSIM, and the slip-zone sums start at a group's first slipping
+//! element. [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
+
+use super::fastrip_march::{march, Element, LaneState, Lanes, LANES};
+use super::fastsim::FastsimParams;
+use super::kalker::{CreepForces, Creepages, KalkerTable};
+use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
+use std::f64::consts::PI;
+
+/// Tolerance on φ' = 1, where the slip-length formula is singular (CONTACT's value).
+const UNIT_SPIN_TOLERANCE: f64 = 1e-6;
+
+/// Parameters of FaStrip. The defaults are FASTSIM's ([`FastsimParams::default`]): the two
+/// solvers compared on the same grid and material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FastripParams {
+    /// Elements per strip along the rolling direction (≥ 1), for the slip zone.
+    pub nx: usize,
+    /// Strips across the ellipse (≥ 1).
+    pub ny: usize,
+    /// Kalker coefficient factor k (> 0): scales the creepage coefficients (1: Kalker's values).
+    pub kalker_factor: f64,
+    /// Poisson's ratio ν (–), for the creepage coefficients and the strip theory.
+    pub poisson_ratio: f64,
+    /// Combined shear modulus G (Pa).
+    pub shear_modulus: f64,
+}
+
+impl From<FastsimParams> for FastripParams {
+    /// FASTSIM's grid, Kalker factor and material (the traction bound of FaStrip is always
+    /// Hertz's elliptic pressure).
+    fn from(p: FastsimParams) -> Self {
+        Self {
+            nx: p.nx,
+            ny: p.ny,
+            kalker_factor: p.kalker_factor,
+            poisson_ratio: p.poisson_ratio,
+            shear_modulus: p.shear_modulus,
+        }
+    }
+}
+
+impl Default for FastripParams {
+    /// FASTSIM's defaults: 10 × 10 grid, k = 1, steel (ν = 0.28, G = 8.2e10 Pa).
+    fn default() -> Self {
+        FastsimParams::default().into()
+    }
+}
+
+/// Geometry of [`LANES`] strips in units of (a, b).
+#[derive(Debug, Clone, Copy, Default)]
+struct StripLanes {
+    /// Strip centre y_j / b.
+    eta: [f64; LANES],
+    /// Strip half-length a_j / a (0 for padding).
+    half_length: [f64; LANES],
+    /// a / a_j (0 for padding).
+    inv_half_length: [f64; LANES],
+}
+
+/// A ready-to-run FaStrip solver: parameters, Kalker table and the normalised grid.
+#[derive(Debug, Clone)]
+pub struct Fastrip {
+    params: FastripParams,
+    table: KalkerTable,
+    strips: Vec<StripLanes>,
+    elements: Vec<Element>,
+    /// Elliptic pressure at shape factor 1 per N/(ab) (–), so that FASTSIM's discrete bound sums
+    /// to μN.
+    pressure_scale: f64,
+    /// Σ_j (π/2)(a_j/a)² · 2/ny (–): the strips' semi-ellipses, so that p0 = N/(ab · this)
+    /// (2π/3 in the limit, Hertz's p0 = 3N/(2πab)).
+    strip_norm: f64,
+}
+
+/// Per-call constants of [`Fastrip::creep_forces`] (SI units; primed creepages in units of μ p0).
+struct Call {
+    a: f64,
+    b: f64,
+    inv_a: f64,
+    xi_s: f64,
+    eta_s: f64,
+    phi_s: f64,
+    d_factor: f64,
+    unit_spin: bool,
+    /// FASTSIM's slope of p_x: (ξ/L1, φ/L3), Pa/m and Pa/m².
+    slope_x: (f64, f64),
+    /// FASTSIM's slope of p_y: (η/L2, φ/L3), Pa/m and Pa/m².
+    slope_y: (f64, f64),
+    bound_peak: f64,
+    dy: f64,
+    /// μ p0/a · dy (N/m²).
+    strip_scale: f64,
+}
+
+/// Per-strip result of the strip theory: slip half-length d (m; d = a_j means full slip),
+/// direction (κ, λ).
+#[derive(Debug, Clone, Copy, Default)]
+struct StripSolution {
+    d: f64,
+    kappa: f64,
+    lambda: f64,
+}
+
+impl Fastrip {
+    /// Checks the parameters and precomputes the grid.
+    pub fn new(params: FastripParams) -> Result<Self> {
+        for (name, n) in [("grid.nx", params.nx), ("grid.ny", params.ny)] {
+            if !(1..=10_000).contains(&n) {
+                return Err(LocoError::param(
+                    name,
+                    format!("must be in 1..=10000, got {n}"),
+                ));
+            }
+        }
+        check_positive("kalker_factor", params.kalker_factor)?;
+        check_positive("shear_modulus", params.shear_modulus)?;
+        let table = KalkerTable::new(params.poisson_ratio)?;
+        let (nx, ny) = (params.nx, params.ny);
+        let strip = |j: usize| {
+            let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;
+            (eta, (1.0 - eta * eta).sqrt())
+        };
+        let strips = (0..ny.div_ceil(LANES))
+            .map(|group| {
+                let mut lanes = StripLanes::default();
+                for lane in 0..LANES {
+                    let j = group * LANES + lane;
+                    if j < ny {
+                        (lanes.eta[lane], lanes.half_length[lane]) = strip(j);
+                        lanes.inv_half_length[lane] = 1.0 / lanes.half_length[lane];
+                    }
+                }
+                lanes
+            })
+            .collect();
+        let centre = |k: usize| 1.0 - (2 * k + 1) as f64 / nx as f64;
+        let elements: Vec<Element> = (0..nx)
+            .map(|k| {
+                let (u, previous) = (centre(k), if k == 0 { 1.0 } else { centre(k - 1) });
+                Element {
+                    u,
+                    shape: (1.0 - u * u).sqrt(),
+                    e: 0.5 * u * nx as f64,
+                    du: previous - u,
+                    u_mid: 0.5 * (previous + u),
+                }
+            })
+            .collect();
+        // p_n = scale · N/(ab) · s_j · √(1 − u²): Σ_j Σ_k s_j² √(1 − u_k²) · 4/(nx ny) = 1/scale.
+        let element_sum: f64 = elements.iter().map(|e| e.shape).sum();
+        let strip_sum: f64 = (0..ny).map(|j| strip(j).1.powi(2)).sum();
+        let pressure_scale = (nx * ny) as f64 / (4.0 * strip_sum * element_sum);
+        let strip_norm = PI * strip_sum / ny as f64;
+        Ok(Self {
+            params,
+            table,
+            strips,
+            elements,
+            pressure_scale,
+            strip_norm,
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &FastripParams {
+        &self.params
+    }
+
+    /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
+    /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
+    /// (hot path; use [`fastrip`] for checked input); a non-positive a, b, N or μ gives zero
+    /// forces.
+    pub fn creep_forces(
+        &self,
+        a: f64,
+        b: f64,
+        normal_force: f64,
+        mu: f64,
+        creepages: &Creepages,
+    ) -> CreepForces {
+        if !(a > 0.0 && b > 0.0 && normal_force > 0.0 && mu > 0.0) {
+            return CreepForces::default();
+        }
+        let coef = self.table.coefficients(a / b);
+        let nu = self.table.poisson_ratio();
+        let g = self.params.shear_modulus * self.params.kalker_factor;
+        // FASTSIM's inverse flexibilities 1/L (Pa/m), for the slip direction.
+        let inv_l1 = 3.0 * coef.c11 * g / (8.0 * a);
+        let inv_l2 = 3.0 * coef.c22 * g / (8.0 * a);
+        let inv_l3 = 4.0 * coef.c23 * g / (PI * a * (a / b).sqrt());
+        let Creepages {
+            longitudinal: xi,
+            lateral: eta,
+            spin: phi,
+        } = *creepages;
+        // Strip theory in units of μ p0, p0 from the discrete strip sum (→ 3N/(2πab)) so that
+        // full slip gives μN on any grid.
+        let mu_p0 = mu * normal_force / (a * b * self.strip_norm);
+        let xi_s = -2.0 * (1.0 - nu) * g * coef.c11 * xi / (PI * PI * mu_p0);
+        let eta_s = -2.0 * (1.0 - nu) * g * coef.c22 * eta / (PI * PI * mu_p0);
+        let phi_s = -3.0 * g * (a * b).sqrt() * coef.c23 * phi / (2.0 * PI * mu_p0);
+        let call = Call {
+            a,
+            b,
+            inv_a: 1.0 / a,
+            xi_s,
+            eta_s,
+            phi_s,
+            // d = (√disc + η'φ') · a/((1 − ν)(1 − φ'²)); |φ'| = 1 is full slip.
+            d_factor: a / ((1.0 - nu) * (1.0 - phi_s * phi_s)),
+            unit_spin: (phi_s.abs() - 1.0).abs() <= UNIT_SPIN_TOLERANCE,
+            slope_x: (xi * inv_l1, phi * inv_l3),
+            slope_y: (eta * inv_l2, phi * inv_l3),
+            bound_peak: mu * normal_force * self.pressure_scale / (a * b),
+            dy: 2.0 * b / self.params.ny as f64,
+            strip_scale: mu_p0 / a * 2.0 * b / self.params.ny as f64,
+        };
+        // Beyond |φ'| = 1 the strip solution may exceed the bound: FASTSIM's own sums are kept
+        // for the fallback.
+        if phi_s.abs() > 1.0 {
+            self.integrate::<true>(&call)
+        } else {
+            self.integrate::<false>(&call)
+        }
+    }
+
+    // The lane index runs over several per-lane arrays in lockstep.
+    #[allow(clippy::needless_range_loop)]
+    fn integrate<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
+        let nx = self.params.nx as f64;
+        let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
+        for group in &self.strips {
+            let mut lanes = Lanes::default();
+            let mut sol = [StripSolution::default(); LANES];
+            let mut first_slip = self.elements.len();
+            for l in 0..LANES {
+                let y = group.eta[l] * k.b;
+                let a_j = group.half_length[l] * k.a;
+                lanes.y[l] = y;
+                lanes.a_j[l] = a_j;
+                lanes.gx[l] = a_j * (k.slope_x.0 - y * k.slope_x.1);
+                lanes.gy0[l] = a_j * k.slope_y.0;
+                lanes.gy1[l] = a_j * a_j * k.slope_y.1;
+                lanes.bound_j[l] = k.bound_peak * group.half_length[l];
+                // Strip theory, branch-free so that the lanes vectorise.
+                let u = k.xi_s - k.phi_s * y * k.inv_a;
+                let disc = k.eta_s * k.eta_s + (1.0 - k.phi_s * k.phi_s) * u * u;
+                let d_raw = (disc.max(0.0).sqrt() + k.eta_s * k.phi_s) * k.d_factor;
+                let partial = !k.unit_spin && disc >= 0.0 && d_raw >= 0.0 && d_raw < a_j;
+                let d = if partial { d_raw } else { a_j };
+                let v = k.eta_s + k.phi_s * d * k.inv_a;
+                let inv = 1.0 / (u * u + v * v).max(1e-20).sqrt();
+                sol[l] = StripSolution {
+                    d,
+                    kappa: u * inv,
+                    lambda: v * inv,
+                };
+                // x_i/a_j · nx/2 + 1/2: an element's slip fraction is this minus its u_k·nx/2.
+                let c = (2.0 * d - a_j) * k.inv_a * group.inv_half_length[l] * 0.5 * nx + 0.5;
+                lanes.slip_offset[l] = c;
+                if group.half_length[l] > 0.0 {
+                    // Elements before the first with a slip fraction (u_k·nx/2 < c) need none.
+                    // (`as` truncates: the floor of a non-negative number.)
+                    let before = (0.5 * nx - 1.5 - c).max(0.0);
+                    first_slip = first_slip.min(before as usize);
+                }
+            }
+            let mut state = LaneState::default();
+            let (ahead, behind) = self.elements.split_at(first_slip.min(self.elements.len()));
+            march::<false, FALLBACK>(ahead, &lanes, &mut state);
+            march::<true, FALLBACK>(behind, &lanes, &mut state);
+            for l in 0..LANES {
+                let (s, a_j, y) = (sol[l], lanes.a_j[l], lanes.y[l]);
+                let adhesion = s.d < a_j;
+                if FALLBACK && adhesion && self.exceeds_bound(k.a, a_j, s, k.phi_s) {
+                    let area = 2.0 * a_j / nx * k.dy;
+                    fx += state.sx[l] * area;
+                    fy += state.sy[l] * area;
+                    mz += (a_j * state.syu[l] - y * state.sx[l]) * area;
+                    continue;
+                }
+                // ∫ S_c·a over the adhesion zone (m²) and its first moment (m³).
+                let (c0, c1) = if adhesion {
+                    segment(a_j, 2.0 * s.d - a_j)
+                } else {
+                    (0.0, 0.0)
+                };
+                if adhesion {
+                    let [gx, gy, gm] = adhesion_integrals(a_j, s, k.phi_s, c0, c1);
+                    fx += gx * k.strip_scale;
+                    fy += gy * k.strip_scale;
+                    mz += (gm - y * gx) * k.strip_scale;
+                }
+                // Slip zone: FASTSIM's directions, the exact magnitude ∫ μ p_n over the zone.
+                if state.wb[l] > 0.0 {
+                    let w = (0.5 * PI * a_j * a_j - c0) * k.strip_scale / state.wb[l];
+                    fx += state.qx[l] * w;
+                    fy += state.qy[l] * w;
+                    mz += (a_j * state.qyu[l] - y * state.qx[l]) * w;
+                }
+            }
+        }
+        CreepForces { fx, fy, mz }
+    }
+
+    /// Whether the strip theory's adhesion tractions exceed μ p0 at an element centre
+    /// (CONTACT's validity check of the strip solution).
+    fn exceeds_bound(&self, a: f64, a_j: f64, s: StripSolution, phi_s: f64) -> bool {
+        let x_i = 2.0 * s.d - a_j;
+        let r = a_j - s.d;
+        self.elements.iter().any(|e| {
+            let x = e.u * a_j;
+            let sc = (a_j * a_j - x * x).max(0.0).sqrt() / a;
+            let sa = (r * r - (x - s.d).powi(2)).max(0.0).sqrt() / a;
+            let (tx, ty) = (s.kappa * (sc - sa), s.lambda * sc - (s.lambda - phi_s) * sa);
+            x > x_i && tx * tx + ty * ty > 1.0
+        })
+    }
+}
+
+/// The part of the strip's semi-ellipse √(a_j² − x²) ahead of x_i (a circular segment): its
+/// area (m²) and first moment about x = 0 (m³).
+fn segment(a_j: f64, x_i: f64) -> (f64, f64) {
+    let cos_t = (x_i / a_j).clamp(-1.0, 1.0);
+    let sin_t = (1.0 - cos_t * cos_t).sqrt();
+    (
+        0.5 * a_j * a_j * (cos_t.acos() - sin_t * cos_t),
+        a_j * a_j * a_j * sin_t * sin_t * sin_t / 3.0,
+    )
+}
+
+/// ∫ over the adhesion zone of (p_x, p_y, x·p_y) in units of μ p0/a (m², m², m³), from the
+/// segment `c0`, `c1` of the bound and the whole adhesion semi-ellipse (radius a_j − d, centre d).
+fn adhesion_integrals(a_j: f64, s: StripSolution, phi_s: f64, c0: f64, c1: f64) -> [f64; 3] {
+    let r = a_j - s.d;
+    let a0 = 0.5 * PI * r * r;
+    let a1 = s.d * a0;
+    let lambda_a = s.lambda - phi_s;
+    [
+        s.kappa * (c0 - a0),
+        s.lambda * c0 - lambda_a * a0,
+        s.lambda * c1 - lambda_a * a1,
+    ]
+}
+
+/// One checked FaStrip evaluation (builds the solver; for repeated calls keep a [`Fastrip`]).
+pub fn fastrip(
+    a: f64,
+    b: f64,
+    normal_force: f64,
+    mu: f64,
+    creepages: &Creepages,
+    params: FastripParams,
+) -> Result<CreepForces> {
+    check_positive("a", a)?;
+    check_positive("b", b)?;
+    // N = 0 (contact lost) and μ = 0 are valid and give zero forces.
+    check_non_negative("normal_force", normal_force)?;
+    check_non_negative("mu", mu)?;
+    check_finite("creepage_long", creepages.longitudinal)?;
+    check_finite("creepage_lat", creepages.lateral)?;
+    check_finite("spin", creepages.spin)?;
+    Ok(Fastrip::new(params)?.creep_forces(a, b, normal_force, mu, creepages))
+}
+
+#[cfg(test)]
+#[path = "fastrip_tests.rs"]
+mod tests;
