@@ -37,7 +37,7 @@ fn evaluate(c: &mut Criterion) {
     ] {
         c.bench_function(&format!("damper_advance_{name}"), |b| {
             let mut discrete = damper.initial_discrete();
-            let mut t = 0.0;
+            let mut t = 0.0_f64;
             b.iter(|| {
                 t += 1e-4;
                 // A 1.2 Hz stroke, so the hydraulic valve moves and switches.

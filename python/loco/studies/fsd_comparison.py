@@ -136,11 +136,14 @@ def valve_open_fractions(cmp: FsdComparison) -> pd.DataFrame:
             opening = 1.0 - float(np.mean(result.channel(channel)))
             rows.append((scenario, name, channel.removesuffix(VALVE_SUFFIX), bogie, opening))
     table = pd.DataFrame(rows, columns=["scenario", "damper", "valve", "bogie", "open_fraction"])
-    per_bogie = table.groupby(["scenario", "damper", "bogie"], as_index=False, sort=False)[
-        "open_fraction"
-    ].mean()
+    per_bogie = pd.DataFrame(
+        table.groupby(["scenario", "damper", "bogie"], as_index=False, sort=False)[
+            "open_fraction"
+        ].mean()
+    )
     per_bogie["valve"] = per_bogie["bogie"]
-    return pd.concat([table, per_bogie[table.columns]], ignore_index=True)
+    frames: list[pd.DataFrame] = [table, pd.DataFrame(per_bogie[list(table.columns)])]
+    return pd.concat(frames, ignore_index=True)
 
 
 def valve_channels(result: loco.SimulationResult) -> list[str]:
