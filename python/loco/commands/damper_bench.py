@@ -30,7 +30,10 @@ from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.valve_bench import largest_opening_dither, run_valve_bench, save_valve_bench
 
 NAME = "damper-bench"
-HELP = "bench YD1, YD2 and FSD at 1 Hz and 4 Hz: force-velocity curves and hysteresis loops"
+HELP = (
+    "bench YD1, YD2, FSD and FSD-H at 1 Hz and 4 Hz: force-velocity curves, hysteresis loops, "
+    "frequency-valve states, cut-off vs amplitude, two-tone (sway + dither) bench"
+)
 
 FREQUENCIES_HZ = (1.0, 4.0)
 #: Default sine amplitude of the elongation, m.

@@ -44,6 +44,13 @@ fn chamber_filling_matches_the_turbulent_closed_form() {
         ratio < 1.0 && ratio > 1.0 - 2.0 * laminar_share - 2e-3,
         "{ratio} (laminar share {laminar_share})"
     );
+    // The orbit solver (RK4 shooting, independent of the implicit step): the centred piston
+    // swings ±V_½/2.
+    let peak = valve.orbit_peak_volume(pressure, omega) / (0.5 * closed_form);
+    assert!(
+        peak < 1.0 && peak > 1.0 - 2.0 * laminar_share - 2e-3,
+        "orbit peak over V_½/2: {peak}"
+    );
 }
 
 #[test]

@@ -10,8 +10,11 @@
 //!   (zero: no force at zero elongation). Maxwell: `[x_d]`, the deflection of the damper element;
 //!   FSD with mass: `[x_d, ẋ_d]`; hydraulic: `[x_d]`.
 //! - **Discrete state**: a small `Copy` [`DamperDiscreteState`] (FSD valve scale factor, trigger
-//!   filters and decision), from [`Damper::initial_discrete`], updated by [`Damper::advance`] once
-//!   per *accepted* time step (never inside the stages of a Runge-Kutta step or a rejected step).
+//!   filters and decision, the hydraulic valve's chamber volume), from
+//!   [`Damper::initial_discrete`], updated by [`Damper::advance`] once per *accepted* time step
+//!   (never inside the stages of a Runge-Kutta step or a rejected step). The hydraulic valve is
+//!   integrated there (implicit Euler, with the force at the end of the step): slow against the
+//!   step (its fastest rate, laminar conductance over chamber compliance, is about 10² 1/s).
 //! - **Force**: [`Damper::evaluate`] is pure and allocation-free: from the elongation `x` (m, the
 //!   change of the distance between the two attachment points from its static value), the
 //!   elongation rate (m/s), the continuous states and the discrete state it returns the force (N)
