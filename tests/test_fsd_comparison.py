@@ -85,7 +85,12 @@ def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
     for path in [*record.figures, *record.tables]:
         assert path.is_file() and path.stat().st_size > 0, path
     names = {p.name for p in record.figures}
-    assert names == {"fsd_time_histories.png", "fsd_psd.png", "fsd_valve.png"}
+    assert names == {
+        "fsd_time_histories.png",
+        "fsd_psd.png",
+        "fsd_valve.png",
+        "fsd_valve_hydraulic.png",
+    }
     histories = pd.read_csv(out / "fsd_time_histories.csv")
     result = comparison.results[("S_low", "FSD")]
     assert result is not None

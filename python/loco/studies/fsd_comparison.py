@@ -319,7 +319,8 @@ def _histories_frame(cmp: FsdComparison) -> pd.DataFrame:
 def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     """Write figures, tables and settings into ``out_dir``; return the record.
 
-    Files: ``fsd_time_histories.png``, ``fsd_psd.png``, ``fsd_valve.png``, ``fsd_summary.csv``
+    Files: ``fsd_time_histories.png``, ``fsd_psd.png``, ``fsd_valve.png`` (and
+    ``fsd_valve_hydraulic.png`` for FSD-H), ``fsd_valve_open_fraction.csv``, ``fsd_summary.csv``
     (dominant frequency and PSD peak per run), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
     ``fsd_comparison.json`` (loco version and settings).
     """
@@ -330,6 +331,11 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         plot_time_histories(cmp, out / "fsd_time_histories.png"),
         plot_psds(cmp, out / "fsd_psd.png"),
         plot_valves(cmp, out / "fsd_valve.png"),
+        *(
+            [plot_valves(cmp, out / "fsd_valve_hydraulic.png", damper="FSD-H")]
+            if "FSD-H" in cmp.damper_laws
+            else []
+        ),
     ]
     summary = cmp.table()
     spectra = cmp.spectra()
