@@ -67,6 +67,9 @@ def _closed_form(damper: dampers.Damper, frequency: float) -> tuple[float, float
         return dampers.maxwell_closed_form(
             float(p["damping"] or 0.0), float(p["series_stiffness"] or 0.0), frequency
         )
+    if p.get("trigger") == "hydraulic":
+        # The hydraulic valve opens for part of each stroke: no linear state to settle to.
+        return float("nan"), float("nan")
     cutoff = float(p["cutoff_frequency"] or 0.0)
     damping = p["high_damping"] if frequency > cutoff else p["low_damping"]
     return dampers.maxwell_closed_form(
