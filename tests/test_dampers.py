@@ -191,3 +191,20 @@ def test_fsd_trigger_selection_and_valve_errors() -> None:
     assert cutoff[0] == pytest.approx(2.0, rel=0.01)
     with pytest.raises(loco.ParameterError, match="damper"):
         dampers.valve_opening_band(dampers.FSD, [1e-3])
+
+
+def test_hydraulic_valve_at_the_vehicle_step() -> None:
+    """The vehicle runs the FSD without its mass at 1 ms steps, the valve advanced once per step;
+    the bench integrates the full model at microsecond steps: same valve open fraction on the
+    two-tone motion, pure sway and with an 8 Hz dither."""
+    from loco.studies.valve_bench import open_fraction, two_tone
+
+    full = dampers.FSD_HYDRAULIC
+    massless = dampers.fsd(trigger="hydraulic", equivalent_mass=0.0)
+    assert massless.fastest_rate * 1e-3 < 1.0  # one RK4 step per 1 ms sample on the bench
+    for dither_hz, ratio in ((8.0, 0.0), (8.0, 0.3)):
+        t, x = two_tone(dampers.REFERENCE_STROKE_AMPLITUDE, dither_hz, ratio, rate=1000.0)
+        fine = open_fraction(dampers.bench_recorded(full, t, x))
+        coarse = open_fraction(dampers.bench_recorded(massless, t, x))
+        assert fine > 0.1
+        assert coarse == pytest.approx(fine, abs=0.01)
