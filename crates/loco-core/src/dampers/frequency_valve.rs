@@ -57,6 +57,15 @@
 //! k/c2 = 3 Hz) slows that growth at high frequency, and the spring threshold raises the lower
 //! limit f_l at small amplitudes. [`HydraulicValve::opening_band_hz`] gives both.
 //!
+//! # The derived valve at X_r = 2.3 mm (spec FSD modules)
+//! Orifice 0.244 mm² (Ø0.56 mm), spring 173 kN/m (opening pressure 0.74 MPa). Opening band (sine
+//! strokes, closed orbit): 0.13–2.0 Hz at 2.3 mm, 0.29–0.94 Hz at 1 mm, 0.064–3.2 Hz at 4.5 mm,
+//! none up to 0.7 mm. Below its cut-off the valve opens late in each stroke and closes near the
+//! reversal (the piston must swing back past the other opening stroke with the valve closed):
+//! the force shows c2 "teeth" at every reversal and the valve is open about 35 % of the time at
+//! 1.2 Hz, 2.3 mm. A valve that times each half-cycle cannot stay open across reversals as the
+//! rms-frequency estimate does; in exchange a dither barely moves it (bench, `valve_bench.py`).
+//!
 //! # Geometry (not in the spec; no published dimensions of such a valve were found)
 //! Main piston Ø50 mm (the yaw damper bore of [`super::hydraulic`]). The auxiliary piston and
 //! chamber sit in a housing on the piston rod below the main piston, inside the bore, as in the
