@@ -141,7 +141,7 @@ def main() -> int:
     front_x = np.atleast_2d(result.X) if result.X is not None else np.empty((0, 5))
     front = pd.DataFrame(front_x, columns=names)
     front[["W_y", "A_yb"]] = np.atleast_2d(result.F) if result.X is not None else np.empty((0, 2))
-    front = front.sort_values("W_y").reset_index(drop=True)
+    front = front.sort_values(["W_y", "A_yb"], kind="stable").reset_index(drop=True)
     print(front.to_string())
     # The two ends and the knee (closest to the utopia point in normalised objectives).
     picks = {}
@@ -217,6 +217,10 @@ def main() -> int:
         "bounds": {**BOUNDS, THRESHOLD[args.trigger][0]: THRESHOLD[args.trigger][1:]},
         "speed_kmh": SPEED_KMH,
         "constraint": "linear critical speed on S_high (valve closed) >= 1.1 x speed",
+        "picked_designs": {
+            label: dict(zip(names, map(float, front.iloc[i][names]), strict=True))
+            for i, label in picks.items()
+        },
         "seconds": time.perf_counter() - start,
     }
     (args.out / "fsd_design.json").write_text(json.dumps(settings, indent=2))
