@@ -134,3 +134,41 @@ def test_binary_rejects_an_unknown_channel_before_running(tmp_path: Path) -> Non
     # The message lists what is available, including the new vertical damper forces.
     assert "primary_vertical_damper_wheelset1_left_force" in done.stderr
     assert not out.exists()
+
+
+def test_study_file_selects_the_hydraulic_valve(tmp_path: Path) -> None:
+    """``fsd_trigger = "hydraulic"`` in the study file is the Python ``FSD_HYDRAULIC``."""
+    study, samples = _write_inputs(tmp_path)
+    text = STUDY.replace('yaw_damper = "FSD"', 'yaw_damper = "FSD"\nfsd_trigger = "hydraulic"')
+    study.write_text(text.replace("distance = 295.0", "distance = 60.0"), encoding="utf-8")
+    out = tmp_path / "metrics.csv"
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "1", "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    with out.open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    vehicle = loco.Locomotive.default().replace(C_sy=3.0e4)
+    scenario = loco.Scenario(
+        scenario="S_high",
+        speed=200 / 3.6,
+        distance=60.0,
+        seed=5,
+        yaw_damper=loco.dampers.FSD_HYDRAULIC,
+    )
+    expected = loco.run_batch(
+        PARAMS[:1], NAMES, vehicle=vehicle, scenario=scenario, threads=1, progress=False
+    )
+    got = np.array([float(rows[0][m]) for m in expected.metric_names])
+    assert np.array_equal(got, expected.metrics[0], equal_nan=True)
+    study.write_text(text.replace('fsd_trigger = "hydraulic"', 'fsd_trigger = "zero"'))
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(out), "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode != 0 and "fsd_trigger" in done.stderr

@@ -140,16 +140,71 @@ def test_damper_bench_command(tmp_path: Path) -> None:
     assert (tmp_path / "damper_bench.png").stat().st_size > 10_000
     parameters = json.loads((tmp_path / "damper_bench_parameters.json").read_text())
     assert parameters["loco_version"] == loco.__version__
-    assert set(parameters["dampers"]) == {"YD1", "YD2", "FSD"}
+    assert set(parameters["dampers"]) == {"YD1", "YD2", "FSD", "FSD-H"}
     assert parameters["amplitude_m"] == 3e-3
     with open(tmp_path / "damper_bench_summary.csv") as f:
         rows = list(csv.DictReader(f))
     assert {(r["damper"], float(r["frequency_hz"])) for r in rows} == {
-        (d, f) for d in ("YD1", "YD2", "FSD") for f in (1.0, 4.0)
+        (d, f) for d in ("YD1", "YD2", "FSD", "FSD-H") for f in (1.0, 4.0)
     }
     for row in rows:
         measured = float(row["equivalent_damping_nspm"])
-        assert measured == pytest.approx(float(row["closed_form_damping_nspm"]), rel=0.01)
+        if row["damper"] != "FSD-H":
+            assert measured == pytest.approx(float(row["closed_form_damping_nspm"]), rel=0.01)
+            continue
+        # The hydraulic valve opens for part of each stroke below its cut-off (3 mm: about
+        # 2.5 Hz) and stays closed above: between the open and closed modules' closed forms.
+        f = float(row["frequency_hz"])
+        c1, _ = dampers.maxwell_closed_form(200e3, 15e6, f, 15.0)
+        c2, _ = dampers.maxwell_closed_form(800e3, 15e6, f, 15.0)
+        if f > 2.5:
+            assert measured == pytest.approx(c2, rel=0.01)
+        else:
+            assert c1 * 1.05 < measured < c2 * 0.95
     with open(tmp_path / "damper_bench_loops.csv") as f:
         loops = list(csv.DictReader(f))
-    assert {r["damper"] for r in loops} == {"YD1", "YD2", "FSD"}
+    assert {r["damper"] for r in loops} == {"YD1", "YD2", "FSD", "FSD-H"}
+    with open(tmp_path / "valve_two_tone.csv") as f:
+        two_tone = list(csv.DictReader(f))
+    assert {r["trigger"] for r in two_tone} == set(dampers.TRIGGERS)
+    assert (tmp_path / "valve_cutoff_vs_amplitude.png").stat().st_size > 10_000
+
+
+def test_fsd_trigger_selection_and_valve_errors() -> None:
+    assert dampers.TRIGGERS == ("rms-frequency", "hydraulic")
+    assert dampers.FSD.parameters()["trigger"] == "rms-frequency"
+    assert dampers.describe(dampers.fsd(trigger="hydraulic")) == dampers.describe(
+        dampers.FSD_HYDRAULIC
+    )
+    assert dampers.label(dampers.FSD_HYDRAULIC) == "FSD-H"
+    with pytest.raises(loco.ParameterError, match="trigger"):
+        dampers.fsd(trigger="zero-crossing")
+    with pytest.raises(loco.ParameterError, match="orifice_area"):
+        dampers.fsd(trigger="hydraulic", orifice_area=0.0)
+    with pytest.raises(loco.ParameterError, match="opening_stroke"):
+        dampers.fsd(trigger="hydraulic", opening_stroke=-1e-3)
+    with pytest.raises(loco.ParameterError, match="reference_stroke_amplitude"):
+        dampers.fsd(trigger="hydraulic", reference_stroke_amplitude=0.0)
+    # Derived at another amplitude: the cut-off is f_p there (orbit solver, 1 %).
+    damper = dampers.fsd(trigger="hydraulic", reference_stroke_amplitude=1e-3)
+    _, cutoff = dampers.valve_opening_band(damper, [1e-3])
+    assert cutoff[0] == pytest.approx(2.0, rel=0.01)
+    with pytest.raises(loco.ParameterError, match="damper"):
+        dampers.valve_opening_band(dampers.FSD, [1e-3])
+
+
+def test_hydraulic_valve_at_the_vehicle_step() -> None:
+    """The vehicle runs the FSD without its mass at 1 ms steps, the valve advanced once per step;
+    the bench integrates the full model at microsecond steps: same valve open fraction on the
+    two-tone motion, pure sway and with an 8 Hz dither."""
+    from loco.studies.valve_bench import open_fraction, two_tone
+
+    full = dampers.FSD_HYDRAULIC
+    massless = dampers.fsd(trigger="hydraulic", equivalent_mass=0.0)
+    assert massless.fastest_rate * 1e-3 < 1.0  # one RK4 step per 1 ms sample on the bench
+    for dither_hz, ratio in ((8.0, 0.0), (8.0, 0.3)):
+        t, x = two_tone(dampers.REFERENCE_STROKE_AMPLITUDE, dither_hz, ratio, rate=1000.0)
+        fine = open_fraction(dampers.bench_recorded(full, t, x))
+        coarse = open_fraction(dampers.bench_recorded(massless, t, x))
+        assert fine > 0.1
+        assert coarse == pytest.approx(fine, abs=0.01)

@@ -18,6 +18,7 @@ from loco.studies.fsd_comparison import (
     run_fsd_comparison,
     save_fsd_comparison,
     valve_channels,
+    valve_open_fractions,
 )
 
 
@@ -27,12 +28,12 @@ def comparison() -> FsdComparison:
 
 
 def test_runs_and_table(comparison: FsdComparison) -> None:
-    assert comparison.dampers == ("YD1", "YD2", "FSD")
+    assert comparison.dampers == ("YD1", "YD2", "FSD", "FSD-H")
     assert not comparison.errors
     assert set(comparison.results) == {(s, d) for s, _, _ in CASES for d in DAMPERS}
     table = comparison.table()
-    assert len(table) == 6
-    assert list(table["quantity"]) == ["A_yc"] * 3 + ["A_yb"] * 3
+    assert len(table) == 8
+    assert list(table["quantity"]) == ["A_yc"] * 4 + ["A_yb"] * 4
     assert (table["dominant_hz"] > 0.2).all() and (table["psd_peak"] > 0).all()
     assert (table["rms"] > 0).all() and (table["error"] == "").all()
     # The table's peak and rms are the core's run metrics of the case's quantity.
@@ -45,7 +46,7 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     # The dampers were applied: the three runs of a scenario differ.
     for scenario, _, channel in CASES:
         signals = [comparison.results[(scenario, d)] for d in DAMPERS]
-        a, b, c = (r.channel(channel) for r in signals if r is not None)
+        a, b, c, *_ = (r.channel(channel) for r in signals if r is not None)
         assert not np.array_equal(a, b) and not np.array_equal(b, c)
 
 
@@ -53,7 +54,22 @@ def test_valves(comparison: FsdComparison) -> None:
     table = comparison.table()
     fsd = table[table["damper"] == "FSD"]["valve_closed_fraction"]
     assert fsd.between(0.0, 1.0).all()
-    assert table[table["damper"] != "FSD"]["valve_closed_fraction"].isna().all()
+    others = ~table["damper"].isin(["FSD", "FSD-H"])
+    assert table[others]["valve_closed_fraction"].isna().all()
+    # Open fractions per damper and per bogie: complements of the table's closed fraction.
+    openings = valve_open_fractions(comparison)
+    for (scenario, damper), g in openings.groupby(["scenario", "damper"]):
+        per_damper = g[g["valve"] != g["bogie"]]
+        assert len(per_damper) == 4 and set(g[g["valve"] == g["bogie"]]["valve"]) == {
+            "bogie1",
+            "bogie2",
+        }
+        row = table[(table["scenario"] == scenario) & (table["damper"] == damper)].iloc[0]
+        assert 1.0 - per_damper["open_fraction"].mean() == pytest.approx(
+            row["valve_closed_fraction"]
+        )
+        bogie1 = per_damper[per_damper["bogie"] == "bogie1"]["open_fraction"].mean()
+        assert g[g["valve"] == "bogie1"]["open_fraction"].iloc[0] == pytest.approx(bogie1)
     for scenario, _, _ in CASES:
         result = comparison.results[(scenario, "FSD")]
         assert result is not None
@@ -69,12 +85,18 @@ def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
     for path in [*record.figures, *record.tables]:
         assert path.is_file() and path.stat().st_size > 0, path
     names = {p.name for p in record.figures}
-    assert names == {"fsd_time_histories.png", "fsd_psd.png", "fsd_valve.png"}
+    assert names == {
+        "fsd_time_histories.png",
+        "fsd_psd.png",
+        "fsd_valve.png",
+        "fsd_valve_hydraulic.png",
+    }
     histories = pd.read_csv(out / "fsd_time_histories.csv")
     result = comparison.results[("S_low", "FSD")]
     assert result is not None
     assert len(histories) == len(result.time)
-    assert sum(c.endswith("_valve") for c in histories.columns) == 8  # 4 valves x 2 scenarios
+    # 4 valves x 2 scenarios x 2 FSDs (rms-frequency and hydraulic trigger)
+    assert sum(c.endswith("_valve") for c in histories.columns) == 16
     assert {"S_low_YD1_A_yc", "S_high_FSD_A_yb"} <= set(histories.columns)
     psd = pd.read_csv(out / "fsd_psd.csv")
     assert set(zip(psd["scenario"], psd["damper"], strict=True)) == set(comparison.results)

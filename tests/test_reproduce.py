@@ -93,7 +93,10 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     assert 1 <= len(check) <= TINY.n_verify
     assert np.isfinite(check[["W_y_simulated", "A_yb_simulated"]].to_numpy()).all()
     summary = pd.read_csv(out / "fsd_comparison" / "fsd_summary.csv")
-    assert len(summary) == 6
+    assert len(summary) == 8  # YD1, YD2, FSD, FSD-H on S_low and S_high
+    openings = pd.read_csv(out / "fsd_comparison" / "fsd_valve_open_fraction.csv")
+    assert set(openings["damper"]) == {"FSD", "FSD-H"}
+    assert openings["open_fraction"].between(0.0, 1.0).all()
 
 
 def test_rerun_skips_finished_stages(

@@ -310,10 +310,15 @@ __all__ += [
     "damper_hydraulic_defaults",
     "damper_maxwell",
     "damper_preset",
+    "fsd_reference_stroke_amplitude",
+    "fsd_trigger_names",
+    "fsd_valve_opening_band",
 ]
 
 _F64 = _NDArray[_np.float64]
-_BenchTuple = tuple[_F64, _F64, _F64, _F64, _F64, _F64, tuple[float, float, float] | None, float]
+_BenchTuple = tuple[
+    _F64, _F64, _F64, _F64, _F64, _F64, tuple[float, float, float] | None, float, _F64
+]
 
 @final
 class Damper:
@@ -325,7 +330,7 @@ class Damper:
     def n_states(self) -> int: ...
     @property
     def fastest_rate(self) -> float: ...
-    def parameters(self) -> dict[str, float | bool | None]: ...
+    def parameters(self) -> dict[str, float | bool | str | None]: ...
 
 def damper_maxwell(
     damping: float,
@@ -346,7 +351,16 @@ def damper_fsd(
     averaging_time: float,
     min_stroke_rms: float,
     warmup_time: float,
+    trigger: str,
+    reference_stroke_amplitude: float | None,
+    orifice_area: float | None,
+    aux_piston_area: float | None,
+    opening_stroke: float | None,
+    spring_stiffness: float | None,
 ) -> Damper: ...
+def fsd_trigger_names() -> list[str]: ...
+def fsd_reference_stroke_amplitude() -> float: ...
+def fsd_valve_opening_band(damper: Damper, amplitudes: _F64) -> tuple[_F64, _F64]: ...
 def damper_hydraulic(
     piston_area: float,
     rod_area: float,
@@ -362,7 +376,7 @@ def damper_hydraulic(
     switching_delay: float,
     start_closed: bool,
 ) -> Damper: ...
-def damper_hydraulic_defaults() -> dict[str, float | bool | None]: ...
+def damper_hydraulic_defaults() -> dict[str, float | bool | str | None]: ...
 def damper_preset(name: str) -> Damper: ...
 def damper_bench_sine(
     damper: Damper,

@@ -8,7 +8,10 @@ Rust core, ``crates/loco-core/src/dampers``.
 
 Presets: :data:`YD1` (200 kN·s/m), :data:`YD2` (800 kN·s/m), both with a series stiffness of
 22.5 kN/mm, and :data:`FSD` (c1 = 200, c2 = 800 kN·s/m, m = 15 kg, k = 15 kN/mm, f_p = 2 Hz,
-switching delay 0.05 s).
+switching delay 0.05 s) with its valve decided by the rms-frequency estimate;
+:data:`FSD_HYDRAULIC` is the same FSD with the hydraulic frequency valve (auxiliary chamber,
+orifice, spring-returned piston) derived for f_p at :data:`REFERENCE_STROKE_AMPLITUDE`.
+:data:`TRIGGERS` are the trigger names (``fsd(trigger=...)``, the study file's ``fsd_trigger``).
 """
 
 from __future__ import annotations
@@ -24,7 +27,10 @@ from loco._loco import Damper, ParameterError
 
 __all__ = [
     "FSD",
+    "FSD_HYDRAULIC",
     "PRESETS",
+    "REFERENCE_STROKE_AMPLITUDE",
+    "TRIGGERS",
     "YD1",
     "YD2",
     "BenchResult",
@@ -38,6 +44,7 @@ __all__ = [
     "label",
     "maxwell",
     "maxwell_closed_form",
+    "valve_opening_band",
 ]
 
 YD1: Damper = _loco.damper_preset("yd1")
@@ -48,6 +55,14 @@ FSD: Damper = _loco.damper_preset("fsd")
 """The spec's frequency-selective yaw damper."""
 PRESETS: dict[str, Damper] = {"YD1": YD1, "YD2": YD2, "FSD": FSD}
 """The spec's yaw dampers by name (SPEC §4), in the order the studies compare them."""
+FSD_HYDRAULIC: Damper = _loco.damper_preset("fsd-hydraulic")
+"""The spec's FSD with the hydraulic frequency valve (trigger ``"hydraulic"``)."""
+TRIGGERS: tuple[str, ...] = tuple(_loco.fsd_trigger_names())
+"""FSD trigger names, the default first: ``"rms-frequency"``, ``"hydraulic"``."""
+REFERENCE_STROKE_AMPLITUDE: float = _loco.fsd_reference_stroke_amplitude()
+"""Stroke amplitude (m) at which the hydraulic valve's cut-off is f_p: the measured yaw damper
+stroke of the S_low sway (``scripts/fsd_reference_stroke.py``)."""
+_LABELS: dict[str, Damper] = {**PRESETS, "FSD-H": FSD_HYDRAULIC}
 
 
 def describe(damper: Damper) -> dict[str, Any]:
@@ -61,13 +76,15 @@ def label(damper: Damper | None) -> str:
     if damper is None:
         return "vehicle file's yaw damper"
     wanted = describe(damper)
-    return next((n for n, d in PRESETS.items() if describe(d) == wanted), damper.kind)
+    return next((n for n, d in _LABELS.items() if describe(d) == wanted), damper.kind)
 
 
 _HYDRAULIC_DEFAULTS = _loco.damper_hydraulic_defaults()
 
 _F64 = NDArray[np.float64]
-_BenchTuple = tuple[_F64, _F64, _F64, _F64, _F64, _F64, tuple[float, float, float] | None, float]
+_BenchTuple = tuple[
+    _F64, _F64, _F64, _F64, _F64, _F64, tuple[float, float, float] | None, float, _F64
+]
 
 
 def maxwell(
@@ -99,14 +116,28 @@ def fsd(
     averaging_time: float = 0.25,
     min_stroke_rms: float = 1e-5,
     warmup_time: float = 0.75,
+    trigger: str = TRIGGERS[0],
+    reference_stroke_amplitude: float | None = None,
+    orifice_area: float | None = None,
+    aux_piston_area: float | None = None,
+    opening_stroke: float | None = None,
+    spring_stiffness: float | None = None,
 ) -> Damper:
     """A frequency-selective damper; the defaults are the spec's FSD.
 
     ``low_damping`` c1 (valve open, below ``cutoff_frequency`` f_p) must be below
-    ``high_damping`` c2. ``equivalent_mass`` may be 0 (massless Maxwell element). The trigger
-    estimates the stroke's frequency as rms velocity over rms displacement after a high-pass at
-    ``highpass_corner`` (Hz), averaged over two stages of ``averaging_time`` (s), and switches
-    outside the band f_p·(1 ± ``hysteresis_ratio``); a switch takes ``switching_delay`` (s).
+    ``high_damping`` c2. ``equivalent_mass`` may be 0 (massless Maxwell element). A switch takes
+    ``switching_delay`` (s). ``trigger`` (one of :data:`TRIGGERS`) decides the valve:
+
+    - ``"rms-frequency"``: the stroke's frequency estimated as rms velocity over rms
+      displacement after a high-pass at ``highpass_corner`` (Hz), averaged over two stages of
+      ``averaging_time`` (s); switches outside the band f_p·(1 ± ``hysteresis_ratio``).
+    - ``"hydraulic"``: the damper force fills an auxiliary chamber through an orifice; its
+      spring-returned piston opens the bypass past its opening stroke. The orifice (m²) and
+      spring (N/m) are derived so that a sine stroke of ``reference_stroke_amplitude`` (m,
+      default :data:`REFERENCE_STROKE_AMPLITUDE`) has its cut-off at f_p; ``orifice_area``,
+      ``aux_piston_area`` (m²), ``opening_stroke`` (m) and ``spring_stiffness`` (N/m) override
+      the derived or default values.
     """
     return _loco.damper_fsd(
         low_damping,
@@ -121,7 +152,23 @@ def fsd(
         averaging_time,
         min_stroke_rms,
         warmup_time,
+        trigger,
+        reference_stroke_amplitude,
+        orifice_area,
+        aux_piston_area,
+        opening_stroke,
+        spring_stiffness,
     )
+
+
+def valve_opening_band(
+    damper: Damper, amplitudes: ArrayLike
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """(lower, upper) frequency (Hz) between which a steady sine stroke of each amplitude (m)
+    opens the hydraulic valve of ``damper`` (an FSD with ``trigger="hydraulic"``); the upper one
+    is the cut-off f_c(amplitude). NaN where it opens nowhere in 0.05–50 Hz."""
+    x = np.ascontiguousarray(amplitudes, dtype=np.float64)
+    return _loco.fsd_valve_opening_band(damper, x)
 
 
 def _default(name: str, value: float | None) -> float:
@@ -195,6 +242,9 @@ class BenchResult:
     """Energy dissipated per cycle over the last cycles (J); sine only."""
     dissipated_energy: float
     """Energy dissipated over the whole run (J)."""
+    valve_volume: NDArray[np.float64]
+    """Hydraulic valve: volume displaced by the auxiliary piston (m³; the bypass is open past
+    the parameter ``opening_volume``); 0 for other dampers."""
 
 
 def _check_count(name: str, value: int, minimum: int) -> int:
@@ -205,9 +255,9 @@ def _check_count(name: str, value: int, minimum: int) -> int:
 
 
 def _result(raw: _BenchTuple) -> BenchResult:
-    time, x, v, force, scale, f_est, equivalent, energy = raw
+    time, x, v, force, scale, f_est, equivalent, energy, volume = raw
     c_eq, k_eq, e_cycle = equivalent if equivalent is not None else (None, None, None)
-    return BenchResult(time, x, v, force, scale, f_est, c_eq, k_eq, e_cycle, energy)
+    return BenchResult(time, x, v, force, scale, f_est, c_eq, k_eq, e_cycle, energy, volume)
 
 
 def bench(

@@ -18,6 +18,7 @@
 //! seed = 0
 //! band = [2.0, 200.0]              # m
 //! yaw_damper = "file"              # file (the parameter file's Maxwell) | YD1 | YD2 | FSD
+//! fsd_trigger = "rms-frequency"    # with FSD: rms-frequency (default) | hydraulic
 //! step = 1e-3                      # s
 //! output_rate = 500.0              # Hz
 //! per_sample_track = false         # a track per sample (seed + sample index)

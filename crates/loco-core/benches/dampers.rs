@@ -1,4 +1,6 @@
 //! One damper force evaluation (force and state derivatives) per damper type; target < 50 ns.
+//! The FSD's valve is advanced once per accepted step: `damper_advance_fsd` (rms-frequency
+//! trigger) and `damper_advance_fsd_hydraulic` (the hydraulic valve, target < 50 ns added).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::dampers::{Damper, HydraulicDamper, HydraulicParams, MAX_STATES};
@@ -9,6 +11,7 @@ fn evaluate(c: &mut Criterion) {
     let dampers = [
         ("maxwell_yd2", Damper::yd2()),
         ("fsd", Damper::fsd()),
+        ("fsd_hydraulic", Damper::fsd_hydraulic()),
         ("hydraulic", Damper::Hydraulic(hydraulic)),
     ];
     for (name, damper) in dampers {
@@ -28,22 +31,28 @@ fn evaluate(c: &mut Criterion) {
             })
         });
     }
-    let damper = Damper::fsd();
-    c.bench_function("damper_advance_fsd", |b| {
-        let mut discrete = damper.initial_discrete();
-        let mut t = 0.0;
-        b.iter(|| {
-            t += 1e-4;
-            damper.advance(
-                &mut discrete,
-                t,
-                black_box(1e-4),
-                black_box(2.0e-3),
-                black_box(0.01),
-                &[0.0, 0.0],
-            );
-        })
-    });
+    for (name, damper) in [
+        ("fsd", Damper::fsd()),
+        ("fsd_hydraulic", Damper::fsd_hydraulic()),
+    ] {
+        c.bench_function(&format!("damper_advance_{name}"), |b| {
+            let mut discrete = damper.initial_discrete();
+            let mut t = 0.0_f64;
+            b.iter(|| {
+                t += 1e-4;
+                // A 1.2 Hz stroke, so the hydraulic valve moves and switches.
+                let x = 2.0e-3 * (7.54 * t).sin();
+                damper.advance(
+                    &mut discrete,
+                    t,
+                    black_box(1e-4),
+                    black_box(x),
+                    black_box(0.01),
+                    &[0.0, 0.0],
+                );
+            })
+        });
+    }
 }
 
 criterion_group!(benches, evaluate);

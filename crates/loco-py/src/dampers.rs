@@ -4,8 +4,9 @@
 use crate::errors::run_detached;
 use loco_core::dampers::bench::{self, BenchMotion, BenchOptions, BenchRecord};
 use loco_core::dampers::{
-    BlowOff, Damper, FsdDamper, FsdParams, FsdTriggerParams, HydraulicDamper,
-    HydraulicFrequencyValve, HydraulicParams, MaxwellDamper, MaxwellParams,
+    BlowOff, Damper, FsdDamper, FsdParams, FsdTrigger, FsdTriggerParams, HydraulicDamper,
+    HydraulicFrequencyValve, HydraulicParams, HydraulicValve, HydraulicValveParams, MaxwellDamper,
+    MaxwellParams, REFERENCE_STROKE_AMPLITUDE_M,
 };
 use loco_core::LocoError as CoreError;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
@@ -66,7 +67,11 @@ impl PyDamper {
                 d.set_item("cutoff_frequency", p.cutoff_frequency_hz)?;
                 d.set_item("switching_delay", p.switching_delay_s)?;
                 d.set_item("start_closed", p.start_closed)?;
-                set_trigger(&d, &p.trigger)?;
+                d.set_item("trigger", p.trigger.name())?;
+                match &p.trigger {
+                    FsdTrigger::RmsFrequency(t) => set_trigger(&d, t)?,
+                    FsdTrigger::Hydraulic(v) => set_valve(&d, v)?,
+                }
             }
             Damper::Hydraulic(h) => {
                 let p = h.params();
@@ -105,6 +110,23 @@ fn set_trigger(d: &Bound<'_, PyDict>, t: &FsdTriggerParams) -> PyResult<()> {
     d.set_item("warmup_time", t.warmup_time_s)
 }
 
+fn set_valve(d: &Bound<'_, PyDict>, v: &HydraulicValve) -> PyResult<()> {
+    let p = v.params();
+    d.set_item("valve_piston_area", p.piston_area_m2)?;
+    d.set_item("orifice_area", p.orifice_area_m2)?;
+    d.set_item("valve_flow_coefficient", p.flow_coefficient)?;
+    d.set_item("valve_oil_density", p.oil_density_kgpm3)?;
+    d.set_item(
+        "valve_oil_kinematic_viscosity",
+        p.oil_kinematic_viscosity_m2ps,
+    )?;
+    d.set_item("aux_piston_area", p.aux_piston_area_m2)?;
+    d.set_item("opening_stroke", p.opening_stroke_m)?;
+    d.set_item("spring_stiffness", p.spring_stiffness_npm)?;
+    d.set_item("opening_volume", v.opening_volume_m3())?;
+    d.set_item("opening_pressure", v.opening_pressure_pa())
+}
+
 /// A Maxwell damper: damping (N·s/m) in series with a stiffness (N/m), optional blow-off.
 #[pyfunction]
 #[pyo3(signature = (damping, series_stiffness, knee_velocity=None, blow_off_damping=None))]
@@ -140,11 +162,14 @@ fn damper_maxwell(
     })
 }
 
-/// A frequency-selective damper; defaults are the spec's FSD.
+/// A frequency-selective damper; defaults are the spec's FSD. `trigger` is a name of
+/// `FsdTrigger::NAMES`; for "hydraulic" the valve is derived at `reference_stroke_amplitude`
+/// (m, default the measured one) and any of the valve overrides given replace a derived value.
 #[pyfunction]
 #[pyo3(signature = (low_damping, high_damping, equivalent_mass, equivalent_stiffness,
     cutoff_frequency, switching_delay, start_closed, hysteresis_ratio, highpass_corner,
-    averaging_time, min_stroke_rms, warmup_time))]
+    averaging_time, min_stroke_rms, warmup_time, trigger, reference_stroke_amplitude,
+    orifice_area, aux_piston_area, opening_stroke, spring_stiffness))]
 #[allow(clippy::too_many_arguments)]
 fn damper_fsd(
     py: Python<'_>,
@@ -160,6 +185,12 @@ fn damper_fsd(
     averaging_time: f64,
     min_stroke_rms: f64,
     warmup_time: f64,
+    trigger: String,
+    reference_stroke_amplitude: Option<f64>,
+    orifice_area: Option<f64>,
+    aux_piston_area: Option<f64>,
+    opening_stroke: Option<f64>,
+    spring_stiffness: Option<f64>,
 ) -> PyResult<PyDamper> {
     run_detached(py, move || {
         let damper = FsdDamper::new(FsdParams {
@@ -170,18 +201,82 @@ fn damper_fsd(
             cutoff_frequency_hz: cutoff_frequency,
             switching_delay_s: switching_delay,
             start_closed,
-            trigger: FsdTriggerParams {
+            trigger: FsdTrigger::RmsFrequency(FsdTriggerParams {
                 highpass_corner_hz: highpass_corner,
                 averaging_time_s: averaging_time,
                 hysteresis_ratio,
                 min_stroke_rms_m: min_stroke_rms,
                 warmup_time_s: warmup_time,
-            },
+            }),
         })?;
+        let damper = if FsdTrigger::check_name(&trigger)? == FsdTrigger::HYDRAULIC {
+            let derived = damper.with_hydraulic_valve(
+                reference_stroke_amplitude.unwrap_or(REFERENCE_STROKE_AMPLITUDE_M),
+            )?;
+            let p = *derived.hydraulic_valve().expect("just derived").params();
+            let valve = HydraulicValve::new(HydraulicValveParams {
+                orifice_area_m2: orifice_area.unwrap_or(p.orifice_area_m2),
+                aux_piston_area_m2: aux_piston_area.unwrap_or(p.aux_piston_area_m2),
+                opening_stroke_m: opening_stroke.unwrap_or(p.opening_stroke_m),
+                spring_stiffness_npm: spring_stiffness.unwrap_or(p.spring_stiffness_npm),
+                ..p
+            })?;
+            derived.with_trigger(FsdTrigger::Hydraulic(valve))
+        } else {
+            damper
+        };
         Ok(PyDamper {
             inner: Damper::Fsd(damper),
         })
     })
+}
+
+/// The names of the FSD triggers, the default first.
+#[pyfunction]
+fn fsd_trigger_names() -> Vec<&'static str> {
+    FsdTrigger::NAMES.to_vec()
+}
+
+/// The measured reference stroke amplitude of the hydraulic valve's derivation (m).
+#[pyfunction]
+fn fsd_reference_stroke_amplitude() -> f64 {
+    REFERENCE_STROKE_AMPLITUDE_M
+}
+
+/// The band (lower, upper) (Hz) in which a steady sine stroke of each amplitude (m) opens the
+/// hydraulic valve of an FSD (NaN, NaN where it opens nowhere).
+#[pyfunction]
+fn fsd_valve_opening_band<'py>(
+    py: Python<'py>,
+    damper: &PyDamper,
+    amplitudes: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Arr<'py>, Arr<'py>)> {
+    let amplitudes = amplitudes.as_array().to_vec();
+    let inner = damper.inner;
+    let (lower, upper) = run_detached(py, move || {
+        let fsd = match inner {
+            Damper::Fsd(f) if f.hydraulic_valve().is_some() => f,
+            _ => {
+                return Err(CoreError::param(
+                    "damper",
+                    "needs an FSD with trigger \"hydraulic\"",
+                ))
+            }
+        };
+        let valve = fsd.hydraulic_valve().expect("checked");
+        let closed = fsd.params().closed_module();
+        let mut out = (Vec::new(), Vec::new());
+        for &x in &amplitudes {
+            let x = loco_core::error::check_positive("amplitudes", x)?;
+            let (lo, hi) = valve
+                .opening_band_hz(&closed, x)
+                .unwrap_or((f64::NAN, f64::NAN));
+            out.0.push(lo);
+            out.1.push(hi);
+        }
+        Ok(out)
+    })?;
+    Ok((lower.into_pyarray(py), upper.into_pyarray(py)))
 }
 
 /// A hydraulic orifice damper; `open_area_ratio` adds a frequency valve (hydraulic FSD) with
@@ -241,17 +336,18 @@ fn damper_hydraulic_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     .parameters(py)
 }
 
-/// Preset: "yd1", "yd2" or "fsd".
+/// Preset: "yd1", "yd2", "fsd" or "fsd-hydraulic".
 #[pyfunction]
 fn damper_preset(name: &str) -> PyResult<PyDamper> {
     let inner = match name {
         "yd1" => Damper::yd1(),
         "yd2" => Damper::yd2(),
         "fsd" => Damper::fsd(),
+        "fsd-hydraulic" => Damper::fsd_hydraulic(),
         _ => {
             return Err(crate::errors::to_py_err(CoreError::param(
                 "name",
-                format!("unknown preset `{name}` (yd1, yd2, fsd)"),
+                format!("unknown preset `{name}` (yd1, yd2, fsd, fsd-hydraulic)"),
             )))
         }
     };
@@ -268,6 +364,7 @@ type BenchTuple<'py> = (
     Arr<'py>,
     Option<(f64, f64, f64)>,
     f64,
+    Arr<'py>,
 );
 
 fn to_tuple(py: Python<'_>, r: BenchRecord) -> BenchTuple<'_> {
@@ -281,6 +378,7 @@ fn to_tuple(py: Python<'_>, r: BenchRecord) -> BenchTuple<'_> {
         r.equivalent
             .map(|e| (e.damping_nspm, e.stiffness_npm, e.energy_per_cycle_j)),
         r.dissipated_energy_j,
+        r.valve_volume_m3.into_pyarray(py),
     )
 }
 
@@ -375,6 +473,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damper_hydraulic, m)?)?;
     m.add_function(wrap_pyfunction!(damper_hydraulic_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(damper_preset, m)?)?;
+    m.add_function(wrap_pyfunction!(fsd_trigger_names, m)?)?;
+    m.add_function(wrap_pyfunction!(fsd_reference_stroke_amplitude, m)?)?;
+    m.add_function(wrap_pyfunction!(fsd_valve_opening_band, m)?)?;
     m.add_function(wrap_pyfunction!(damper_bench_sine, m)?)?;
     m.add_function(wrap_pyfunction!(damper_bench_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(damper_bench_recorded, m)?)?;

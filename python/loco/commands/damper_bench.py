@@ -9,6 +9,10 @@ last cycles, after the FSD has settled. Writes ``damper_bench.png`` (both figure
 stiffness and energy per cycle, with the closed form of the linear models) and
 ``damper_bench_parameters.json`` (loco version and every parameter). :func:`bench_study` does it
 all and returns the report record (``loco reproduce`` uses it too).
+
+The FSD is benched with both valve models (``FSD``: the rms-frequency estimate, ``FSD-H``: the
+hydraulic valve), and :mod:`loco.studies.valve_bench` adds the valve state against time, the
+hydraulic valve's cut-off against stroke amplitude and the two-tone (sway + dither) bench.
 """
 
 from __future__ import annotations
@@ -23,15 +27,21 @@ import loco
 from loco import dampers
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.valve_bench import largest_opening_dither, run_valve_bench, save_valve_bench
 
 NAME = "damper-bench"
-HELP = "bench YD1, YD2 and FSD at 1 Hz and 4 Hz: force-velocity curves and hysteresis loops"
+HELP = (
+    "bench YD1, YD2, FSD and FSD-H at 1 Hz and 4 Hz: force-velocity curves, hysteresis loops, "
+    "frequency-valve states, cut-off vs amplitude, two-tone (sway + dither) bench"
+)
 
 FREQUENCIES_HZ = (1.0, 4.0)
 #: Default sine amplitude of the elongation, m.
 AMPLITUDE = 3e-3
 CYCLES = 10
 LOOP_CYCLES = 2
+#: The dampers benched: the spec's presets and the FSD with the hydraulic valve.
+BENCHED: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HYDRAULIC}
 LOOP_COLUMNS = (
     "damper",
     "frequency_hz",
@@ -57,6 +67,9 @@ def _closed_form(damper: dampers.Damper, frequency: float) -> tuple[float, float
         return dampers.maxwell_closed_form(
             float(p["damping"] or 0.0), float(p["series_stiffness"] or 0.0), frequency
         )
+    if p.get("trigger") == "hydraulic":
+        # The hydraulic valve opens for part of each stroke: no linear state to settle to.
+        return float("nan"), float("nan")
     cutoff = float(p["cutoff_frequency"] or 0.0)
     damping = p["high_damping"] if frequency > cutoff else p["low_damping"]
     return dampers.maxwell_closed_form(
@@ -76,7 +89,7 @@ def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecor
     summary: list[dict[str, object]] = []
     loops: list[pd.DataFrame] = []
     for column, frequency in enumerate(FREQUENCIES_HZ):
-        for name, damper in dampers.PRESETS.items():
+        for name, damper in BENCHED.items():
             result = dampers.bench(
                 damper, frequency, amplitude, CYCLES, equivalent_cycles=LOOP_CYCLES
             )
@@ -140,20 +153,37 @@ def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecor
         "frequencies_hz": list(FREQUENCIES_HZ),
         "cycles": CYCLES,
         "loop_cycles": LOOP_CYCLES,
-        "dampers": {name: dampers.describe(d) for name, d in dampers.PRESETS.items()},
+        "dampers": {name: dampers.describe(d) for name, d in BENCHED.items()},
+        "valve_reference_stroke_m": dampers.REFERENCE_STROKE_AMPLITUDE,
+    }
+    valve = run_valve_bench(dampers.REFERENCE_STROKE_AMPLITUDE)
+    valve_figures, valve_tables = save_valve_bench(valve, out)
+    limits = largest_opening_dither(valve)
+    limit_text = "; ".join(
+        f"{r.trigger} {r.dither_hz:g} Hz: opens up to a dither of {r.largest_opening_ratio:g}"
+        for r in limits.itertuples()
+    )
+    no_dither = {
+        r.trigger: r.open_fraction_without_dither
+        for r in limits.drop_duplicates("trigger").itertuples()
     }
     return StudyRecord(
         name=out.name,
         title="Yaw damper bench: YD1, YD2 and FSD at 1 and 4 Hz (SPEC §6.5)",
-        figures=[save_figure(fig, out / "damper_bench.png")],
+        figures=[save_figure(fig, out / "damper_bench.png"), *valve_figures],
         tables=[
             save_table(pd.DataFrame(summary), out / "damper_bench_summary.csv"),
             save_table(pd.concat(loops, ignore_index=True), out / "damper_bench_loops.csv"),
             save_json(parameters, out / "damper_bench_parameters.json"),
+            *valve_tables,
         ],
         parameters={k: v for k, v in parameters.items() if k != "dampers"},
         notes="Force-velocity curves (top) and hysteresis loops (bottom) over the last "
-        f"{LOOP_CYCLES} of {CYCLES} cycles of sine excitation.",
+        f"{LOOP_CYCLES} of {CYCLES} cycles of sine excitation; FSD-H is the FSD with the "
+        "hydraulic frequency valve. Valve bench at the reference stroke "
+        f"{dampers.REFERENCE_STROKE_AMPLITUDE * 1e3:.2f} mm: open fraction of a pure 1.2 Hz "
+        + ", ".join(f"{k} {v:.2f}" for k, v in no_dither.items())
+        + f"; with a dither (amplitude over the stroke's, open >= 5 % of the time): {limit_text}.",
     )
 
 

@@ -38,10 +38,11 @@ __all__ = [
     "plot_valves",
     "run_fsd_comparison",
     "save_fsd_comparison",
+    "valve_open_fractions",
 ]
 
-#: The yaw dampers compared (SPEC §4).
-DAMPERS: dict[str, dampers.Damper] = dict(dampers.PRESETS)
+#: The yaw dampers compared (SPEC §4), and the FSD with the hydraulic frequency valve (FSD-H).
+DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HYDRAULIC}
 #: (scenario, quantity label, channel): A_yc judges S_low, A_yb judges S_high.
 CASES: tuple[tuple[str, str, str], ...] = (("S_low", *A_YC), ("S_high", *A_YB))
 SCENARIO_QUANTITY: dict[str, str] = {s: q for s, q, _ in CASES}
@@ -120,6 +121,29 @@ class FsdComparison:
                 )
                 rows.append(row)
         return pd.DataFrame(rows)
+
+
+def valve_open_fractions(cmp: FsdComparison) -> pd.DataFrame:
+    """Per (scenario, FSD law, yaw damper): the valve open fraction, the time average of
+    1 - scale factor (1 always open, low damping; 0 always closed), and the bogie of the damper;
+    plus one row per bogie (``valve`` = ``bogieN``) averaging its two dampers."""
+    rows = []
+    for (scenario, name), result in cmp.results.items():
+        if result is None or not cmp.has_valve(name):
+            continue
+        for channel in valve_channels(result):
+            bogie = next((b for b in ("bogie1", "bogie2") if b in channel), "")
+            opening = 1.0 - float(np.mean(result.channel(channel)))
+            rows.append((scenario, name, channel.removesuffix(VALVE_SUFFIX), bogie, opening))
+    table = pd.DataFrame(rows, columns=["scenario", "damper", "valve", "bogie", "open_fraction"])
+    per_bogie = pd.DataFrame(
+        table.groupby(["scenario", "damper", "bogie"], as_index=False, sort=False)[
+            "open_fraction"
+        ].mean()
+    )
+    per_bogie["valve"] = per_bogie["bogie"]
+    frames: list[pd.DataFrame] = [table, pd.DataFrame(per_bogie[list(table.columns)])]
+    return pd.concat(frames, ignore_index=True)
 
 
 def valve_channels(result: loco.SimulationResult) -> list[str]:
@@ -295,7 +319,8 @@ def _histories_frame(cmp: FsdComparison) -> pd.DataFrame:
 def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     """Write figures, tables and settings into ``out_dir``; return the record.
 
-    Files: ``fsd_time_histories.png``, ``fsd_psd.png``, ``fsd_valve.png``, ``fsd_summary.csv``
+    Files: ``fsd_time_histories.png``, ``fsd_psd.png``, ``fsd_valve.png`` (and
+    ``fsd_valve_hydraulic.png`` for FSD-H), ``fsd_valve_open_fraction.csv``, ``fsd_summary.csv``
     (dominant frequency and PSD peak per run), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
     ``fsd_comparison.json`` (loco version and settings).
     """
@@ -306,6 +331,11 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         plot_time_histories(cmp, out / "fsd_time_histories.png"),
         plot_psds(cmp, out / "fsd_psd.png"),
         plot_valves(cmp, out / "fsd_valve.png"),
+        *(
+            [plot_valves(cmp, out / "fsd_valve_hydraulic.png", damper="FSD-H")]
+            if "FSD-H" in cmp.damper_laws
+            else []
+        ),
     ]
     summary = cmp.table()
     spectra = cmp.spectra()
@@ -319,6 +349,7 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
             pd.concat(psd, ignore_index=True) if psd else pd.DataFrame(), out / "fsd_psd.csv"
         ),
         save_table(_histories_frame(cmp), out / "fsd_time_histories.csv"),
+        save_table(valve_open_fractions(cmp), out / "fsd_valve_open_fraction.csv"),
         save_json(cmp.settings, out / "fsd_comparison.json"),
     ]
     lead_in = cmp.settings.get("lead_in_m", 0.0)
@@ -326,6 +357,11 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         f"{s} {d}: {SCENARIO_QUANTITY[s]} dominant {sp.dominant_hz:.2f} Hz, "
         f"PSD peak {sp.peak:.3g} (m/s²)²/Hz"
         for (s, d), sp in spectra.items()
+    )
+    openings = valve_open_fractions(cmp)
+    bogies = openings[openings["valve"] == openings["bogie"]]
+    notes += ". Valve open fraction (1 - mean scale factor) by bogie: " + "; ".join(
+        f"{r.scenario} {r.damper} {r.bogie} {r.open_fraction:.2f}" for r in bogies.itertuples()
     )
     if cmp.errors:
         notes += ". Failed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())

@@ -4,8 +4,11 @@
 //! # The four modules (spec §4)
 //! 1. **Damping modules** c1 (valve open) and c2 (valve closed), linear laws.
 //! 2. **Frequency valve**: open (flow through the bypass, low damping) or closed (high damping).
-//! 3. **Trigger** ([`super::fsd_trigger`]): estimates the frequency of the stroke and decides
-//!    "low" or "high" with a hysteresis band around `f_p`.
+//! 3. **Trigger**, one of [`FsdTrigger`]: `"rms-frequency"` ([`super::fsd_trigger`]) estimates
+//!    the frequency of the stroke and decides "low" or "high" with a hysteresis band around
+//!    `f_p`; `"hydraulic"` ([`super::frequency_valve`]) is the mechanism: the damper force fills
+//!    an auxiliary chamber through an orifice and its piston opens the bypass past its stroke
+//!    (decision "low" while it is open). Either way the decision drives the same scale factor.
 //! 4. **Scale factor** `s ∈ [0, 1]`: the damping is `c(s) = c1 + s·(c2 - c1)`; `s` moves toward
 //!    the trigger's decision (1 for "high", 0 for "low") at the rate `1/switching_delay`, so a
 //!    complete switch takes exactly the switching delay and a reversal half-way starts from where
@@ -42,9 +45,11 @@
 //! (5.3e4 1/s for the spec values): explicit integrators need `dt < 2.78·m/c2 ≈ 5e-5 s`
 //! ([`FsdDamper::fastest_rate_per_s`]).
 
-use super::fsd_trigger::{FsdTriggerParams, TriggerMemory};
+use super::frequency_valve::{ClosedModule, HydraulicValve, ValveDesign};
+use super::fsd_trigger::{FsdTrigger, FsdTriggerParams, TriggerMemory};
 use crate::error::{check_non_negative, check_positive, Result};
 use crate::LocoError;
+use std::sync::OnceLock;
 
 /// Parameters of an [`FsdDamper`] (SI units). The default is the spec's FSD (§4).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -57,14 +62,15 @@ pub struct FsdParams {
     pub equivalent_mass_kg: f64,
     /// Equivalent (series) stiffness k (N/m), > 0.
     pub equivalent_stiffness_npm: f64,
-    /// Cut-off frequency of the frequency valve f_p (Hz), > 0.
+    /// Cut-off frequency of the frequency valve f_p (Hz), > 0: the rms-frequency trigger's
+    /// threshold; the hydraulic valve is derived for it ([`FsdDamper::with_hydraulic_valve`]).
     pub cutoff_frequency_hz: f64,
     /// Time for a complete switch of the valve (s), > 0.
     pub switching_delay_s: f64,
     /// Valve state at start: true = closed (high damping).
     pub start_closed: bool,
-    /// Tuning of the trigger.
-    pub trigger: FsdTriggerParams,
+    /// The trigger and its parameters.
+    pub trigger: FsdTrigger,
 }
 
 impl Default for FsdParams {
@@ -78,7 +84,26 @@ impl Default for FsdParams {
             cutoff_frequency_hz: 2.0,
             switching_delay_s: 0.05,
             start_closed: true,
-            trigger: FsdTriggerParams::default(),
+            trigger: FsdTrigger::default(),
+        }
+    }
+}
+
+impl FsdParams {
+    /// The closed (high-damping, c2) module that makes the valve's pressure.
+    pub fn closed_module(&self) -> ClosedModule {
+        ClosedModule {
+            damping_nspm: self.high_damping_nspm,
+            stiffness_npm: self.equivalent_stiffness_npm,
+            mass_kg: self.equivalent_mass_kg,
+        }
+    }
+
+    /// The open (low-damping, c1) module.
+    pub fn open_module(&self) -> ClosedModule {
+        ClosedModule {
+            damping_nspm: self.low_damping_nspm,
+            ..self.closed_module()
         }
     }
 }
@@ -135,6 +160,48 @@ impl FsdDamper {
         Self {
             params: FsdParams::default(),
             rigid_series: false,
+        }
+    }
+
+    /// The spec's FSD with the hydraulic valve derived for its f_p at the measured reference
+    /// stroke ([`super::frequency_valve::REFERENCE_STROKE_AMPLITUDE_M`]); derived once.
+    pub fn spec_hydraulic() -> Self {
+        static DERIVED: OnceLock<FsdDamper> = OnceLock::new();
+        *DERIVED.get_or_init(|| {
+            Self::spec()
+                .with_hydraulic_valve(super::frequency_valve::REFERENCE_STROKE_AMPLITUDE_M)
+                .expect("the spec's valve design is reachable (tested)")
+        })
+    }
+
+    /// The same damper with the hydraulic valve derived for its f_p at the stroke amplitude
+    /// `reference_stroke_amplitude_m` (m), the default geometry and f_l = f_p/4.
+    pub fn with_hydraulic_valve(&self, reference_stroke_amplitude_m: f64) -> Result<Self> {
+        let design = ValveDesign {
+            cutoff_frequency_hz: self.params.cutoff_frequency_hz,
+            lowest_holding_frequency_hz: self.params.cutoff_frequency_hz / 4.0,
+            ..ValveDesign::spec(reference_stroke_amplitude_m)
+        };
+        let valve = design.derive(&self.params.closed_module(), &self.params.open_module())?;
+        Ok(self.with_trigger(FsdTrigger::Hydraulic(valve)))
+    }
+
+    /// The same damper with another trigger.
+    pub fn with_trigger(&self, trigger: FsdTrigger) -> Self {
+        Self {
+            params: FsdParams {
+                trigger,
+                ..self.params
+            },
+            ..*self
+        }
+    }
+
+    /// The hydraulic valve, if that is the trigger.
+    pub fn hydraulic_valve(&self) -> Option<&HydraulicValve> {
+        match &self.params.trigger {
+            FsdTrigger::Hydraulic(v) => Some(v),
+            FsdTrigger::RmsFrequency(_) => None,
         }
     }
 
@@ -208,7 +275,8 @@ impl FsdDamper {
     }
 
     /// Moves the scale factor toward the trigger's decision after a step of `dt_s` (s), then
-    /// lets the trigger judge the stroke at the end of the step.
+    /// lets the trigger judge the end of the step: the stroke (rms-frequency) or the damper
+    /// force `force_n` (N, hydraulic).
     pub fn advance_valve(
         &self,
         trigger: &mut TriggerMemory,
@@ -216,18 +284,50 @@ impl FsdDamper {
         dt_s: f64,
         elongation_m: f64,
         elongation_rate_mps: f64,
+        force_n: f64,
     ) {
         let p = &self.params;
-        advance_scale_factor(
-            trigger,
-            scale_factor,
-            &p.trigger,
-            p.cutoff_frequency_hz,
-            p.switching_delay_s,
-            dt_s,
-            elongation_m,
-            elongation_rate_mps,
-        );
+        match &p.trigger {
+            FsdTrigger::RmsFrequency(t) => advance_scale_factor(
+                trigger,
+                scale_factor,
+                t,
+                p.cutoff_frequency_hz,
+                p.switching_delay_s,
+                dt_s,
+                elongation_m,
+                elongation_rate_mps,
+            ),
+            FsdTrigger::Hydraulic(valve) => {
+                ramp_scale_factor(
+                    scale_factor,
+                    trigger.high_frequency,
+                    dt_s,
+                    p.switching_delay_s,
+                );
+                if dt_s > 0.0 && force_n.is_finite() {
+                    trigger.valve_volume_m3 = valve.step(trigger.valve_volume_m3, force_n, dt_s);
+                }
+                trigger.high_frequency = !valve.is_open(trigger.valve_volume_m3);
+            }
+        }
+    }
+
+    /// The force (N) at the end of a step from the elongation rate (m/s), the continuous states
+    /// and the scale factor (what the hydraulic valve's pressure comes from).
+    #[inline]
+    pub fn force_from_states(
+        &self,
+        elongation_m: f64,
+        rate_mps: f64,
+        states: &[f64],
+        s: f64,
+    ) -> f64 {
+        if self.rigid_series {
+            self.damping_at(s) * rate_mps
+        } else {
+            self.params.equivalent_stiffness_npm * (elongation_m - states[0])
+        }
     }
 
     /// Valve position from the scale factor and the trigger's decision.
@@ -287,13 +387,12 @@ pub(crate) fn advance_scale_factor(
     elongation_m: f64,
     elongation_rate_mps: f64,
 ) {
-    let target = if trigger.high_frequency { 1.0 } else { 0.0 };
-    let step = dt_s.max(0.0) / switching_delay_s;
-    *scale_factor = if target > *scale_factor {
-        (*scale_factor + step).min(target)
-    } else {
-        (*scale_factor - step).max(target)
-    };
+    ramp_scale_factor(
+        scale_factor,
+        trigger.high_frequency,
+        dt_s,
+        switching_delay_s,
+    );
     trigger.update(
         trigger_params,
         cutoff_frequency_hz,
@@ -301,6 +400,24 @@ pub(crate) fn advance_scale_factor(
         elongation_m,
         elongation_rate_mps,
     );
+}
+
+/// Moves the scale factor during a step of `dt_s` (s) toward the decision (1 closed for
+/// "high", 0 open) at `1/switching_delay_s` (1/s).
+#[inline]
+pub(crate) fn ramp_scale_factor(
+    scale_factor: &mut f64,
+    high_frequency: bool,
+    dt_s: f64,
+    switching_delay_s: f64,
+) {
+    let target = if high_frequency { 1.0 } else { 0.0 };
+    let step = dt_s.max(0.0) / switching_delay_s;
+    *scale_factor = if target > *scale_factor {
+        (*scale_factor + step).min(target)
+    } else {
+        (*scale_factor - step).max(target)
+    };
 }
 
 #[cfg(test)]

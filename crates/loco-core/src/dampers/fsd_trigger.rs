@@ -33,7 +33,66 @@
 //! `min_stroke_rms_m` (the ratio is meaningless in noise) and during the first
 //! `warmup_time_s` (the averages are not yet filled).
 
+use super::frequency_valve::HydraulicValve;
 use crate::error::{check_non_negative, check_positive, Result};
+
+/// How the FSD decides its valve: the rms-frequency estimate of this module, or the hydraulic
+/// mechanism of [`super::frequency_valve`]. The names ([`FsdTrigger::NAMES`]) are the one spelling
+/// of every front end (Python `trigger=`, the study file's `fsd_trigger`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FsdTrigger {
+    /// `"rms-frequency"`: frequency estimate sqrt(<v²>/<x²>) with hysteresis (this module).
+    RmsFrequency(FsdTriggerParams),
+    /// `"hydraulic"`: auxiliary chamber, orifice and spring-returned piston.
+    Hydraulic(HydraulicValve),
+}
+
+impl FsdTrigger {
+    /// Name of the rms-frequency estimator.
+    pub const RMS_FREQUENCY: &'static str = "rms-frequency";
+    /// Name of the hydraulic valve.
+    pub const HYDRAULIC: &'static str = "hydraulic";
+    /// Every trigger name, the default first.
+    pub const NAMES: [&'static str; 2] = [Self::RMS_FREQUENCY, Self::HYDRAULIC];
+    /// The default trigger's name (the spec's FSD preset).
+    pub const DEFAULT: &'static str = Self::RMS_FREQUENCY;
+
+    /// This trigger's name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::RmsFrequency(_) => Self::RMS_FREQUENCY,
+            Self::Hydraulic(_) => Self::HYDRAULIC,
+        }
+    }
+
+    /// Checks the parameters of either kind.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Self::RmsFrequency(p) => p.validate(),
+            // Validated on construction.
+            Self::Hydraulic(_) => Ok(()),
+        }
+    }
+
+    /// Refuses a name that is not in [`FsdTrigger::NAMES`], naming the field `trigger`.
+    pub fn check_name(name: &str) -> Result<&'static str> {
+        Self::NAMES.into_iter().find(|n| *n == name).ok_or_else(|| {
+            crate::LocoError::param(
+                "trigger",
+                format!(
+                    "unknown FSD trigger '{name}' (expected {})",
+                    Self::NAMES.join(", ")
+                ),
+            )
+        })
+    }
+}
+
+impl Default for FsdTrigger {
+    fn default() -> Self {
+        Self::RmsFrequency(FsdTriggerParams::default())
+    }
+}
 
 /// Tuning of the FSD trigger. The defaults are design values chosen from the estimator analysis
 /// in the module documentation (no published trigger law exists for this abstract FSD model).
@@ -102,6 +161,8 @@ pub struct TriggerMemory {
     pub estimated_frequency_hz: f64,
     /// Current decision: true when the excitation is judged above the cut-off (valve closed).
     pub high_frequency: bool,
+    /// Hydraulic trigger only: volume displaced by the auxiliary piston from its centre (m³).
+    pub valve_volume_m3: f64,
 }
 
 impl TriggerMemory {
@@ -116,6 +177,7 @@ impl TriggerMemory {
             rate_mean_square_m2ps2: [0.0; 2],
             estimated_frequency_hz: f64::NAN,
             high_frequency,
+            valve_volume_m3: 0.0,
         }
     }
 

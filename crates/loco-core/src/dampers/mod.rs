@@ -10,8 +10,11 @@
 //!   (zero: no force at zero elongation). Maxwell: `[x_d]`, the deflection of the damper element;
 //!   FSD with mass: `[x_d, ẋ_d]`; hydraulic: `[x_d]`.
 //! - **Discrete state**: a small `Copy` [`DamperDiscreteState`] (FSD valve scale factor, trigger
-//!   filters and decision), from [`Damper::initial_discrete`], updated by [`Damper::advance`] once
-//!   per *accepted* time step (never inside the stages of a Runge-Kutta step or a rejected step).
+//!   filters and decision, the hydraulic valve's chamber volume), from
+//!   [`Damper::initial_discrete`], updated by [`Damper::advance`] once per *accepted* time step
+//!   (never inside the stages of a Runge-Kutta step or a rejected step). The hydraulic valve is
+//!   integrated there (implicit Euler, with the force at the end of the step): slow against the
+//!   step (its fastest rate, laminar conductance over chamber compliance, is about 10² 1/s).
 //! - **Force**: [`Damper::evaluate`] is pure and allocation-free: from the elongation `x` (m, the
 //!   change of the distance between the two attachment points from its static value), the
 //!   elongation rate (m/s), the continuous states and the discrete state it returns the force (N)
@@ -76,17 +79,22 @@
 //! ```
 //!
 //! Submodules: [`maxwell`] (linear or blow-off law), [`fsd`] (the FSD and its state machine),
-//! [`fsd_trigger`] (frequency estimation and hysteresis), [`hydraulic`] (orifice model, optional
+//! [`fsd_trigger`] (frequency estimation and hysteresis, the choice of trigger),
+//! [`frequency_valve`] (the hydraulic frequency valve, trigger `"hydraulic"`), [`hydraulic`] (orifice model, optional
 //! frequency valve), [`bench`](mod@bench) (sine, sweep or recorded excitation, equivalent values).
 
 pub mod bench;
+pub mod frequency_valve;
 pub mod fsd;
 pub mod fsd_trigger;
 pub mod hydraulic;
 pub mod maxwell;
 
+pub use frequency_valve::{
+    ClosedModule, HydraulicValve, HydraulicValveParams, ValveDesign, REFERENCE_STROKE_AMPLITUDE_M,
+};
 pub use fsd::{FsdDamper, FsdParams, ValveState};
-pub use fsd_trigger::{FsdTriggerParams, TriggerMemory};
+pub use fsd_trigger::{FsdTrigger, FsdTriggerParams, TriggerMemory};
 pub use hydraulic::{HydraulicDamper, HydraulicFrequencyValve, HydraulicParams};
 pub use maxwell::{BlowOff, MaxwellDamper, MaxwellParams};
 
@@ -137,6 +145,12 @@ impl Damper {
     /// f_p = 2 Hz, switching delay 0.05 s).
     pub fn fsd() -> Self {
         Self::Fsd(FsdDamper::spec())
+    }
+
+    /// The spec's FSD with the hydraulic frequency valve (trigger `"hydraulic"`) derived for
+    /// f_p = 2 Hz at [`REFERENCE_STROKE_AMPLITUDE_M`].
+    pub fn fsd_hydraulic() -> Self {
+        Self::Fsd(FsdDamper::spec_hydraulic())
     }
 
     /// Number of continuous states (≤ [`MAX_STATES`]; 0 with a rigid series spring).
@@ -264,16 +278,30 @@ impl Damper {
         elongation_rate_mps: f64,
         states: &[f64],
     ) {
-        let _ = (t_s, states); // the valve judges the stroke, not the internal states
+        let _ = t_s;
         match self {
             Self::Maxwell(_) => {}
-            Self::Fsd(d) => d.advance_valve(
-                &mut discrete.trigger,
-                &mut discrete.scale_factor,
-                dt_s,
-                elongation_m,
-                elongation_rate_mps,
-            ),
+            Self::Fsd(d) => {
+                // The hydraulic valve's pressure is made by the force at the end of the step.
+                let force_n = if d.hydraulic_valve().is_some() {
+                    d.force_from_states(
+                        elongation_m,
+                        elongation_rate_mps,
+                        states,
+                        discrete.scale_factor,
+                    )
+                } else {
+                    0.0
+                };
+                d.advance_valve(
+                    &mut discrete.trigger,
+                    &mut discrete.scale_factor,
+                    dt_s,
+                    elongation_m,
+                    elongation_rate_mps,
+                    force_n,
+                )
+            }
             Self::Hydraulic(d) => {
                 if let Some(valve) = d.params().frequency_valve {
                     fsd::advance_scale_factor(

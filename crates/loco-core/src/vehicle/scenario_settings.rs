@@ -15,7 +15,7 @@ use crate::contact::fastsim::FastsimParams;
 use crate::contact::profile::{Profile, ProfileKind};
 use crate::contact::profile_io::load_profile;
 use crate::contact::setup::TrackSetup;
-use crate::dampers::Damper;
+use crate::dampers::{Damper, FsdTrigger};
 use crate::error::{LocoError, Result};
 use crate::track::{load_csv, MeasuredParams, SynthesisParams, TrackIrregularity, TrackSpectrum};
 use serde::Deserialize;
@@ -52,6 +52,9 @@ pub struct ScenarioSettings {
     /// Yaw damper preset: `file` (the parameter file's Maxwell damper, default), `YD1`, `YD2`
     /// or `FSD`.
     pub yaw_damper: Option<String>,
+    /// Trigger of the `FSD` preset: a name of [`FsdTrigger::NAMES`] (`rms-frequency`, the
+    /// default, or `hydraulic`); only with `yaw_damper = "FSD"`.
+    pub fsd_trigger: Option<String>,
     /// Integration step, s.
     pub step: Option<f64>,
     /// Output sampling rate, Hz.
@@ -158,6 +161,29 @@ impl ScenarioSettings {
         let creep = match &self.creep {
             Some(name) => CreepModel::from_name(name)?,
             None => CreepModel::default(),
+        };
+        let yaw_damper = match (&self.fsd_trigger, yaw_damper) {
+            (None, law) => law,
+            (Some(name), Some(Damper::Fsd(_))) if self.yaw_damper.as_deref() == Some("FSD") => {
+                match FsdTrigger::check_name(name).map_err(|_| {
+                    conflict(
+                        "fsd_trigger",
+                        format!(
+                            "expected one of {}, got '{name}'",
+                            FsdTrigger::NAMES.join(", ")
+                        ),
+                    )
+                })? {
+                    FsdTrigger::HYDRAULIC => Some(Damper::fsd_hydraulic()),
+                    _ => Some(Damper::fsd()),
+                }
+            }
+            (Some(_), _) => {
+                return Err(conflict(
+                    "fsd_trigger",
+                    "only with the preset yaw_damper = \"FSD\"",
+                ))
+            }
         };
         let track_defaults = TrackSetup::default();
         let run_defaults = RunSettings::default();
@@ -408,6 +434,34 @@ mod tests {
         assert_eq!(yaw_damper_preset("YD1").unwrap(), Some(Damper::yd1()));
         assert_eq!(yaw_damper_preset("YD2").unwrap(), Some(Damper::yd2()));
         assert_eq!(yaw_damper_preset("FSD").unwrap(), Some(Damper::fsd()));
+        let base = ScenarioSettings {
+            name: Some("S_low".into()),
+            speed: Some(50.0),
+            distance: Some(10.0),
+            track: Some("perfect".into()),
+            yaw_damper: Some("FSD".into()),
+            fsd_trigger: Some("hydraulic".into()),
+            ..ScenarioSettings::default()
+        };
+        let dir = Path::new(".");
+        let hydraulic = base.resolve(GivenObjects::default(), dir).unwrap();
+        assert_eq!(hydraulic.yaw_damper, Some(Damper::fsd_hydraulic()));
+        let bad = ScenarioSettings {
+            fsd_trigger: Some("zero-crossing".into()),
+            ..base.clone()
+        };
+        assert_eq!(
+            field_of(bad.resolve(GivenObjects::default(), dir).unwrap_err()),
+            "fsd_trigger"
+        );
+        let not_fsd = ScenarioSettings {
+            yaw_damper: Some("YD1".into()),
+            ..base
+        };
+        assert_eq!(
+            field_of(not_fsd.resolve(GivenObjects::default(), dir).unwrap_err()),
+            "fsd_trigger"
+        );
         assert_eq!(
             field_of(yaw_damper_preset("fsd").unwrap_err()),
             "yaw_damper"

@@ -100,6 +100,8 @@ pub struct BenchRecord {
     pub scale_factor: Vec<f64>,
     /// Trigger's frequency estimate (Hz; NaN without a valve or before it can judge).
     pub estimated_frequency_hz: Vec<f64>,
+    /// Hydraulic trigger: volume displaced by the auxiliary piston (m³; 0 for other dampers).
+    pub valve_volume_m3: Vec<f64>,
     /// Equivalent values (sine motion only).
     pub equivalent: Option<Equivalent>,
     /// Total energy dissipated over the run, `∫F·ẋ dt` (J).

@@ -129,6 +129,9 @@ fn push_sample(
     record
         .estimated_frequency_hz
         .push(discrete.trigger.estimated_frequency_hz);
+    record
+        .valve_volume_m3
+        .push(discrete.trigger.valve_volume_m3);
 }
 
 /// Drives the damper through a recorded motion, recording at the given sample times.

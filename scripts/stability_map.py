@@ -1,0 +1,162 @@
+"""Stability map: linear critical speed against equivalent conicity for YD1, YD2 and the FSD with
+its valve fixed open (c1) and fixed closed (c2).
+
+The conicity sweep uses a conical wheel on a knife-edge rail (``loco.critical_speed(...,
+conicity=)``: Δr = 2·conicity·y exactly); the three built-in wheel/rail pairs of the study
+(S_low, S_norm, S_high, real profiles) are added as points at their EN 15302 equivalent conicity
+(3 mm). The FSD with a fixed valve is its damping module, c1 = 200 or c2 = 800 kN·s/m with
+k = 15 kN/mm and m = 15 kg: the linearisation keeps the valve's scale factor at its start value
+(checked: the open FSD gives the critical speed of a 200 kN·s/m, 15 kN/mm Maxwell element,
+240.6 km/h at conicity 0.3, to the bisection tolerance). Nonlinear critical speeds at the three
+scenarios are optional (``--nonlinear``: a speed ramp-down from 300 km/h after the core's default
+disturbance, about a minute; ``inf`` when the vehicle does not hunt at 300 km/h).
+
+Writes ``stability_map.png``, ``stability_map.csv`` (conicity sweep), ``stability_map_wheels.csv``
+(built-in pairs) and ``stability_map.json`` (loco version and settings) into ``--out``.
+Usage: ``python scripts/stability_map.py [--out out/stability_map] [--points 16] [--nonlinear]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+import loco
+from loco import dampers
+from loco.conicity import equivalent_conicity
+from loco.studies.plotting import pyplot, save_figure
+
+#: The yaw damper laws of the map, by name. The linearisation holds the FSD's discrete state
+#: at its start value, so ``start_closed`` fixes the valve open (c1) or closed (c2).
+LAWS: dict[str, dampers.Damper] = {
+    "YD1": dampers.YD1,
+    "YD2": dampers.YD2,
+    "FSD open (c1)": dampers.fsd(start_closed=False),
+    "FSD closed (c2)": dampers.fsd(start_closed=True),
+}
+#: In a time simulation the FSD's trigger moves its valve, so the nonlinear critical speed of the
+#: FSD with a fixed valve uses its damping module as a Maxwell element (c1 or c2 with k; the
+#: 15 kg equivalent mass left out, a relative effect m·ω²/k of 10⁻³ at 5 Hz).
+_FSD = dampers.FSD.parameters()
+FIXED_VALVE: dict[str, dampers.Damper] = {
+    "FSD open (c1)": dampers.maxwell(
+        float(_FSD["low_damping"] or 0.0), float(_FSD["equivalent_stiffness"] or 0.0)
+    ),
+    "FSD closed (c2)": dampers.maxwell(
+        float(_FSD["high_damping"] or 0.0), float(_FSD["equivalent_stiffness"] or 0.0)
+    ),
+}
+#: Study scenarios and their wheel/rail pairs (``vehicle/scenario.rs``).
+PAIRS = {"S_low": "jm3-thin-flange", "S_norm": "jm3-new", "S_high": "jm3-worn"}
+HIGH = 150.0  # m/s: top of the bisection (540 km/h); inf above it
+RAMP_START = 300.0 / 3.6  # m/s: start of the nonlinear ramp-down
+
+
+def scenario(yaw_damper: dampers.Damper, name: str | None = None) -> loco.Scenario:
+    return loco.Scenario(
+        scenario=name or "S_norm", speed=200 / 3.6, distance=100.0, yaw_damper=yaw_damper
+    )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("out/stability_map"))
+    parser.add_argument("--points", type=int, default=16, help="conicities in 0.02-0.8")
+    parser.add_argument("--nonlinear", action="store_true", help="add ramp-down critical speeds")
+    args = parser.parse_args()
+    start = time.perf_counter()
+    vehicle = loco.Locomotive.default()
+    conicities = np.geomspace(0.02, 0.8, args.points)
+    rows = []
+    for name, law in LAWS.items():
+        for c in conicities:
+            try:
+                v, error = (
+                    loco.critical_speed(vehicle, scenario(law), high=HIGH, conicity=float(c)),
+                    "",
+                )
+            except loco.ContactError as e:
+                # The cone on knife-edge pair's contact table cannot be built at every conicity.
+                v, error = float("nan"), str(e)
+            rows.append(
+                {
+                    "damper": name,
+                    "conicity": float(c),
+                    "critical_speed_kmh": v * 3.6,
+                    "error": error,
+                }
+            )
+            print(f"{name:>16} conicity {c:.3f}: {v * 3.6:.0f} km/h {error[:60]}", flush=True)
+    sweep = pd.DataFrame(rows)
+    wheel_rows = []
+    for pair, wheel in PAIRS.items():
+        tan_g = equivalent_conicity(wheel, "cn60")
+        for name, law in LAWS.items():
+            row = {"scenario": pair, "wheel": wheel, "conicity": tan_g, "damper": name}
+            row["linear_kmh"] = loco.critical_speed(vehicle, scenario(law, pair), high=HIGH) * 3.6
+            if args.nonlinear:
+                fixed = FIXED_VALVE.get(name, law)
+                s = loco.Scenario(scenario=pair, speed=RAMP_START, distance=100.0, yaw_damper=fixed)
+                try:
+                    row["nonlinear_kmh"] = loco.critical_speed(vehicle, s, method="nonlinear") * 3.6
+                except loco.SimulationError as e:
+                    row["nonlinear_kmh"], row["nonlinear_error"] = float("nan"), str(e)
+            wheel_rows.append(row)
+            print(f"{pair} ({tan_g:.3f}) {name}: {row}", flush=True)
+    wheels = pd.DataFrame(wheel_rows)
+    args.out.mkdir(parents=True, exist_ok=True)
+    sweep.to_csv(args.out / "stability_map.csv", index=False)
+    wheels.to_csv(args.out / "stability_map_wheels.csv", index=False)
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 5), layout="constrained")
+    cap = HIGH * 3.6
+    for i, name in enumerate(LAWS):
+        g = sweep[sweep["damper"] == name]
+        v = g["critical_speed_kmh"].clip(upper=cap)
+        ax.plot(g["conicity"], v, "o-", ms=3, color=f"C{i}", label=name)
+        stable = g["critical_speed_kmh"] == np.inf
+        ax.plot(g["conicity"][stable], v[stable], "^", ms=7, color=f"C{i}")
+        w = wheels[wheels["damper"] == name]
+        ax.plot(
+            w["conicity"], w["linear_kmh"].clip(upper=cap), "s", ms=8, mfc="none", color=f"C{i}"
+        )
+    for pair, g in wheels.groupby("scenario"):
+        ax.annotate(str(pair), (g["conicity"].iloc[0], cap * 1.02), fontsize=8, ha="center")
+    failed = sweep[sweep["error"] != ""]["conicity"]
+    if len(failed):
+        ax.axvspan(
+            failed.min(), conicities.max(), color="0.85", label="cone pair: no contact table"
+        )
+    ax.axhline(200.0, color="k", lw=0.6, ls=":", label="200 km/h")
+    ax.set(
+        xscale="log",
+        xlabel="equivalent conicity (–)",
+        ylabel="linear critical speed (km/h)",
+        title="Cone on knife-edge rail (lines), built-in wheels on CN60 (squares); "
+        f"triangles: stable up to {HIGH * 3.6:.0f} km/h",
+    )
+    ax.title.set_fontsize(9)
+    ax.set_xticks([0.02, 0.05, 0.1, 0.2, 0.5, 0.8], ["0.02", "0.05", "0.1", "0.2", "0.5", "0.8"])
+    ax.minorticks_off()
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save_figure(fig, args.out / "stability_map.png")
+    settings = {
+        "loco_version": loco.__version__,
+        "conicities": conicities.tolist(),
+        "high_mps": HIGH,
+        "dampers": {n: dampers.describe(d) for n, d in LAWS.items()},
+        "seconds": time.perf_counter() - start,
+    }
+    (args.out / "stability_map.json").write_text(json.dumps(settings, indent=2))
+    print(f"written to {args.out} in {settings['seconds']:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
