@@ -9,4 +9,5 @@ COMMAND_MODULES: list[str] = [
     "info",
     "damper_bench",
     "reproduce",
+    "campaign",
 ]
