@@ -161,57 +161,64 @@ class CampaignStore:
     def load(self) -> StoreState:
         """Every valid stored sample; each part is checked (name, hash, rows, campaign key), a
         failing one set aside with a :class:`CorruptStoreWarning` naming it."""
-        frames, parts, corrupt = [], [], sorted(self.samples_dir.glob("*.corrupt"))
-        seen: set[int] = set()
+        import pyarrow as pa
+
+        tables, parts, corrupt = [], [], sorted(self.samples_dir.glob("*.corrupt"))
         for path in sorted(self.samples_dir.glob("part-*.parquet")):
             try:
-                frame = self._read_part(path)
+                tables.append(self._read_part(path))
             except ValueError as e:
                 target = path.with_name(path.name + ".corrupt")
                 if self.writable:
                     os.replace(path, target)
                 warnings.warn(
                     f"sample store: {path} is corrupt ({e}); "
-                    + (f"set aside as {target.name}, its samples will be run again"
-                       if self.writable else "its samples count as missing"),
+                    + (
+                        f"set aside as {target.name}, its samples will be run again"
+                        if self.writable
+                        else "its samples count as missing"
+                    ),
                     CorruptStoreWarning,
                     stacklevel=2,
                 )
                 corrupt.append(target if self.writable else path)
                 continue
-            fresh = ~frame["sample"].isin(seen)
-            seen.update(int(i) for i in frame["sample"])
-            frames.append(frame[fresh])
             parts.append(path)
-        frame = (
-            pd.concat(frames, ignore_index=True).sort_values("sample", ignore_index=True)
-            if frames
-            else pd.DataFrame({"sample": np.zeros(0, dtype=np.int64)})
-        )
+        if not tables:
+            empty = pd.DataFrame({"sample": np.zeros(0, dtype=np.int64)})
+            return StoreState(frame=empty, parts=parts, corrupt=corrupt)
+        frame = pa.concat_tables(tables, promote_options="default").to_pandas()
+        # One writer never stores a sample twice; should two have, keep the first copy.
+        frame = frame.drop_duplicates("sample").sort_values("sample", ignore_index=True)
         return StoreState(frame=frame, parts=parts, corrupt=corrupt)
 
-    def _read_part(self, path: Path) -> pd.DataFrame:
+    def _read_part(self, path: Path) -> Any:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
         match = _PART.match(path.name)
         if match is None:
             raise ValueError("not a part file name")
-        if file_sha256(path) != match.group(3):
+        data = path.read_bytes()
+        if hashlib.sha256(data).hexdigest() != match.group(3):
             raise ValueError("its SHA-256 does not match its name: truncated or modified")
         try:
-            frame = pd.read_parquet(path, engine="pyarrow")
+            table = pq.read_table(pa.BufferReader(data))
+            samples = table.column("sample").to_numpy()
+            keys = set(table.column("campaign").to_pylist())
         except Exception as e:  # pyarrow raises several types for a damaged file
             raise ValueError(f"unreadable: {e}") from e
-        samples = frame["sample"].to_numpy() if "sample" in frame else np.zeros(0)
         if (
-            len(frame) != int(match.group(2))
+            len(samples) != int(match.group(2))
             or len(samples) == 0
             or int(samples[0]) != int(match.group(1))
             or samples.min() < 0
             or samples.max() >= self.n_samples
         ):
             raise ValueError("its rows are not those its name says")
-        if "campaign" in frame and (frame["campaign"] != self.key).any():
+        if keys != {self.key}:
             raise ValueError("its rows belong to another campaign")
-        return frame
+        return table
 
     def to_xarray(self) -> xarray.Dataset:
         """The stored samples as an ``xarray.Dataset`` on a ``sample`` dimension."""
