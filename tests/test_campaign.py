@@ -102,7 +102,7 @@ def test_sigkill_loses_no_finished_sample(
     np.save(tmp_path / "design.npy", design)
     (tmp_path / "campaign.py").write_text(SCRIPT, encoding="utf-8")
     store = tmp_path / "store"
-    log = open(tmp_path / "log.txt", "w+", encoding="utf-8")  # noqa: SIM115
+    log = open(tmp_path / "log.txt", "w+", encoding="utf-8")
     proc = subprocess.Popen(
         [sys.executable, str(tmp_path / "campaign.py"), str(tmp_path / "design.npy"), str(store)],
         stdout=log,

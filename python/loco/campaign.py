@@ -140,7 +140,7 @@ def campaign_inputs(
     return {
         "kind": "loco.run_batch",
         "names": list(names),
-        "n_samples": int(len(x)),
+        "n_samples": len(x),
         "design_sha256": _array_sha(x),
         "seed": int(seed),
         "vehicle": vehicle_desc,

@@ -137,7 +137,12 @@ def run_chunk(
 def _rebuild_damper(kind: str, parameters: dict[str, Any]) -> _loco.Damper:
     from loco import dampers
 
-    build = {"maxwell": dampers.maxwell, "fsd": dampers.fsd, "hydraulic": dampers.hydraulic}[kind]
+    builders: dict[str, Callable[..., _loco.Damper]] = {
+        "maxwell": dampers.maxwell,
+        "fsd": dampers.fsd,
+        "hydraulic": dampers.hydraulic,
+    }
+    build = builders[kind]
     accepted = inspect.signature(build).parameters
     return build(**{k: v for k, v in parameters.items() if v is not None and k in accepted})
 
@@ -183,7 +188,7 @@ class Executor(ABC):
         """One line for logs."""
         return type(self).__name__
 
-    def close(self) -> None:
+    def close(self) -> None:  # noqa: B027 (nothing to release by default)
         """Release the cluster this executor started (nothing for local threads)."""
 
     def __enter__(self) -> Executor:

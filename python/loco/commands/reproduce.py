@@ -330,6 +330,7 @@ def reproduce(
         ),
         ("fsd_comparison", {**common, "lead_in_m": fsd_comparison.LEAD_IN}, fsd),
     ]
+
     def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:
         """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
 
