@@ -4,8 +4,11 @@ wall time of a large study on a cluster.
 For each sample count the same Latin hypercube design (six study parameters, S_high, 200 km/h)
 runs, alternately, as one ``loco.run_batch`` on local rayon threads and as a campaign on a Dask
 ``LocalCluster`` of ``--workers`` processes (one rayon thread each, so both use the same cores),
-with and without the Parquet sample store. The cluster is started once and its start-up time is
-reported apart. The metrics of every Dask run are checked bit-identical to the local ones.
+with and without the Parquet sample store, and as a campaign on local threads with the store
+(what ``loco reproduce`` does by default). The cluster is started once and its start-up time is
+reported apart. The metrics of every run are checked bit-identical to the plain batch's. Besides
+wall time, the CPU time of this process and of the worker processes is summed: on a machine
+shared with other jobs the wall time also measures their load, the CPU time much less so.
 
 From the measured per-sample cost (core-seconds per run = local wall time × threads / samples)
 and the Dask overhead, it projects a Saltelli N = 1024 study (N·(k + 2) = 8192 runs per scenario
@@ -20,19 +23,65 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import tempfile
 import time
+from typing import Any
 
 import numpy as np
 
 import loco
 from loco.campaign import run_campaign
-from loco.executors import DaskExecutor
+from loco.executors import DaskExecutor, LocalExecutor
 from loco.studies.parameters import names
 from loco.studies.sampling import latin_hypercube
 
 #: Runs per scenario of Saltelli N = 1024 on six parameters with second-order terms, N·(2k + 2).
 SALTELLI_RUNS = 1024 * (2 * 6 + 2)
+
+
+def _cpu_seconds() -> float:
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _cpu_total(dask: DaskExecutor) -> float:
+    """CPU seconds of this process and of every worker process so far."""
+    return _cpu_seconds() + sum(dask.client.run(_cpu_seconds).values())
+
+
+def _bench(
+    n: int, scenario: loco.Scenario, dask: DaskExecutor, threads: int, repeat: int
+) -> tuple[dict[str, float], dict[str, float], loco.BatchResult]:
+    """Best wall and CPU seconds of each way of running ``n`` samples."""
+    x = latin_hypercube(n, seed=1)
+    wall: dict[str, float] = {}
+    cpu: dict[str, float] = {}
+    reference: loco.BatchResult | None = None
+    for _ in range(repeat):
+        runs: dict[str, tuple[Any, str | None]] = {
+            "local": (None, None),
+            "local+store": (LocalExecutor(threads), tempfile.mkdtemp()),
+            "dask": (dask, None),
+            "dask+store": (dask, tempfile.mkdtemp()),
+        }
+        for label, (executor, store) in runs.items():
+            c, t = _cpu_total(dask), time.perf_counter()
+            if executor is None:
+                result = loco.run_batch(
+                    x, names(), scenario=scenario, threads=threads, progress=False
+                )
+            else:
+                result = run_campaign(
+                    x, names(), scenario=scenario, executor=executor, store=store, progress=False
+                )
+            wall[label] = min(wall.get(label, np.inf), time.perf_counter() - t)
+            cpu[label] = min(cpu.get(label, np.inf), _cpu_total(dask) - c)
+            reference = reference or result
+            assert result.metrics.tobytes() == reference.metrics.tobytes(), label
+            assert np.array_equal(result.status, reference.status), label
+    assert reference is not None
+    return wall, cpu, reference
 
 
 def main() -> None:
@@ -54,35 +103,25 @@ def main() -> None:
         startup = time.perf_counter() - start
         print(f"LocalCluster start-up: {startup:.1f} s")
         for n in args.samples:
-            x = latin_hypercube(n, seed=1)
-            best: dict[str, float] = {}
-            for _ in range(args.repeat):
-                t = time.perf_counter()
-                local = loco.run_batch(x, names(), scenario=scenario, threads=threads,
-                                       progress=False)  # fmt: skip
-                best["local"] = min(best.get("local", np.inf), time.perf_counter() - t)
-                for label, store in (("dask", None), ("dask+store", tempfile.mkdtemp())):
-                    t = time.perf_counter()
-                    remote = run_campaign(x, names(), scenario=scenario, executor=dask,
-                                          store=store, progress=False)  # fmt: skip
-                    best[label] = min(best.get(label, np.inf), time.perf_counter() - t)
-                    assert remote.metrics.tobytes() == local.metrics.tobytes(), label
-                    assert np.array_equal(remote.status, local.status), label
-            per_sample = best["local"] * threads / n
+            wall, cpu, local = _bench(n, scenario, dask, threads, args.repeat)
+            per_sample = cpu["local"] / n
             print(
-                f"{n:5d} samples: local {best['local']:7.1f} s ({per_sample:.3f} core-s/run, "
-                f"{local.n_failed} failed), dask {best['dask']:7.1f} s "
-                f"({best['dask'] / best['local'] - 1:+.1%}), "
-                f"dask+store {best['dask+store']:7.1f} s "
-                f"({best['dask+store'] / best['local'] - 1:+.1%}); chunk "
-                f"{dask.default_chunk_size(n)} samples"
+                f"{n:5d} samples ({local.n_failed} failed), chunk {dask.default_chunk_size(n)}: "
+                f"local batch {wall['local']:.1f} s wall, {cpu['local']:.1f} s CPU "
+                f"({per_sample:.3f} core-s/run); load {os.getloadavg()[0]:.1f}"
             )
-            overhead = best["dask+store"] / best["local"] - 1
+            for label in ("local+store", "dask", "dask+store"):
+                print(
+                    f"       {label:12s} {wall[label]:7.1f} s wall "
+                    f"({wall[label] / wall['local'] - 1:+.1%}), {cpu[label]:7.1f} s CPU "
+                    f"({cpu[label] / cpu['local'] - 1:+.1%})"
+                )
+            overhead = cpu["dask+store"] / cpu["local"] - 1
             runs = 2 * SALTELLI_RUNS
-            wall = runs * per_sample / args.cluster_cores * (1 + max(overhead, 0.0))
+            projected = runs * per_sample / args.cluster_cores * (1 + max(overhead, 0.0))
             print(
                 f"       projection: Saltelli N=1024, 2 scenarios ({runs} runs of "
-                f"{args.distance:g} m) on {args.cluster_cores} cores: {wall / 60:.1f} min "
+                f"{args.distance:g} m) on {args.cluster_cores} cores: {projected / 60:.1f} min "
                 f"(+ cluster start-up)"
             )
 

@@ -74,6 +74,12 @@ def test_local_cluster_bit_identical_to_threads(
         result = loco.run_batch(design, names(), scenario=SCENARIO, executor=cluster,
                                 chunk_size=chunk_size, progress=False)  # fmt: skip
         _same(result, local)
+    # An input error on a worker comes back as the loco error, naming the design's row.
+    bad = design.copy()
+    bad[6, 1] = np.nan
+    with pytest.raises(loco.ParameterError, match=r"row 6, column 1 'K_py'"):
+        loco.run_batch(bad, names(), scenario=SCENARIO, executor=cluster, chunk_size=4,
+                       progress=False)  # fmt: skip
     # Histories come back from the workers too.
     kept = loco.run_batch(design[:2], names(), scenario=SCENARIO, executor=cluster,
                           histories=[1], progress=False)  # fmt: skip

@@ -223,8 +223,26 @@ class LocalExecutor(Executor):
         return f"local threads ({self.slots})"
 
 
-def _run_chunk_on_worker(job: BatchJob, chunk: Chunk, threads: int) -> ChunkResult:
-    return run_chunk(job, chunk, threads)
+@dataclass(frozen=True)
+class _ChunkError:
+    """A loco error raised on a worker, by class name: the native exception classes do not
+    pickle (their module is ``_loco``), and an input error is not worth Dask's retries."""
+
+    kind: str
+    message: str
+
+
+def _run_chunk_on_worker(job: BatchJob, chunk: Chunk, threads: int) -> ChunkResult | _ChunkError:
+    try:
+        return run_chunk(job, chunk, threads)
+    except _loco.LocoError as e:
+        return _ChunkError(type(e).__name__, str(e))
+
+
+def _worker_build() -> tuple[str, str]:
+    from loco.campaign import build_hash
+
+    return _loco.__version__, build_hash()
 
 
 class DaskExecutor(Executor):
@@ -277,7 +295,7 @@ class DaskExecutor(Executor):
                 n_workers=n_workers,
                 threads_per_worker=1,
                 processes=True,
-                dashboard_address=None,
+                dashboard_address=":0",  # any free port: several clusters may run
             )
             client = distributed.Client(cluster)
             self._owned += [client, cluster]
@@ -298,6 +316,7 @@ class DaskExecutor(Executor):
                 "invalid parameter `scenario.track`: a loaded track cannot be sent to Dask "
                 "workers; run it with local threads"
             )
+        self._check_builds()
         # One copy of the job per worker, not per task.
         shared = self.client.scatter(job, broadcast=True, hash=False)
         futures = [
@@ -308,11 +327,27 @@ class DaskExecutor(Executor):
         ]
         try:
             for future in self._distributed.as_completed(futures):
-                yield future.result()
+                result = future.result()
+                if isinstance(result, _ChunkError):
+                    raise getattr(_loco, result.kind, _loco.LocoError)(result.message)
+                yield result
         finally:
             # Reached on completion, on an error, on Ctrl-C and when the caller stops early.
             self.client.cancel([f for f in futures if not f.done()])
             self.client.cancel(shared)
+
+    def _check_builds(self) -> None:
+        """Refuse workers running another loco build: their numbers would be stored under this
+        build's campaign key."""
+        from loco.campaign import build_hash
+
+        mine = (_loco.__version__, build_hash())
+        for worker, theirs in self.client.run(_worker_build).items():
+            if tuple(theirs) != mine:
+                raise _loco.LocoError(
+                    f"Dask worker {worker} runs loco {theirs[0]} (build {theirs[1][:12]}), this "
+                    f"process loco {mine[0]} (build {mine[1][:12]}): install the same build"
+                )
 
     def describe(self) -> str:
         workers = self.client.nthreads()
