@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 import pickle
 import signal
+import subprocess
 import sys
 import threading
 import time
@@ -20,6 +21,7 @@ import loco
 from loco import dampers, profiles
 from loco.campaign import run_campaign
 from loco.executors import DaskExecutor, executor_from_options, require_distributed
+from loco.store import find_campaigns
 from loco.studies.evaluators import simulator_evaluator
 from loco.studies.optimisation import nsga2
 from loco.studies.parameters import names
@@ -138,3 +140,57 @@ def test_missing_extra_is_named(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("DASK_SCHEDULER_ADDRESS", "tcp://127.0.0.1:1")
     with pytest.raises(ImportError, match="loco\\[distributed\\]"):
         executor_from_options()
+
+
+INTERRUPTED = """
+import sys, numpy as np, loco
+from loco.campaign import run_campaign
+from loco.executors import DaskExecutor
+from loco.studies.parameters import names
+from loco.studies.sampling import latin_hypercube
+
+if __name__ == "__main__":
+    scenario = loco.Scenario(scenario="S_high", distance=300.0, seed=2)
+    def stored(idx):
+        print("stored", *idx.tolist(), flush=True)
+    with DaskExecutor(n_workers=1) as dask:
+        print("pids", *dask.client.run(__import__("os").getpid).values(), flush=True)
+        run_campaign(latin_hypercube(12, seed=1), names(), scenario=scenario, executor=dask,
+                     store=sys.argv[1], chunk_size=1, progress=False, on_chunk=stored)
+    print("complete", flush=True)
+"""
+
+
+def test_ctrl_c_cancels_the_futures(tmp_path: Path) -> None:
+    """SIGINT to a campaign on a cluster: the client cancels its futures and closes the
+    cluster it started, the process ends with KeyboardInterrupt, the finished chunks are
+    stored."""
+    script = tmp_path / "campaign.py"
+    script.write_text(INTERRUPTED, encoding="utf-8")
+    out = tmp_path / "out.txt"
+    with open(out, "w", encoding="utf-8") as log:
+        proc = subprocess.Popen([sys.executable, str(script), str(tmp_path / "store")],
+                                stdout=log, stderr=subprocess.PIPE, text=True)  # fmt: skip
+        deadline = time.monotonic() + 180
+        while "stored" not in out.read_text() and time.monotonic() < deadline:
+            assert proc.poll() is None, proc.stderr.read() if proc.stderr else ""
+            time.sleep(0.05)
+        proc.send_signal(signal.SIGINT)
+        _, stderr = proc.communicate(timeout=120)
+    text = out.read_text()
+    assert "complete" not in text and "KeyboardInterrupt" in stderr
+    assert proc.returncode != 0
+    worker = int(next(line for line in text.splitlines() if line.startswith("pids")).split()[1])
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:  # the worker process ends with its cluster
+        try:
+            os.kill(worker, 0)
+        except ProcessLookupError:
+            break
+        time.sleep(0.1)
+    else:
+        pytest.fail("the worker process outlived its cluster")
+    reported = {int(i) for line in text.splitlines() if line.startswith("stored")
+                for i in line.split()[1:]}  # fmt: skip
+    (campaign,) = find_campaigns(tmp_path / "store")
+    assert campaign.n_done >= len(reported) > 0 and campaign.n_done < 12
