@@ -115,3 +115,23 @@ def test_rerun_skips_finished_stages(
     ran = [line for line in lines if line.endswith("running")]
     assert ran == ["[optimisation] running"]
     assert len(pd.read_csv(out / "optimisation" / "pareto_verification.csv")) <= 2
+
+
+def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, str]) -> None:
+    """Issue 13: a truncated ``monte_carlo.csv`` (the file still exists) is not trusted; the stage
+    runs again and takes every sample from its store (no simulation), so the stages that read
+    the table see the same content hash and stay finished."""
+    out, _ = run
+    table = out / "monte_carlo" / "monte_carlo.csv"
+    whole = table.read_bytes()
+    parts = sorted((out / "monte_carlo" / "store").rglob("part-*.parquet"))
+    assert parts, "the Monte Carlo samples are kept in the stage's store"
+    table.write_bytes(whole[: len(whole) // 2])
+    lines: list[str] = []
+    fewer = dataclasses.replace(TINY, n_verify=2)  # the sizes of the last run above
+    reproduce(fewer, out, threads=2, progress=False, log=lines.append)
+    assert "[monte_carlo] output monte_carlo/monte_carlo.csv is changed or truncated since the " \
+        "stage finished: running again" in lines  # fmt: skip
+    assert [line for line in lines if line.endswith("running")] == ["[monte_carlo] running"]
+    assert table.read_bytes() == whole
+    assert sorted((out / "monte_carlo" / "store").rglob("part-*.parquet")) == parts

@@ -10,6 +10,11 @@ Every sample runs on the same synthesised track (common random numbers: differen
 samples come from the parameters, not from the track) unless ``per_sample_track`` is set, in
 which case sample ``i`` gets the track of ChaCha stream ``i`` of the seed. Either way the numbers
 are bit-identical for any thread count.
+
+With ``executor`` (local threads or a Dask cluster, :mod:`loco.executors`) or ``store`` (a
+directory keeping every finished sample, :mod:`loco.store`), or inside
+``loco.campaign.using(...)``, the batch runs as a campaign (:func:`loco.campaign.run_campaign`):
+in chunks, only the samples not stored yet, with the same numbers.
 """
 
 from __future__ import annotations
@@ -17,7 +22,8 @@ from __future__ import annotations
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -29,7 +35,9 @@ from loco.vehicle import Locomotive
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["SPEED", "STATUS_NAMES", "BatchResult", "run_batch"]
+    from loco.executors import Executor
+
+__all__ = ["SPEED", "STATUS_NAMES", "BatchResult", "history_results", "run_batch"]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -60,6 +68,8 @@ class BatchResult:
     histories: dict[int, SimulationResult] = field(default_factory=dict)
     seconds: float = 0.0
     threads: int = 0
+    #: Samples read back from a campaign's store instead of run.
+    n_reused: int = 0
 
     @property
     def n_failed(self) -> int:
@@ -103,6 +113,9 @@ def run_batch(
     *,
     histories: Sequence[int] = (),
     per_sample_track: bool = False,
+    executor: Executor | None = None,
+    store: str | Path | None = None,
+    chunk_size: int | None = None,
 ) -> BatchResult:
     """Simulate one run per row of ``params`` in parallel.
 
@@ -128,7 +141,14 @@ def run_batch(
     histories : sequence of int
         Samples whose time histories are kept (``result.histories[i]``).
     per_sample_track : bool
-        Give every sample its own synthesised track (stream ``i`` of the seed).
+        Give every sample its own synthesised track (stream ``i`` of the seed). Not with an
+        executor or a store (a chunk would number its streams from 0).
+    executor : loco.executors.Executor, optional
+        Where the chunks run (local threads, a Dask cluster); see :mod:`loco.campaign`.
+    store : path, optional
+        Directory of campaign stores: finished samples are kept there and not run again.
+    chunk_size : int, optional
+        Samples per chunk of a campaign (default: the executor's choice).
 
     Raises
     ------
@@ -138,6 +158,27 @@ def run_batch(
     KeyboardInterrupt
         Ctrl-C: the batch stops within a few integration steps.
     """
+    from loco import campaign
+
+    if executor is not None or store is not None or campaign.current() is not None:
+        if per_sample_track:
+            raise _loco.ParameterError(
+                "invalid parameter `per_sample_track`: not available in a campaign (an executor "
+                "or a store): each chunk would number its track streams from 0"
+            )
+        return campaign.run_campaign(
+            params,
+            names,
+            vehicle,
+            scenario,
+            seed=seed,
+            executor=executor,
+            store=store,
+            chunk_size=chunk_size,
+            threads=threads,
+            progress=progress,
+            histories=histories,
+        )
     vehicle = vehicle or Locomotive.default()
     scenario = scenario or Scenario(scenario="S_high")
     x = np.asarray(params, dtype=np.float64)
@@ -170,18 +211,7 @@ def run_batch(
         if bar:
             bar.close()
     seconds = time.perf_counter() - start
-    named = dict(zip(metric_names, range(len(metric_names)), strict=True))
-    kept_results = {
-        i: SimulationResult(
-            time=t,
-            channel_names=list(channel_names),
-            channels=channels,
-            metrics={k: float(metrics[i, j]) for k, j in named.items()},
-            sampling_rate=float(scenario.output_rate),
-            parameters={n: float(v) for n, v in zip(names, x[i], strict=True)},
-        )
-        for i, t, channel_names, channels in kept
-    }
+    kept_results = history_results(kept, metric_names, metrics, names, x, scenario)
     return BatchResult(
         params=x,
         names=list(names),
@@ -193,6 +223,29 @@ def run_batch(
         seconds=seconds,
         threads=threads or 0,
     )
+
+
+def history_results(
+    kept: Sequence[tuple[int, FloatArray, Sequence[str], FloatArray]],
+    metric_names: Sequence[str],
+    metrics: FloatArray,
+    names: Sequence[str],
+    x: FloatArray,
+    scenario: Scenario,
+) -> dict[int, SimulationResult]:
+    """The kept time histories ``(sample, time, channel names, channels)`` as results."""
+    named: dict[str, Any] = dict(zip(metric_names, range(len(metric_names)), strict=True))
+    return {
+        i: SimulationResult(
+            time=t,
+            channel_names=list(channel_names),
+            channels=channels,
+            metrics={k: float(metrics[i, j]) for k, j in named.items()},
+            sampling_rate=float(scenario.output_rate),
+            parameters={n: float(v) for n, v in zip(names, x[i], strict=True)},
+        )
+        for i, t, channel_names, channels in kept
+    }
 
 
 class _ProgressBar:

@@ -10,4 +10,5 @@ COMMAND_MODULES: list[str] = [
     "damper_bench",
     "frf",
     "reproduce",
+    "campaign",
 ]

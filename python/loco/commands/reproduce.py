@@ -13,6 +13,13 @@ stage finished with the same settings is skipped on a rerun, ``--force`` runs it
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
 
+Every batch of a stage runs as a campaign (:mod:`loco.campaign`) on one executor — local threads
+(default), ``--workers N`` (a Dask ``LocalCluster``) or ``--scheduler tcp://host:8786`` (or
+``$DASK_SCHEDULER_ADDRESS``) — and keeps its finished samples in ``<out>/<stage>/store/``: a rerun
+after a kill simulates only the samples not stored. ``--force`` clears those stores too. A stage's
+marker records the content hash of its outputs, and the stages that read the Monte Carlo table
+record its hash in their settings, so a damaged output is never reused.
+
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
 500 m at 200 km/h; 256 Saltelli base samples for the direct indices). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
@@ -22,7 +29,10 @@ sweep: about 960 runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
+import shutil
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -30,7 +40,9 @@ from pathlib import Path
 from typing import Any
 
 import loco
+from loco import campaign
 from loco.commands import damper_bench
+from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import fsd_comparison, parameter_stages, parameter_study, speed_sweep
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import StageRunner
@@ -154,7 +166,28 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=0,
         help="seed of the track, the sample designs and NSGA-II (default 0)",
     )
-    parser.add_argument("--force", action="store_true", help="rerun finished stages too")
+    parser.add_argument(
+        "--workers",
+        type=int,
+        default=None,
+        help="run the simulations on a Dask LocalCluster of this many worker processes "
+        "(needs pip install 'loco[distributed]')",
+    )
+    parser.add_argument(
+        "--scheduler",
+        default=None,
+        help="run the simulations on the Dask scheduler at this address, e.g. tcp://host:8786 "
+        "(default: $DASK_SCHEDULER_ADDRESS if set)",
+    )
+    parser.add_argument(
+        "--chunk-size",
+        type=int,
+        default=None,
+        help="samples per chunk (one batch on a worker, stored when it finishes)",
+    )
+    parser.add_argument(
+        "--force", action="store_true", help="rerun finished stages and their stored samples too"
+    )
     parser.add_argument(
         "--no-progress",
         dest="progress",
@@ -173,13 +206,17 @@ def reproduce(
     progress: bool = True,
     log: Callable[[str], None] = print,
     command: str = "",
+    executor: Executor | None = None,
+    chunk_size: int | None = None,
 ) -> Path:
     """Run every stage into ``out`` and write ``out/report.md``; return the report's path.
 
     ``seed`` seeds the track irregularities, the Latin hypercube, the Saltelli designs, the
-    networks' K-means and NSGA-II. ``threads`` only changes the speed.
+    networks' K-means and NSGA-II. ``threads``, ``executor`` (default local threads) and
+    ``chunk_size`` only change the speed.
     """
     out_dir = Path(out)
+    executor = executor or LocalExecutor(threads)
     runner = StageRunner(out_dir, log=log, force=force)
     setup = parameter_study.StudySetup(
         speed_kmh=sizes.speed_kmh,
@@ -293,10 +330,28 @@ def reproduce(
         ),
         ("fsd_comparison", {**common, "lead_in_m": fsd_comparison.LEAD_IN}, fsd),
     ]
+
+    def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:
+        """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
+
+        def run_stage(d: Path) -> StudyRecord:
+            if force:
+                shutil.rmtree(d / "store", ignore_errors=True)
+            with campaign.using(executor, d / "store", chunk_size=chunk_size):
+                return stage(d)
+
+        return run_stage
+
+    log(f"simulations on {executor.describe()}")
     records = []
     for i, (name, settings, stage) in enumerate(stages, start=1):
         log(f"stage {i}/{len(stages)}: {name}")
-        record = runner.run(name, {**settings, "loco_version": loco.__version__}, stage)
+        if name in READS_MONTE_CARLO:
+            # Rerun when the table they learn from changed (it is checked by its own marker).
+            settings = {**settings, "monte_carlo_sha256": runner.output_hash(mc_csv)}
+        record = runner.run(
+            name, {**settings, "loco_version": loco.__version__}, in_campaign(stage)
+        )
         records.append(record)
         if record.notes:
             log(f"  {record.notes}")
@@ -305,6 +360,7 @@ def reproduce(
         "sizes": dataclasses.asdict(sizes),
         "seed (track, designs, K-means, NSGA-II)": seed,
         "threads": threads or "all cores",
+        "executor": executor.describe(),
         "stages run": runner.ran,
         "stages skipped (finished earlier)": runner.skipped,
     }
@@ -317,6 +373,9 @@ def reproduce(
         settings=run_settings,
     )
 
+
+#: Stages that learn from ``monte_carlo/monte_carlo.csv``.
+READS_MONTE_CARLO = ("surrogate", "sensitivity", "optimisation")
 
 PREAMBLE = (
     "Every figure and table of the reference study (SPEC §6), produced by `loco reproduce`. "
@@ -335,14 +394,29 @@ def _command_line(args: argparse.Namespace) -> str:
 def run(args: argparse.Namespace) -> int:
     sizes = PRESETS[args.preset]
     start = time.perf_counter()
-    report = reproduce(
-        sizes,
-        args.out,
-        threads=args.threads,
-        seed=args.seed,
-        force=args.force,
-        progress=args.progress,
-        command=_command_line(args),
-    )
+    for option in ("threads", "workers", "chunk_size"):
+        value = getattr(args, option)
+        if value is not None and value < 1:
+            print(f"loco reproduce: --{option.replace('_', '-')} must be >= 1", file=sys.stderr)
+            return 2
+    try:
+        executor = executor_from_options(
+            workers=args.workers, scheduler=args.scheduler, threads=args.threads
+        )
+    except (ImportError, OSError, loco.LocoError) as e:
+        print(f"loco reproduce: {e}", file=sys.stderr)
+        return 2
+    with contextlib.closing(executor):
+        report = reproduce(
+            sizes,
+            args.out,
+            threads=args.threads,
+            seed=args.seed,
+            force=args.force,
+            progress=args.progress,
+            command=_command_line(args),
+            executor=executor,
+            chunk_size=args.chunk_size,
+        )
     print(f"done in {time.perf_counter() - start:.0f} s; report: {report.resolve()}")
     return 0

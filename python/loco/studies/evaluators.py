@@ -61,6 +61,8 @@ def simulator_evaluator(
     threads: int | None = None,
     seed: int = 0,
     progress: bool = True,
+    executor: Any = None,
+    store: Any = None,
 ) -> Evaluator:
     """An evaluator that runs the locomotive model through ``loco.run_batch`` (issue 6).
 
@@ -76,6 +78,12 @@ def simulator_evaluator(
     vehicle, threads, seed, progress
         Passed unchanged to ``loco.run_batch``. With the same ``seed`` the batch is
         bit-identical for any thread count (issue 6), so a study is reproducible.
+    executor, store
+        Passed unchanged to ``loco.run_batch``: where the samples run (local threads, a Dask
+        cluster: :mod:`loco.executors`) and where finished samples are kept (:mod:`loco.store`).
+        None takes those of an enclosing ``loco.campaign.using`` block (how ``loco reproduce``
+        sets them for every study), else local threads and nothing kept. NSGA-II on this
+        evaluator submits each generation's population through the executor.
 
     Returns
     -------
@@ -95,6 +103,8 @@ def simulator_evaluator(
             threads=threads,
             seed=seed,
             progress=progress,
+            executor=executor,
+            store=store,
         )
         out = np.column_stack([result.metric(m) for m in wanted]).astype(np.float64)
         failed = np.asarray(result.status) != 0

@@ -3,21 +3,25 @@
 A stage is a named function that writes its files into ``<out>/<name>/`` and returns a
 :class:`~loco.studies.report.StudyRecord`. When it returns, the runner writes the marker
 ``<out>/<name>/stage.json`` (atomically: a temporary file, then a rename) holding a SHA-256 hash of
-the stage's name and settings, and the record. On the next run a stage whose marker exists with
-the same hash is skipped and its record read back; a changed setting changes the hash and the
-stage runs again. A stage interrupted before it returned has no marker and runs again.
+the stage's name and settings, the record and the SHA-256 of every file the record lists (its
+figures and tables). On the next run a stage whose marker exists with the same settings hash and
+whose files all still have their recorded content hashes is skipped and its record read back; a
+changed setting, or an output file that is missing, truncated or edited, makes the stage run
+again (the log names the file). A stage interrupted before it returned has no marker and runs
+again; the samples it had finished are in its sample store (:mod:`loco.store`), so only the rest
+are simulated.
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
-import os
 import time
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
+from loco.store import atomic_write, file_sha256
 from loco.studies.report import StudyRecord, jsonable
 
 __all__ = ["MARKER", "StageRunner", "settings_hash"]
@@ -75,9 +79,28 @@ class StageRunner:
         if data.get("hash") != settings_hash(name, settings):
             return None
         record = StudyRecord.from_json(data["record"], self.out_dir)
-        if not all(p.exists() for p in [*record.figures, *record.tables]):
+        hashes = data.get("outputs")
+        if not isinstance(hashes, dict):
+            self.log(f"[{name}] marker without output hashes (older loco): running it again")
             return None
+        for path in [*record.figures, *record.tables]:
+            rel = self._relative(path)
+            if not path.is_file() or hashes.get(rel) != file_sha256(path):
+                what = "missing" if not path.is_file() else "changed or truncated"
+                self.log(f"[{name}] output {rel} is {what} since the stage finished: running again")
+                return None
         return record
+
+    def _relative(self, path: Path) -> str:
+        try:
+            return str(Path(path).relative_to(self.out_dir))
+        except ValueError:
+            return str(path)
+
+    def output_hash(self, path: str | Path) -> str:
+        """SHA-256 of an output file of a finished stage (for the settings of the stages that
+        read it, so that they run again when it changes)."""
+        return file_sha256(path)
 
     def run(
         self,
@@ -111,10 +134,12 @@ class StageRunner:
             "settings": jsonable(settings),
             "finished": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
             "record": record.to_json(self.out_dir),
+            "outputs": {
+                self._relative(p): file_sha256(p) for p in [*record.figures, *record.tables]
+            },
         }
-        tmp = self.marker(name).with_suffix(".json.tmp")
-        tmp.write_text(json.dumps(payload, indent=2, sort_keys=True) + "\n", encoding="utf-8")
-        os.replace(tmp, self.marker(name))
+        text = json.dumps(payload, indent=2, sort_keys=True) + "\n"
+        atomic_write(self.marker(name), text.encode("utf-8"))
         self.log(f"[{name}] done in {elapsed:.1f} s")
         self.ran.append(name)
         return record

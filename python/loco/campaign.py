@@ -1,0 +1,339 @@
+"""Campaigns: a batch cut into chunks, run by an executor, every finished chunk kept on disk.
+
+>>> import loco, loco.campaign
+>>> from loco.executors import DaskExecutor
+>>> with DaskExecutor(n_workers=2) as dask:                      # doctest: +SKIP
+...     result = loco.campaign.run_campaign(params, names, scenario=s,
+...                                         executor=dask, store="runs/")
+
+:func:`run_campaign` keys the campaign by its inputs (:func:`campaign_inputs`: the vehicle, the
+scenario, the design, the seed and the software build), loads what its store
+(:class:`loco.store.CampaignStore`) already holds, runs only the missing samples, in chunks, and
+appends each finished chunk to the store as it completes. A rerun after ``kill -9`` therefore
+recomputes only the chunks that were running. The result is a :class:`loco.BatchResult` in the
+design's row order, bit-identical to one ``loco.run_batch`` of the whole design.
+
+``loco.run_batch(..., executor=..., store=...)`` is a campaign; so is every ``loco.run_batch``
+inside ``with using(executor=..., store=...)``, which is how ``loco reproduce`` sends every
+batch of its stages (Monte Carlo, Saltelli design, NSGA-II re-simulation, speed sweep) to one
+executor and one store per stage without each study taking the arguments.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import functools
+import hashlib
+import json
+import time
+from collections.abc import Callable, Iterator, Sequence
+from contextvars import ContextVar
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import pandas as pd
+
+from loco import _loco
+from loco.batch import STATUS_NAMES, BatchResult, history_results
+from loco.executors import BatchJob, Chunk, Executor, LocalExecutor
+from loco.simulation import Scenario
+from loco.store import CampaignStore, campaign_key, file_sha256
+from loco.vehicle import Locomotive
+
+__all__ = ["CampaignContext", "campaign_inputs", "current", "run_campaign", "using"]
+
+FloatArray = npt.NDArray[np.float64]
+#: Code of a sample that was not run because its batch was cancelled: never stored.
+INTERRUPTED = STATUS_NAMES.index("interrupted")
+#: Columns of a stored sample besides its parameters and metrics.
+META_COLUMNS = (
+    "sample", "seed", "status", "status_code", "message",
+    "loco_version", "build", "vehicle_hash", "scenario_hash", "campaign",
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class CampaignContext:
+    """Defaults for every ``loco.run_batch`` inside :func:`using`."""
+
+    executor: Executor | None = None
+    store: Path | None = None
+    chunk_size: int | None = None
+
+
+_CONTEXT: ContextVar[CampaignContext | None] = ContextVar("loco_campaign", default=None)
+
+
+@contextlib.contextmanager
+def using(
+    executor: Executor | None = None,
+    store: str | Path | None = None,
+    *,
+    chunk_size: int | None = None,
+) -> Iterator[CampaignContext]:
+    """Run every ``loco.run_batch`` in the block as a campaign on ``executor`` (default local
+    threads) with its samples kept under ``store`` (default: not kept)."""
+    context = CampaignContext(executor, None if store is None else Path(store), chunk_size)
+    token = _CONTEXT.set(context)
+    try:
+        yield context
+    finally:
+        _CONTEXT.reset(token)
+
+
+def current() -> CampaignContext | None:
+    """The innermost :func:`using` block's settings, None outside one."""
+    return _CONTEXT.get()
+
+
+@functools.cache
+def build_hash() -> str:
+    """SHA-256 of the native module's file: results of another build are never reused."""
+    return file_sha256(_loco.__file__)
+
+
+def _array_sha(*arrays: Any) -> str:
+    digest = hashlib.sha256()
+    for a in arrays:
+        a = np.ascontiguousarray(a)
+        digest.update(f"{a.dtype.str}{a.shape}".encode())
+        digest.update(a.tobytes())
+    return digest.hexdigest()
+
+
+def _describe(value: Any) -> Any:
+    """A JSON-ready, exact description of a scenario field (native objects by content)."""
+    if isinstance(value, _loco.Profile):
+        return {"profile": value.name, "kind": value.kind, "points": _array_sha(value.y, value.z)}
+    if isinstance(value, _loco.Damper):
+        return {"damper": value.kind, **value.parameters()}
+    if hasattr(value, "native") and isinstance(value.native, _loco.Track):
+        t = value.native
+        return {"track": _array_sha(t.distance(), *(t.rail(n) for n in _RAILS)), "step": t.step}
+    if isinstance(value, (tuple, list)):
+        return [_describe(v) for v in value]
+    if isinstance(value, float):
+        return repr(value)  # exact
+    return value
+
+
+_RAILS = ("y_left", "z_left", "y_right", "z_right")
+
+
+def campaign_inputs(
+    x: FloatArray, names: Sequence[str], vehicle: Locomotive, scenario: Scenario, seed: int
+) -> dict[str, Any]:
+    """Everything a campaign's numbers depend on, as JSON: its key is the hash of this."""
+    vehicle_desc = {
+        "toml_sha256": None
+        if vehicle.toml_text is None
+        else hashlib.sha256(vehicle.toml_text.encode("utf-8")).hexdigest(),
+        "overrides": {k: repr(v) for k, v in sorted(vehicle.overrides.items())},
+    }
+    scenario_desc = {
+        f.name: _describe(getattr(scenario, f.name)) for f in dataclasses.fields(scenario)
+    }
+    return {
+        "kind": "loco.run_batch",
+        "names": list(names),
+        "n_samples": len(x),
+        "design_sha256": _array_sha(x),
+        "seed": int(seed),
+        "vehicle": vehicle_desc,
+        "vehicle_hash": campaign_key(vehicle_desc),
+        "scenario": scenario_desc,
+        "scenario_hash": campaign_key(scenario_desc),
+        "loco_version": _loco.__version__,
+        "build": build_hash(),
+    }
+
+
+def _chunks(todo: npt.NDArray[np.int64], x: FloatArray, size: int, keep: set[int]) -> list[Chunk]:
+    return [
+        Chunk(
+            indices=part,
+            rows=x[part],
+            histories=tuple(int(i) for i in part if int(i) in keep),
+        )
+        for part in (todo[i : i + size] for i in range(0, len(todo), size))
+    ]
+
+
+def run_campaign(
+    params: npt.ArrayLike,
+    names: Sequence[str],
+    vehicle: Locomotive | None = None,
+    scenario: Scenario | None = None,
+    *,
+    seed: int | None = None,
+    executor: Executor | None = None,
+    store: str | Path | None = None,
+    chunk_size: int | None = None,
+    threads: int | None = None,
+    progress: bool = True,
+    histories: Sequence[int] = (),
+    on_chunk: Callable[[npt.NDArray[np.int64]], object] | None = None,
+) -> BatchResult:
+    """Run the design ``params`` (n, k; columns ``names``) as a campaign.
+
+    Arguments as for ``loco.run_batch``, plus: ``executor`` (default: the :func:`using` block's,
+    else local threads on ``threads``), ``store`` (a directory holding campaign stores; default:
+    the :func:`using` block's, else none: nothing kept), ``chunk_size`` (samples per chunk;
+    default: the executor's choice). Samples already in the store are read back, not run (the
+    result's ``n_reused`` counts them); samples whose ``histories`` are asked for always run.
+    ``on_chunk(indices)`` is called after each chunk is finished and stored.
+    Ctrl-C cancels the running chunks; every chunk finished before stays in the store.
+    """
+    context = current() or CampaignContext()
+    vehicle = vehicle or Locomotive.default()
+    scenario = scenario or Scenario(scenario="S_high")
+    x = np.asarray(params, dtype=np.float64)
+    if x.ndim != 2 or x.shape[1] != len(names):
+        raise _loco.ParameterError(
+            f"invalid input `params`: must be a 2-D (samples x {len(names)} parameters) array, "
+            f"got shape {x.shape}"
+        )
+    clash = set(names) & {*META_COLUMNS, *_loco.run_metric_names()}
+    if clash:
+        raise _loco.ParameterError(f"invalid input `names`: {sorted(clash)} are reserved")
+    keep = {int(i) for i in histories}
+    if any(i < 0 or i >= len(x) for i in keep):
+        raise _loco.ParameterError(f"invalid input `histories`: index out of range in {keep}")
+    executor = executor or context.executor or LocalExecutor(threads)
+    store = store if store is not None else context.store
+    n = len(x)
+    track_seed = int(scenario.seed if seed is None else seed)
+    scenario.native(seed=track_seed)  # a bad scenario fails here, before any chunk is sent
+    inputs = campaign_inputs(x, names, vehicle, scenario, track_seed)
+    key = campaign_key(inputs)
+    metric_names = list(_loco.run_metric_names())
+    metrics = np.full((n, len(metric_names)), np.nan)
+    status = np.full(n, INTERRUPTED, dtype=np.int32)
+    messages = [""] * n
+    done = np.zeros(n, dtype=bool)
+    sink = None
+    if store is not None:
+        sink = CampaignStore(store, key, n, meta={"inputs": inputs, "created": time.ctime()})
+        stored = sink.load().frame
+        if len(stored):
+            rows = stored["sample"].to_numpy(dtype=np.int64)
+            metrics[rows] = stored[metric_names].to_numpy(dtype=np.float64)
+            status[rows] = stored["status_code"].to_numpy(dtype=np.int32)
+            for i, m in zip(rows, stored["message"], strict=True):
+                messages[int(i)] = str(m)
+            done[rows] = True
+    n_reused = int(done.sum())
+    todo = np.flatnonzero(~done | np.isin(np.arange(n), sorted(keep))).astype(np.int64)
+    size = chunk_size or context.chunk_size or executor.default_chunk_size(len(todo))
+    if size < 1:
+        raise _loco.ParameterError(f"invalid parameter `chunk_size`: must be >= 1, got {size}")
+    chunks = _chunks(todo, x, int(size), keep)
+    job = BatchJob(vehicle=vehicle, scenario=scenario, names=tuple(names), seed=track_seed)
+    bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None
+    kept: dict[int, Any] = {}
+    start = time.perf_counter()
+    try:
+        for result in executor.map_chunks(job, chunks, bar.chunk_progress if bar else None):
+            if result.metric_names != metric_names:
+                raise _loco.InternalError(f"batch metrics {result.metric_names} != {metric_names}")
+            idx = result.indices
+            new = ~done[idx] & (result.status != INTERRUPTED)
+            metrics[idx] = result.metrics
+            status[idx] = result.status
+            for i, m in zip(idx, result.messages, strict=True):
+                messages[int(i)] = m
+            kept.update(result.histories)
+            if sink is not None and new.any():
+                sink.append(_frame(idx[new], x, names, result, new, track_seed, inputs, key))
+            done[idx] = True
+            if on_chunk is not None:
+                on_chunk(idx)
+            if bar:
+                bar.chunk_done(int(new.sum()), int((result.status[new] != 0).sum()))
+    finally:
+        if bar:
+            bar.close()
+    return BatchResult(
+        params=x,
+        names=list(names),
+        metric_names=metric_names,
+        metrics=metrics,
+        status=status,
+        messages=messages,
+        histories=history_results(
+            [(i, *kept[i]) for i in sorted(kept)], metric_names, metrics, names, x, scenario
+        ),
+        seconds=time.perf_counter() - start,
+        threads=threads or 0,
+        n_reused=n_reused,
+    )
+
+
+def _frame(
+    idx: npt.NDArray[np.int64],
+    x: FloatArray,
+    names: Sequence[str],
+    result: Any,
+    new: npt.NDArray[np.bool_],
+    seed: int,
+    inputs: dict[str, Any],
+    key: str,
+) -> pd.DataFrame:
+    frame = pd.DataFrame({"sample": idx})
+    for j, name in enumerate(names):
+        frame[name] = x[idx, j]
+    frame["seed"] = seed
+    for j, name in enumerate(result.metric_names):
+        frame[name] = result.metrics[new, j]
+    codes = result.status[new]
+    frame["status"] = [STATUS_NAMES[int(c)] for c in codes]
+    frame["status_code"] = codes.astype(np.int32)
+    frame["message"] = [m for m, k in zip(result.messages, new, strict=True) if k]
+    frame["loco_version"] = inputs["loco_version"]
+    frame["build"] = inputs["build"]
+    frame["vehicle_hash"] = inputs["vehicle_hash"]
+    frame["scenario_hash"] = inputs["scenario_hash"]
+    frame["campaign"] = key
+    return frame
+
+
+class _Bar:
+    """A tqdm bar over the campaign: samples done (stored ones from the start), failures."""
+
+    def __init__(self, total: int, done: int, failed: int) -> None:
+        from tqdm.auto import tqdm
+
+        self._bar = tqdm(total=total, initial=done, desc="simulations", unit="run", smoothing=0.1)
+        self._base = done
+        self._failed = failed
+
+    def chunk_progress(self, done: int, failed: int) -> None:
+        """Within the running chunk (local threads)."""
+        if self._base + done != self._bar.n:
+            self._bar.n = self._base + done
+            if self._failed + failed:
+                self._bar.set_postfix(failed=self._failed + failed, refresh=False)
+            self._bar.refresh()
+
+    def chunk_done(self, n: int, failed: int) -> None:
+        self._base += n
+        self._failed += failed
+        self._bar.n = self._base
+        if self._failed:
+            self._bar.set_postfix(failed=self._failed, refresh=False)
+        self._bar.refresh()
+
+    def close(self) -> None:
+        self._bar.close()
+
+
+def load_campaign(directory: str | Path) -> pd.DataFrame:
+    """The stored samples of the campaign store ``directory`` (``<root>/<key16>``) as a frame,
+    one row per sample in design order (``store.to_xarray()`` for an ``xarray.Dataset``)."""
+    meta = json.loads((Path(directory) / "campaign.json").read_text(encoding="utf-8"))
+    store = CampaignStore(Path(directory).parent, meta["key"], meta["n_samples"], writable=False)
+    return store.load().frame

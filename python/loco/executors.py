@@ -1,0 +1,380 @@
+"""Where the chunks of a campaign run: local rayon threads, or a Dask ``distributed`` cluster.
+
+A campaign (:func:`loco.campaign.run_campaign`) cuts its samples into chunks; each chunk is one
+native batch (``loco.run_batch`` without the Python layers: rayon threads inside) and comes back
+as a :class:`ChunkResult`. An executor runs chunks and yields their results as they complete:
+
+- :class:`LocalExecutor` (the default): the chunks one after the other on this machine's cores.
+- :class:`DaskExecutor`: a ``distributed.Client`` — a ``LocalCluster`` of worker processes
+  started on request, or a running scheduler by address (``tcp://host:8786``, or the
+  ``DASK_SCHEDULER_ADDRESS`` convention). The :class:`BatchJob` (vehicle, scenario, track seed,
+  column names) is scattered to every worker once (``broadcast``), then each chunk is a task
+  holding only its rows. A worker that dies mid-chunk has its chunk resubmitted by the scheduler
+  (and a task that raises is retried ``retries`` times); Ctrl-C cancels the futures.
+
+Every sample is a function of (vehicle, scenario, seed, its row) alone, so the metrics are
+bit-identical whatever the executor, the chunking, the number of workers and their threads.
+Dask is optional: ``pip install 'loco[distributed]'``.
+"""
+
+from __future__ import annotations
+
+import copyreg
+import inspect
+import os
+import re
+from abc import ABC, abstractmethod
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from loco import _loco
+from loco.simulation import Scenario
+from loco.vehicle import Locomotive
+
+__all__ = [
+    "BatchJob",
+    "Chunk",
+    "ChunkResult",
+    "DaskExecutor",
+    "Executor",
+    "LocalExecutor",
+    "executor_from_options",
+    "require_distributed",
+    "run_chunk",
+]
+
+FloatArray = npt.NDArray[np.float64]
+#: Kept time histories of a chunk: sample index -> (time (s), channel names, channels).
+Histories = dict[int, tuple[FloatArray, list[str], FloatArray]]
+#: ``progress(done, failed)`` within the running chunk (local executor only).
+ChunkProgress = Callable[[int, int], object]
+
+#: Environment variable naming a running Dask scheduler (the ``distributed`` convention).
+SCHEDULER_ENV = "DASK_SCHEDULER_ADDRESS"
+
+
+def require_distributed() -> Any:
+    """The ``distributed`` module, or an :class:`ImportError` naming the extra that installs it."""
+    try:
+        import distributed
+    except ImportError as e:
+        raise ImportError(
+            "running on a Dask cluster needs the optional dependency `distributed`: "
+            "pip install 'loco[distributed]'"
+        ) from e
+    return distributed
+
+
+@dataclass(frozen=True)
+class BatchJob:
+    """What every chunk of a campaign shares: the vehicle, the scenario (and so its track), the
+    track seed and the column names. Sent once per worker."""
+
+    vehicle: Locomotive
+    scenario: Scenario
+    names: tuple[str, ...]
+    seed: int | None = None
+
+
+@dataclass(frozen=True)
+class Chunk:
+    """Samples ``indices`` (positions in the campaign's design) with their ``rows`` (SI);
+    ``histories``: the indices whose time histories come back."""
+
+    indices: npt.NDArray[np.int64]
+    rows: FloatArray
+    histories: tuple[int, ...] = ()
+
+
+@dataclass(frozen=True)
+class ChunkResult:
+    """The outcome of a chunk, rows in the order of ``indices``."""
+
+    indices: npt.NDArray[np.int64]
+    metric_names: list[str]
+    metrics: FloatArray
+    status: npt.NDArray[np.int32]
+    messages: list[str]
+    histories: Histories
+
+
+def run_chunk(
+    job: BatchJob, chunk: Chunk, threads: int = 0, progress: ChunkProgress | None = None
+) -> ChunkResult:
+    """Run one chunk as one native batch on ``threads`` rayon threads (0: one per core)."""
+    local = {int(i): k for k, i in enumerate(chunk.indices)}
+    keep = sorted(local[i] for i in chunk.histories if i in local)
+    try:
+        metric_names, metrics, status, messages, kept = _loco.run_batch(
+            job.scenario.native(seed=job.seed),
+            np.ascontiguousarray(chunk.rows, dtype=np.float64),
+            list(job.names),
+            toml_text=job.vehicle.toml_text,
+            origin=job.vehicle.origin,
+            overrides=dict(job.vehicle.overrides),
+            threads=threads,
+            histories=keep,
+            progress=progress,
+        )
+    except _loco.ParameterError as e:
+        # The native message numbers rows within the chunk; name the campaign's row instead.
+        text = re.sub(r"\brow (\d+)", lambda m: f"row {chunk.indices[int(m[1])]}", str(e))
+        raise _loco.ParameterError(text) from None
+    return ChunkResult(
+        indices=chunk.indices,
+        metric_names=list(metric_names),
+        metrics=metrics,
+        status=status,
+        messages=list(messages),
+        histories={int(chunk.indices[k]): (t, list(c), ch) for k, t, c, ch in kept},
+    )
+
+
+def _rebuild_damper(kind: str, parameters: dict[str, Any]) -> _loco.Damper:
+    from loco import dampers
+
+    builders: dict[str, Callable[..., _loco.Damper]] = {
+        "maxwell": dampers.maxwell,
+        "fsd": dampers.fsd,
+        "hydraulic": dampers.hydraulic,
+    }
+    build = builders[kind]
+    accepted = inspect.signature(build).parameters
+    return build(**{k: v for k, v in parameters.items() if v is not None and k in accepted})
+
+
+def _reduce_damper(damper: _loco.Damper) -> tuple[Any, tuple[str, dict[str, Any]]]:
+    args = (damper.kind, damper.parameters())
+    if _rebuild_damper(*args).parameters() != args[1]:
+        raise _loco.ParameterError(
+            f"invalid parameter `yaw_damper`: this {damper.kind} damper cannot be rebuilt from "
+            "its parameters on a Dask worker; run it with local threads"
+        )
+    return _rebuild_damper, args
+
+
+def _reduce_profile(profile: _loco.Profile) -> tuple[Any, tuple[str, str, Any, Any]]:
+    return _loco.Profile, (profile.name, profile.kind, profile.y, profile.z)
+
+
+# The native dampers and profiles of a Scenario travel to Dask workers by their parameters and
+# points (rebuilt and validated there); tests check the round trip is exact.
+copyreg.pickle(_loco.Damper, _reduce_damper)
+copyreg.pickle(_loco.Profile, _reduce_profile)
+
+
+class Executor(ABC):
+    """Runs chunks of a campaign and yields their results as they complete (any order)."""
+
+    #: Chunks that run at once; a campaign cuts its samples into several chunks per slot.
+    slots: int = 1
+
+    @abstractmethod
+    def map_chunks(
+        self, job: BatchJob, chunks: Sequence[Chunk], progress: ChunkProgress | None = None
+    ) -> Iterator[ChunkResult]:
+        """Results of ``chunks``; stopping the iteration (or Ctrl-C) cancels what is left."""
+
+    def default_chunk_size(self, n_samples: int) -> int:
+        """Samples per chunk: about four chunks per slot, between 1 and 32 samples; each
+        finished chunk is stored at once, so a kill loses at most the chunks running."""
+        return int(np.clip(-(-n_samples // (4 * self.slots)), 1, 32))
+
+    def describe(self) -> str:
+        """One line for logs."""
+        return type(self).__name__
+
+    def close(self) -> None:  # noqa: B027 (nothing to release by default)
+        """Release the cluster this executor started (nothing for local threads)."""
+
+    def __enter__(self) -> Executor:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+class LocalExecutor(Executor):
+    """The chunks one after another on this machine, ``threads`` rayon threads each (default:
+    one per core), as ``loco.run_batch`` runs a batch."""
+
+    def __init__(self, threads: int | None = None) -> None:
+        if threads is not None and threads < 1:
+            raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
+        self.threads = threads
+        self.slots = threads or os.cpu_count() or 1
+
+    def default_chunk_size(self, n_samples: int) -> int:
+        # Chunks run one at a time here: a few samples per thread keeps the idle tail of each
+        # chunk's last samples small while a kill still loses only one chunk.
+        return int(np.clip(-(-n_samples // 8), 4 * self.slots, 16 * self.slots))
+
+    def map_chunks(
+        self, job: BatchJob, chunks: Sequence[Chunk], progress: ChunkProgress | None = None
+    ) -> Iterator[ChunkResult]:
+        for chunk in chunks:
+            yield run_chunk(job, chunk, self.threads or 0, progress)
+
+    def describe(self) -> str:
+        return f"local threads ({self.slots})"
+
+
+@dataclass(frozen=True)
+class _ChunkError:
+    """A loco error raised on a worker, by class name: the native exception classes do not
+    pickle (their module is ``_loco``), and an input error is not worth Dask's retries."""
+
+    kind: str
+    message: str
+
+
+def _run_chunk_on_worker(job: BatchJob, chunk: Chunk, threads: int) -> ChunkResult | _ChunkError:
+    try:
+        return run_chunk(job, chunk, threads)
+    except _loco.LocoError as e:
+        return _ChunkError(type(e).__name__, str(e))
+
+
+def _worker_build() -> tuple[str, str]:
+    from loco.campaign import build_hash
+
+    return _loco.__version__, build_hash()
+
+
+class DaskExecutor(Executor):
+    """Chunks as tasks of a Dask cluster.
+
+    Parameters
+    ----------
+    client : distributed.Client, optional
+        A client to use (not closed by :meth:`close`).
+    address : str, optional
+        A running scheduler, e.g. ``tcp://host:8786``.
+    n_workers : int, optional
+        Start a ``LocalCluster`` of this many worker processes (one task at a time each).
+    threads : int, optional
+        Rayon threads per chunk. Default: this machine's cores shared among the local workers;
+        on a remote cluster 1, the worker's Dask threads being its parallelism (start workers
+        with ``--nthreads`` = cores).
+    retries : int
+        Times a chunk whose task raised is resubmitted (a dead worker's chunks are resubmitted
+        by the scheduler anyway, up to its ``allowed-failures``).
+    """
+
+    def __init__(
+        self,
+        client: Any = None,
+        *,
+        address: str | None = None,
+        n_workers: int | None = None,
+        threads: int | None = None,
+        retries: int = 3,
+    ) -> None:
+        distributed = require_distributed()
+        if sum(x is not None for x in (client, address, n_workers)) != 1:
+            raise _loco.ParameterError(
+                "invalid parameter `executor`: give exactly one of a client, a scheduler "
+                "address or a number of local workers"
+            )
+        if n_workers is not None and n_workers < 1:
+            raise _loco.ParameterError(
+                f"invalid parameter `workers`: must be >= 1, got {n_workers}"
+            )
+        if threads is not None and threads < 1:
+            raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
+        self._owned: list[Any] = []
+        if client is None and address is not None:
+            client = distributed.Client(address)
+            self._owned.append(client)
+        elif client is None:
+            cluster = distributed.LocalCluster(
+                n_workers=n_workers,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=":0",  # any free port: several clusters may run
+            )
+            client = distributed.Client(cluster)
+            self._owned += [client, cluster]
+            threads = threads or max(1, (os.cpu_count() or 1) // int(n_workers or 1))
+        self.client = client
+        self.threads = threads or 1
+        self.retries = retries
+        self.slots = max(1, sum(self.client.nthreads().values()))
+        self._distributed = distributed
+
+    def map_chunks(
+        self, job: BatchJob, chunks: Sequence[Chunk], progress: ChunkProgress | None = None
+    ) -> Iterator[ChunkResult]:
+        if not chunks:
+            return
+        if job.scenario.track is not None:
+            raise _loco.ParameterError(
+                "invalid parameter `scenario.track`: a loaded track cannot be sent to Dask "
+                "workers; run it with local threads"
+            )
+        self._check_builds()
+        # One copy of the job per worker, not per task.
+        shared = self.client.scatter(job, broadcast=True, hash=False)
+        futures = [
+            self.client.submit(
+                _run_chunk_on_worker, shared, chunk, self.threads, retries=self.retries, pure=False
+            )
+            for chunk in chunks
+        ]
+        try:
+            for future in self._distributed.as_completed(futures):
+                result = future.result()
+                if isinstance(result, _ChunkError):
+                    raise getattr(_loco, result.kind, _loco.LocoError)(result.message)
+                yield result
+        finally:
+            # Reached on completion, on an error, on Ctrl-C and when the caller stops early.
+            self.client.cancel([f for f in futures if not f.done()])
+            self.client.cancel(shared)
+
+    def _check_builds(self) -> None:
+        """Refuse workers running another loco build: their numbers would be stored under this
+        build's campaign key."""
+        from loco.campaign import build_hash
+
+        mine = (_loco.__version__, build_hash())
+        for worker, theirs in self.client.run(_worker_build).items():
+            if tuple(theirs) != mine:
+                raise _loco.LocoError(
+                    f"Dask worker {worker} runs loco {theirs[0]} (build {theirs[1][:12]}), this "
+                    f"process loco {mine[0]} (build {mine[1][:12]}): install the same build"
+                )
+
+    def describe(self) -> str:
+        workers = self.client.nthreads()
+        return (
+            f"Dask at {self.client.scheduler.address}: {len(workers)} workers, "
+            f"{self.slots} slots, {self.threads} rayon thread(s) per chunk"
+        )
+
+    def close(self) -> None:
+        for owned in self._owned:
+            owned.close()
+        self._owned.clear()
+
+
+def executor_from_options(
+    *, workers: int | None = None, scheduler: str | None = None, threads: int | None = None
+) -> Executor:
+    """The executor the command-line options ask for: a ``LocalCluster`` of ``workers``
+    processes, the scheduler at ``scheduler`` (or ``$DASK_SCHEDULER_ADDRESS`` when neither is
+    given), else local threads."""
+    if workers is not None and scheduler is not None:
+        raise _loco.ParameterError(
+            "invalid parameter `workers`: give --workers or --scheduler, not both"
+        )
+    scheduler = scheduler or (None if workers is not None else os.environ.get(SCHEDULER_ENV))
+    if scheduler:
+        return DaskExecutor(address=scheduler, threads=threads)
+    if workers is not None:
+        return DaskExecutor(n_workers=workers, threads=threads)
+    return LocalExecutor(threads)
