@@ -88,9 +88,14 @@ impl ContactFrame {
     /// lateral component toward the track centre) on a wheel yawed by `yaw` (rad): the track axes
     /// rotated by the contact angle about x (toward the centre) and then by the yaw about z.
     pub fn new(side: Side, contact_angle: f64, yaw: f64) -> Self {
+        Self::from_sin_cos(side, contact_angle.sin_cos(), yaw.sin_cos())
+    }
+
+    /// As [`Self::new`] from the sines and cosines of the contact angle and the yaw (the vehicle
+    /// has them at hand and saves the trigonometry).
+    #[inline]
+    pub fn from_sin_cos(side: Side, (sg, cg): (f64, f64), (sp, cp): (f64, f64)) -> Self {
         let s = side.sign();
-        let (sg, cg) = contact_angle.sin_cos();
-        let (sp, cp) = yaw.sin_cos();
         Self {
             longitudinal: [cp, sp, 0.0],
             lateral: [-sp * cg, cp * cg, s * sg],
@@ -242,6 +247,23 @@ pub fn contact_lead(
     s * rolling_radius * (contact_angle - s * roll).tan() * yaw
 }
 
+/// [`contact_lead`] from the sine and cosine of the contact angle, for a small roll (|ϕ| ≲ 0.05
+/// rad: the roll's sine and cosine by their series, below 1e-8 relative).
+#[inline]
+pub fn contact_lead_sin_cos(
+    side: Side,
+    rolling_radius: f64,
+    (sg, cg): (f64, f64),
+    roll: f64,
+    yaw: f64,
+) -> f64 {
+    let s = side.sign();
+    let r2 = roll * roll;
+    let (sr, cr) = (s * roll * (1.0 - r2 / 6.0), 1.0 - r2 * (0.5 - r2 / 24.0));
+    // tan(γ − s·ϕ) = sin(γ − sϕ) / cos(γ − sϕ).
+    s * rolling_radius * (sg * cr - cg * sr) / (cg * cr + sg * sr) * yaw
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -334,6 +356,18 @@ mod tests {
             ..left(R0, gamma)
         };
         assert!(close(rolling().creepages(&right).spin, gamma.sin() / R0));
+    }
+
+    #[test]
+    fn lead_from_sine_and_cosine_is_the_lead() {
+        for (side, gamma, roll) in [(Side::Left, 1.2, 0.004), (Side::Right, 0.05, -0.01)] {
+            let exact = contact_lead(side, 0.63, gamma, roll, 0.015);
+            let fast = contact_lead_sin_cos(side, 0.63, gamma.sin_cos(), roll, 0.015);
+            assert!(
+                (fast - exact).abs() < 1e-8 * exact.abs(),
+                "{fast} vs {exact}"
+            );
+        }
     }
 
     #[test]

@@ -33,7 +33,12 @@ pub type Wrenches = [[f64; 6]; N_BODIES];
 /// Adds force `f` (N) acting at `r` (m from the centre of gravity) of `body` with motion `u`.
 #[inline]
 pub fn add_force(wrenches: &mut Wrenches, body: usize, u: &[f64; 6], r: [f64; 3], f: [f64; 3]) {
-    let arm = add(r, cross([u[3], u[4], u[5]], r));
+    add_force_at(wrenches, body, add(r, cross([u[3], u[4], u[5]], r)), f);
+}
+
+/// Adds force `f` (N) acting at the rotated lever arm `arm` (m) of `body`.
+#[inline]
+fn add_force_at(wrenches: &mut Wrenches, body: usize, arm: [f64; 3], f: [f64; 3]) {
     let m = cross(arm, f);
     let w = &mut wrenches[body];
     w[0] += f[0];
@@ -64,6 +69,34 @@ impl Attachment {
         let va = point_motion(&s.velocity[self.body_a], self.point_a);
         let vb = point_motion(&s.velocity[self.body_b], self.point_b);
         (sub(db, da), sub(vb, va))
+    }
+
+    /// Displacement and velocity of the point on B relative to the point on A (m, m/s), with
+    /// both points' rotated lever arms (m) for [`Self::apply_pair_at`]: the rotation `θ × r`
+    /// is the same in the displacement and in the arm, so it is formed once.
+    #[inline]
+    fn motion_and_arms(&self, s: &BodyStates) -> ([f64; 3], [f64; 3], [[f64; 3]; 2]) {
+        let (pa, pb) = (&s.position[self.body_a], &s.position[self.body_b]);
+        let turn_a = cross([pa[3], pa[4], pa[5]], self.point_a);
+        let turn_b = cross([pb[3], pb[4], pb[5]], self.point_b);
+        let d = sub(
+            add([pb[0], pb[1], pb[2]], turn_b),
+            add([pa[0], pa[1], pa[2]], turn_a),
+        );
+        let va = point_motion(&s.velocity[self.body_a], self.point_a);
+        let vb = point_motion(&s.velocity[self.body_b], self.point_b);
+        (
+            d,
+            sub(vb, va),
+            [add(self.point_a, turn_a), add(self.point_b, turn_b)],
+        )
+    }
+
+    /// Applies `f` (N) on B and `−f` on A at the arms of [`Self::motion_and_arms`].
+    #[inline]
+    fn apply_pair_at(&self, arms: &[[f64; 3]; 2], f: [f64; 3], wrenches: &mut Wrenches) {
+        add_force_at(wrenches, self.body_b, arms[1], f);
+        add_force_at(wrenches, self.body_a, arms[0], [-f[0], -f[1], -f[2]]);
     }
 
     /// Applies `f` (N) on B and `−f` on A.
@@ -97,6 +130,12 @@ impl Attachment {
 /// and the element's forces exert no net moment on the vehicle (the `P·Δ` couple of a laterally
 /// deflected loaded spring is taken by its ends). With a fixed-axis spring both were missing:
 /// preloads stayed vertical in the track frame whatever the vehicle's roll.
+///
+/// Only the elements on the vehicle's load path turn ([`Bushing::on_load_path`]: axle-box
+/// springs, flexicoils, motor mounts, gearbox bearings, 5.7–73 kN each in the static
+/// equilibrium). The joints and couplings off it (rotary-arm nodes 0.2 kN, traction rods 0.4 kN,
+/// six-link couplings 0) keep fixed axes: their corotational terms, preload times rotation, stay
+/// below 1 N at the vehicle's rotations (< 1e-3 rad), and the time loop spares their cost.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bushing {
     pub name: String,
@@ -110,14 +149,29 @@ pub struct Bushing {
     /// Which rotations of A and B turn the element's axes (1) and which do not (0): a
     /// wheelset's or hollow shaft's pitch coordinate is its spin, which turns no axle box.
     pub turns_with: [[f64; 3]; 2],
+    /// Whether the element carries the vehicle's weight, so that its axes turn with its ends.
+    pub on_load_path: bool,
 }
 
 impl Bushing {
     /// Adds the element's forces; returns the force on B (N).
     #[inline]
     pub fn apply(&self, s: &BodyStates, wrenches: &mut Wrenches) -> [f64; 3] {
-        let (d, v) = self.at.relative_motion(s);
+        let (d, v, arms) = self.at.motion_and_arms(s);
         let (ua, ub) = (&s.position[self.at.body_a], &s.position[self.at.body_b]);
+        if !self.on_load_path {
+            let f: [f64; 3] =
+                std::array::from_fn(|k| -self.stiffness[k] * d[k] - self.damping[k] * v[k]);
+            self.at.apply_pair_at(&arms, f, wrenches);
+            if self.rotational_stiffness.iter().any(|k| *k != 0.0) {
+                for k in 0..3 {
+                    let m = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
+                    wrenches[self.at.body_b][3 + k] += m;
+                    wrenches[self.at.body_a][3 + k] -= m;
+                }
+            }
+            return f;
+        }
         let [ma, mb] = &self.turns_with;
         let theta: [f64; 3] =
             std::array::from_fn(|k| 0.5 * (ua[3 + k] * ma[k] + ub[3 + k] * mb[k]));
@@ -126,7 +180,7 @@ impl Bushing {
         let f_local: [f64; 3] =
             std::array::from_fn(|k| -self.stiffness[k] * d_local[k] - self.damping[k] * v[k]);
         let f = add(f_local, cross(theta, f_local));
-        self.at.apply_pair(s, f, wrenches);
+        self.at.apply_pair_at(&arms, f, wrenches);
         let couple = cross(d, f);
         for k in 0..3 {
             let elastic = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);

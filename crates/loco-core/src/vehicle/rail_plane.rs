@@ -135,6 +135,12 @@ impl RailPlane {
         self.rail_height[side]
     }
 
+    /// (sin θ, cos θ) of the plane's roll.
+    #[inline]
+    pub fn roll_sin_cos(&self) -> (f64, f64) {
+        (self.sin, self.cos)
+    }
+
     /// A vector (y, z components; x unchanged) of the plane in track-frame components.
     #[inline]
     pub fn to_track(&self, v: [f64; 3]) -> [f64; 3] {

@@ -96,6 +96,7 @@ fn bushing(name: String, at: Attachment, stiffness: [f64; 3]) -> Bushing {
     Bushing {
         name,
         turns_with: [turns(at.body_a), turns(at.body_b)],
+        on_load_path: false,
         at,
         stiffness,
         damping: [0.0; 3],
@@ -141,11 +142,14 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
             );
             arm_node.rotational_stiffness = [0.0, node_torsion, 0.0];
             s.bushings.push(arm_node);
-            s.bushings.push(bushing(
-                format!("axle_box_spring_{tag}"),
-                attach(bodies, fr, arm, [xw, y, spring_height]),
-                [spring_shear, spring_shear, spring_kz],
-            ));
+            s.bushings.push(Bushing {
+                on_load_path: true,
+                ..bushing(
+                    format!("axle_box_spring_{tag}"),
+                    attach(bodies, fr, arm, [xw, y, spring_height]),
+                    [spring_shear, spring_shear, spring_kz],
+                )
+            });
             let yd = side_y(side, pvd_semi);
             s.dampers.push(DamperPlacement {
                 name: format!("primary_vertical_damper_{tag}"),
@@ -227,6 +231,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                     fc,
                 );
                 spring.rotational_stiffness = [fc_bending, fc_bending, 0.0];
+                spring.on_load_path = true;
                 s.bushings.push(spring);
             }
             let yv = side_y(side, svd_semi);
@@ -350,6 +355,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                 mount_k,
             );
             mount.damping = mount_c;
+            mount.on_load_path = true;
             s.bushings.push(mount);
         }
         let axle = [layout.wheelset_x[w], 0.0, r0];
@@ -360,6 +366,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
         );
         bearing.damping = [coupling_c_radial, 0.0, coupling_c_radial];
         bearing.rotational_stiffness = [bearing_tilt, 0.0, bearing_tilt];
+        bearing.on_load_path = true;
         s.bushings.push(bearing);
         let mut coupling = bushing(
             format!("six_link_coupling_{tag}"),

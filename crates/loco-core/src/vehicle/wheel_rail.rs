@@ -29,7 +29,7 @@ use super::elements::{add_force, BodyStates, Wrenches};
 use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
 use super::rail_plane::RailPlane;
 use crate::contact::creepage::{
-    contact_lead, creepages_of_slip, dot, slip_velocity, BodyVelocity, ContactFrame, Side,
+    contact_lead_sin_cos, creepages_of_slip, dot, slip_velocity, BodyVelocity, ContactFrame, Side,
 };
 use crate::contact::fastrip::Fastrip;
 use crate::contact::fastsim::Fastsim;
@@ -184,6 +184,8 @@ impl WheelRail {
         let h0 = self.centred_radius;
         let plane = RailPlane::new(rails, self.settings.contact_half_distance, speed);
         let pose_in_plane = plane.pose(u[1], u[2], u[ROLL], h0);
+        let (s_theta, c_theta) = plane.roll_sin_cos();
+        let yaw_sin_cos = u[YAW].sin_cos();
         for (side_index, side) in SIDES.iter().enumerate() {
             let s = side.sign();
             let y_rel = plane.table_position(pose_in_plane.lateral, side_index);
@@ -213,18 +215,18 @@ impl WheelRail {
                 if interference <= 0.0 {
                     continue;
                 }
-                let cg = point.contact_angle.cos();
+                let (sg, cg) = point.contact_angle.sin_cos();
                 let approach = interference * cg;
                 // A yawed wheel touches a steep flange ahead of or behind its axle.
-                let lead = contact_lead(
-                    *side,
-                    point.rolling_radius,
-                    point.contact_angle,
-                    wheel.roll,
-                    u[YAW],
-                );
+                let lead =
+                    contact_lead_sin_cos(*side, point.rolling_radius, (sg, cg), wheel.roll, u[YAW]);
                 let offset = plane.to_track([lead - u[YAW] * l, l, point.vertical]);
-                let frame = ContactFrame::new(*side, point.contact_angle + s * plane.roll, u[YAW]);
+                // The contact angle in the track frame is γ + s·θ.
+                let in_track = (
+                    sg * c_theta + s * cg * s_theta,
+                    cg * c_theta - s * sg * s_theta,
+                );
+                let frame = ContactFrame::from_sin_cos(*side, in_track, yaw_sin_cos);
                 let rail_surface = plane.surface_velocity(u[1], u[2], h0, &offset);
                 let slip = slip_velocity(&velocity, &offset, &rail_surface);
                 let approach_rate = -dot(&slip, &frame.normal);
