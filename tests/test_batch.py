@@ -45,10 +45,16 @@ def test_speed_column_and_frame() -> None:
     frame = result.to_frame()
     assert list(frame["status"]) == ["ok", "ok"]
     assert {"speed", "wy_max", "ayb_peak_lp", "message"} <= set(frame.columns)
+    # Run statistics per row, the same counts as a single run's.
+    assert result.statistics is not None
+    assert {"rhs_evaluations", "steps", "newton_iterations", "wall_time"} <= set(frame.columns)
+    assert (frame["steps"] > 0).all() and (frame["wall_time"] > 0).all()
+    assert repr(result).startswith("BatchResult(2 samples of ['speed'], 0 failed")
     single = loco.simulate(
         loco.Locomotive.default(), loco.Scenario(**{**SCENARIO.__dict__, "speed": 160 / 3.6})
     )
     assert result.metric("wy_max")[0] == single.metrics["wy_max"]
+    assert frame["rhs_evaluations"][0] == single.statistics["rhs_evaluations"]
 
 
 def test_a_diverging_sample_is_flagged_and_the_rest_completes() -> None:

@@ -73,6 +73,12 @@ def test_binary_matches_python_bit_for_bit(tmp_path: Path) -> None:
     for i, row in enumerate(rows):
         got = np.array([float(row[m]) for m in expected.metric_names])
         assert np.array_equal(got, expected.metrics[i], equal_nan=True), (i, row["message"])
+    # Run statistics columns: the same counts as the Python batch (wall time differs).
+    assert expected.statistics is not None
+    for i, row in enumerate(rows):
+        for j, name in enumerate(loco.simulation.RUN_STATISTICS[:3]):
+            assert float(row[name]) == expected.statistics[i, j], (i, name)
+        assert float(row["wall_time"]) > 0.0
 
     history = np.genfromtxt(tmp_path / "metrics_history_1.csv", delimiter=",", names=True)
     kept = expected.histories[1]

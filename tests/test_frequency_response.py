@@ -76,6 +76,8 @@ def test_frequency_response_views_and_plot(vehicle: loco.Locomotive, tmp_path: P
     assert h.h.shape == (len(loco.track_response.DEFAULT_OUTPUTS), 4, 25)
     assert h.h.dtype == np.complex128
     assert h.inputs == ["vertical", "alignment", "cross_level", "gauge"]
+    assert repr(h).startswith("FrequencyResponse(speed=55.5556 m/s, ")
+    assert repr(h).endswith("4 inputs, 25 frequencies 0.2–10 Hz)")
     da = h.to_xarray()
     assert da.dims == ("output", "input", "frequency")
     np.testing.assert_array_equal(h.transfer("wheelset1_y", "alignment"), h.h[2, 1])
@@ -93,6 +95,7 @@ def test_response_psd_bookkeeping(vehicle: loco.Locomotive) -> None:
     full = loco.response_psd(vehicle, scenario, ["carbody_floor_ay_front"], f)
     half = loco.response_psd(vehicle, scenario, ["carbody_floor_ay_front"], f, amplitude_scale=0.5)
     np.testing.assert_allclose(half.psd, 0.25 * full.psd, rtol=1e-12)
+    assert repr(full).startswith(f"ResponsePsd(spectrum={full.spectrum!r}, 1 outputs, W_y=")
     rms = np.sqrt(np.trapezoid(full.psd[0], f))
     assert full.rms["carbody_floor_ay_front"] == pytest.approx(rms, rel=1e-12)
     # The PSD is the sum over the independent channels of |H|² times the temporal input PSD.

@@ -24,7 +24,10 @@ def test_mass_matrix_carries_the_vehicle_mass() -> None:
 def test_hunting_mode_of_worn_wheels_is_the_bogies_lateral_and_yaw() -> None:
     # S_high with YD1 near its linear critical speed (39.2 m/s): the least damped mode.
     scenario = loco.Scenario(scenario="S_high", speed=39.0, yaw_damper=loco.dampers.YD1)
-    mode = loco.eigen(loco.Locomotive.default(), scenario).least_damped()
+    eigen = loco.eigen(loco.Locomotive.default(), scenario)
+    mode = eigen.least_damped()
+    assert repr(eigen).startswith(f"Eigen(speed=39 m/s, {len(eigen.modes)} modes, least damped")
+    assert repr(mode).startswith(f"Mode({mode.frequency:.3f} Hz, ζ=")
     groups = mode.groups()
     assert sum(groups.values()) == pytest.approx(1.0)
     assert sum(groups[g] for g in BOGIE) > 0.9

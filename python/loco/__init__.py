@@ -6,10 +6,28 @@ vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`sim
 :func:`run_batch`.
 """
 
+# The submodules, so that `import loco` is enough for `loco.contact.…`, `loco.metrics.…`
+# (`loco.studies` pulls in the study dependencies and is imported on its own).
+from loco import (
+    batch,
+    conicity,
+    contact,
+    creep,
+    dampers,
+    metrics,
+    modes,
+    profiles,
+    simulation,
+    stability,
+    track,
+    track_response,
+    vehicle,
+)
 from loco._loco import (
     ContactError,
     DerailmentError,
     DivergenceError,
+    EquilibriumError,
     InternalError,
     LocoError,
     LocoIOError,
@@ -34,6 +52,7 @@ __all__ = [
     "ContactError",
     "DerailmentError",
     "DivergenceError",
+    "EquilibriumError",
     "FrequencyResponse",
     "InternalError",
     "LocoError",
@@ -46,10 +65,23 @@ __all__ = [
     "SimulationError",
     "SimulationResult",
     "__version__",
+    "batch",
+    "conicity",
+    "contact",
+    "creep",
     "critical_speed",
+    "dampers",
     "eigen",
     "frequency_response",
+    "metrics",
+    "modes",
+    "profiles",
     "response_psd",
     "run_batch",
     "simulate",
+    "simulation",
+    "stability",
+    "track",
+    "track_response",
+    "vehicle",
 ]

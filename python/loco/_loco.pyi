@@ -21,6 +21,7 @@ __all__ += [
     "ContactError",
     "DerailmentError",
     "DivergenceError",
+    "EquilibriumError",
     "InternalError",
     "LocoError",
     "LocoIOError",
@@ -37,6 +38,7 @@ class ContactError(LocoError): ...
 class SimulationError(LocoError): ...
 class DivergenceError(SimulationError): ...
 class DerailmentError(SimulationError): ...
+class EquilibriumError(SimulationError): ...
 class InternalError(LocoError): ...
 
 # --- contact (contact.rs) -----------------------------------------------------------------------
@@ -492,7 +494,14 @@ def simulate(
     toml_text: str | None = None,
     origin: str = ...,
     overrides: dict[str, float] = ...,
-) -> tuple[NDArray[np.float64], list[str], NDArray[np.float64], list[str], NDArray[np.float64]]: ...
+) -> tuple[
+    NDArray[np.float64],
+    list[str],
+    NDArray[np.float64],
+    list[str],
+    NDArray[np.float64],
+    list[tuple[str, float]],
+]: ...
 def linearise(
     scenario: RunScenario,
     *,
@@ -528,7 +537,7 @@ def ramp_down(
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------
 
-__all__ += ["batch_status_names", "run_batch"]
+__all__ += ["batch_status_names", "run_batch", "run_statistics_names"]
 
 def run_batch(
     scenario: RunScenario,
@@ -548,8 +557,10 @@ def run_batch(
     NDArray[np.int32],
     list[str],
     list[tuple[int, NDArray[np.float64], list[str], NDArray[np.float64]]],
+    NDArray[np.float64],
 ]: ...
 def batch_status_names() -> list[str]: ...
+def run_statistics_names() -> list[str]: ...
 
 # --- frequency response (frequency_response.rs) --------------------------------------------------
 

@@ -29,7 +29,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.simulation import Scenario, SimulationResult
+from loco.simulation import RUN_STATISTICS, Scenario, SimulationResult
 from loco.vehicle import Locomotive
 
 if TYPE_CHECKING:
@@ -70,6 +70,16 @@ class BatchResult:
     threads: int = 0
     #: Samples read back from a campaign's store instead of run.
     n_reused: int = 0
+    #: (n, 4) run statistics, columns :data:`loco.simulation.RUN_STATISTICS`; None if not given.
+    statistics: FloatArray | None = None
+
+    def __repr__(self) -> str:
+        failed = self.failures()
+        how = f" {failed}" if failed else ""
+        return (
+            f"BatchResult({len(self.params)} samples of {self.names}, "
+            f"{self.n_failed} failed{how}, {self.seconds:.1f} s)"
+        )
 
     @property
     def n_failed(self) -> int:
@@ -91,12 +101,16 @@ class BatchResult:
             ) from None
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per sample: parameters, metrics, ``status`` (name) and ``message``."""
+        """One row per sample: parameters, metrics, run statistics, ``status`` (name) and
+        ``message``."""
         import pandas as pd
 
         frame = pd.DataFrame(self.params, columns=self.names)
         for j, name in enumerate(self.metric_names):
             frame[name] = self.metrics[:, j]
+        if self.statistics is not None:
+            for j, name in enumerate(RUN_STATISTICS):
+                frame[name] = self.statistics[:, j]
         frame["status"] = [STATUS_NAMES[int(c)] for c in self.status]
         frame["message"] = self.messages
         return frame
@@ -195,7 +209,7 @@ def run_batch(
     bar = _ProgressBar(len(x)) if progress else None
     start = time.perf_counter()
     try:
-        metric_names, metrics, status, messages, kept = _loco.run_batch(
+        metric_names, metrics, status, messages, kept, statistics = _loco.run_batch(
             scenario.native(seed=seed),
             np.ascontiguousarray(x),
             [str(n) for n in names],
@@ -222,6 +236,7 @@ def run_batch(
         histories=kept_results,
         seconds=seconds,
         threads=threads or 0,
+        statistics=statistics,
     )
 
 

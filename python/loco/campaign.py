@@ -40,7 +40,7 @@ import pandas as pd
 from loco import _loco
 from loco.batch import STATUS_NAMES, BatchResult, history_results
 from loco.executors import BatchJob, Chunk, Executor, LocalExecutor
-from loco.simulation import Scenario
+from loco.simulation import RUN_STATISTICS, Scenario
 from loco.store import CampaignStore, campaign_key, file_sha256
 from loco.vehicle import Locomotive
 
@@ -235,6 +235,8 @@ def run_campaign(
     job = BatchJob(vehicle=vehicle, scenario=scenario, names=tuple(names), seed=track_seed)
     bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None
     kept: dict[int, Any] = {}
+    # Samples read back from the store did not run here: their statistics stay NaN.
+    statistics = np.full((n, len(RUN_STATISTICS)), np.nan)
     start = time.perf_counter()
     try:
         for result in executor.map_chunks(job, chunks, bar.chunk_progress if bar else None):
@@ -243,6 +245,7 @@ def run_campaign(
             idx = result.indices
             new = ~done[idx] & (result.status != INTERRUPTED)
             metrics[idx] = result.metrics
+            statistics[idx] = result.statistics
             status[idx] = result.status
             for i, m in zip(idx, result.messages, strict=True):
                 messages[int(i)] = m
@@ -270,6 +273,7 @@ def run_campaign(
         seconds=time.perf_counter() - start,
         threads=threads or 0,
         n_reused=n_reused,
+        statistics=statistics,
     )
 
 

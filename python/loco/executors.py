@@ -100,6 +100,8 @@ class ChunkResult:
     status: npt.NDArray[np.int32]
     messages: list[str]
     histories: Histories
+    #: (rows, 4) run statistics, columns :data:`loco.simulation.RUN_STATISTICS`.
+    statistics: FloatArray
 
 
 def run_chunk(
@@ -109,7 +111,7 @@ def run_chunk(
     local = {int(i): k for k, i in enumerate(chunk.indices)}
     keep = sorted(local[i] for i in chunk.histories if i in local)
     try:
-        metric_names, metrics, status, messages, kept = _loco.run_batch(
+        metric_names, metrics, status, messages, kept, statistics = _loco.run_batch(
             job.scenario.native(seed=job.seed),
             np.ascontiguousarray(chunk.rows, dtype=np.float64),
             list(job.names),
@@ -131,6 +133,7 @@ def run_chunk(
         status=status,
         messages=list(messages),
         histories={int(chunk.indices[k]): (t, list(c), ch) for k, t, c, ch in kept},
+        statistics=statistics,
     )
 
 

@@ -86,6 +86,12 @@ class Mode:
     motions: dict[str, dict[str, float]]
     kinds: dict[str, str]
 
+    def __repr__(self) -> str:
+        groups = self.groups()
+        top = max(groups, key=groups.__getitem__) if groups else "?"
+        share = f", {top} {100 * groups[top]:.0f} %" if groups else ""
+        return f"Mode({self.frequency:.3f} Hz, ζ={self.damping_ratio:.4f}{share})"
+
     def groups(self) -> dict[str, float]:
         """Energy shares (–) by kind of body (``carbody``, ``frames``, ``wheelsets``, …)."""
         out: dict[str, float] = {}

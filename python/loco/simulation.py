@@ -8,7 +8,7 @@
 
 from __future__ import annotations
 
-from dataclasses import InitVar, dataclass, field
+from dataclasses import InitVar, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,7 +23,14 @@ from loco.vehicle import Locomotive
 if TYPE_CHECKING:
     import xarray
 
-__all__ = ["CREEP_MODELS", "SCENARIOS", "Scenario", "SimulationResult", "simulate"]
+__all__ = [
+    "CREEP_MODELS",
+    "RUN_STATISTICS",
+    "SCENARIOS",
+    "Scenario",
+    "SimulationResult",
+    "simulate",
+]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -84,6 +91,19 @@ class Scenario:
                 'write creep="table" (or "fastsim", "fastrip")'
             )
 
+    def __repr__(self) -> str:
+        """The fields that differ from their defaults (speed in m/s, distance in m)."""
+        changed = []
+        for f in fields(self):
+            value = getattr(self, f.name)
+            try:
+                same = bool(value == f.default)
+            except (TypeError, ValueError):
+                same = False
+            if not same:
+                changed.append(f"{f.name}={value!r}")
+        return f"Scenario({', '.join(changed)})"
+
     def profiles(self) -> tuple[Profile, Profile]:
         """The wheel and rail profiles of the run."""
         if self.scenario is not None:
@@ -132,9 +152,19 @@ class Scenario:
         )
 
 
+#: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.
+RUN_STATISTICS: list[str] = _loco.run_statistics_names()
+
+
 @dataclass(frozen=True)
 class SimulationResult:
-    """Time histories (SI) and metrics of one run."""
+    """Time histories (SI), metrics and cost statistics of one run.
+
+    ``statistics`` (keys :data:`RUN_STATISTICS`): ``rhs_evaluations`` of the force model (static
+    search and time integration), time ``steps``, ``newton_iterations`` of the static
+    equilibrium and ``wall_time`` (s); empty for histories kept by a batch (see
+    :attr:`loco.BatchResult.statistics`).
+    """
 
     time: FloatArray
     channel_names: list[str]
@@ -142,6 +172,20 @@ class SimulationResult:
     metrics: dict[str, float]
     sampling_rate: float
     parameters: dict[str, Any] = field(default_factory=dict)
+    statistics: dict[str, float] = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        duration = float(self.time[-1] - self.time[0]) if len(self.time) else 0.0
+        cost = ""
+        if self.statistics:
+            cost = (
+                f", {int(self.statistics['rhs_evaluations'])} evaluations in "
+                f"{self.statistics['wall_time']:.2f} s"
+            )
+        return (
+            f"SimulationResult({duration:.3f} s at {self.sampling_rate:g} Hz, "
+            f"{len(self.channel_names)} channels, {len(self.metrics)} metrics{cost})"
+        )
 
     def channel(self, name: str) -> FloatArray:
         """The channel called ``name`` (see ``channel_names``)."""
@@ -167,9 +211,10 @@ def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
     """Runs the locomotive through a scenario (static equilibrium, then RK4 in time).
 
     Raises :class:`loco.ParameterError` for non-physical inputs, :class:`loco.DivergenceError`
-    or :class:`loco.DerailmentError` when the run fails (the message says when and where).
+    or :class:`loco.DerailmentError` when the run fails (the message says when and where), and
+    :class:`loco.EquilibriumError` when its static equilibrium is not found.
     """
-    time, names, channels, metric_names, metric_values = _loco.simulate(
+    time, names, channels, metric_names, metric_values, statistics = _loco.simulate(
         scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
@@ -182,4 +227,5 @@ def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
         metrics=dict(zip(metric_names, metric_values.tolist(), strict=True)),
         sampling_rate=float(scenario.output_rate),
         parameters={"speed": scenario.speed, "distance": scenario.distance},
+        statistics=dict(statistics),
     )

@@ -34,6 +34,14 @@ class Eigen:
     speed: float
     modes: list[Mode]
 
+    def __repr__(self) -> str:
+        try:
+            m = self.least_damped()
+            least = f", least damped {m.frequency:.3f} Hz at ζ={m.damping_ratio:.4f} (0.3–20 Hz)"
+        except _loco.ParameterError:
+            least = ""
+        return f"Eigen(speed={self.speed:g} m/s, {len(self.modes)} modes{least})"
+
     def least_damped(self, min_frequency: float = 0.3, max_frequency: float = 20.0) -> Mode:
         """The least damped mode within a frequency band (hunting and body modes, not drift)."""
         band = [m for m in self.modes if min_frequency <= m.frequency <= max_frequency]
@@ -106,6 +114,12 @@ class RampDown:
     outcome: str
     speed: FloatArray
     amplitude: FloatArray
+
+    def __repr__(self) -> str:
+        return (
+            f"RampDown(critical_speed={self.critical_speed:.2f} m/s, outcome={self.outcome!r}, "
+            f"{len(self.speed)} windows)"
+        )
 
 
 def _given(**settings: float | tuple[float, float] | None) -> dict[str, object]:

@@ -66,6 +66,14 @@ class FrequencyResponse:
     #: Longitudinal position of each wheelset ahead of the vehicle origin, m.
     wheelset_x: tuple[float, ...] = ()
 
+    def __repr__(self) -> str:
+        f = self.frequencies
+        band = f"{f[0]:g}–{f[-1]:g} Hz" if len(f) else "no frequencies"
+        return (
+            f"FrequencyResponse(speed={self.speed:g} m/s, {len(self.outputs)} outputs × "
+            f"{len(self.inputs)} inputs, {len(f)} frequencies {band})"
+        )
+
     def transfer(self, output: str, channel: str) -> npt.NDArray[np.complex128]:
         """H from irregularity ``channel`` to ``output`` over the frequencies."""
         if output not in self.outputs:
@@ -165,6 +173,12 @@ class ResponsePsd:
     spectrum: str
     #: Damping ratio of the least damped mode in 0.3–20 Hz (–, NaN when none).
     least_damping_ratio: float = float("nan")
+
+    def __repr__(self) -> str:
+        return (
+            f"ResponsePsd(spectrum={self.spectrum!r}, {len(self.outputs)} outputs, "
+            f"W_y={self.sperling_lateral:.3f}, least damping ratio {self.least_damping_ratio:.4f})"
+        )
 
     @property
     def stable(self) -> bool:

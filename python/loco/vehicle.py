@@ -46,6 +46,11 @@ class Locomotive:
         object.__setattr__(self, "overrides", {k: float(v) for k, v in self.overrides.items()})
         _loco.vehicle_parameters(self.toml_text, self.origin, dict(self.overrides))
 
+    def __repr__(self) -> str:
+        source = "default vehicle" if self.toml_text is None else repr(self.origin)
+        overrides = f", overrides={dict(self.overrides)}" if self.overrides else ""
+        return f"Locomotive({source}{overrides})"
+
     @classmethod
     def default(cls) -> Locomotive:
         """The embedded default vehicle."""

@@ -5,6 +5,7 @@
 
 use loco_core::batch::BatchOutput;
 use loco_core::vehicle::run::RunOutput;
+use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::{LocoError, Result};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -73,7 +74,8 @@ fn write(path: &Path, text: &str) -> Result<()> {
     })
 }
 
-/// Writes one row per sample: `sample`, the parameters, the metrics, `status`, `message`.
+/// Writes one row per sample: `sample`, the parameters, the metrics, the run statistics
+/// ([`RunStatistics::NAMES`]), `status`, `message`.
 pub fn write_metrics(path: &Path, samples: &Samples, output: &BatchOutput) -> Result<()> {
     let mut text = String::from("sample");
     for name in samples
@@ -81,6 +83,7 @@ pub fn write_metrics(path: &Path, samples: &Samples, output: &BatchOutput) -> Re
         .iter()
         .map(String::as_str)
         .chain(output.metric_names.iter().copied())
+        .chain(RunStatistics::NAMES)
     {
         let _ = write!(text, ",{name}");
     }
@@ -91,6 +94,7 @@ pub fn write_metrics(path: &Path, samples: &Samples, output: &BatchOutput) -> Re
         for v in samples.values[i * k..(i + 1) * k]
             .iter()
             .chain(output.row(i))
+            .chain(&output.statistics[i].values())
         {
             let _ = write!(text, ",{v}");
         }

@@ -9,7 +9,7 @@ use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
 };
 use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::static_equilibrium;
+use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::structure::VehicleStructure;
 use std::hint::black_box;
 use std::sync::Arc;
@@ -63,7 +63,9 @@ fn bench_vehicle(c: &mut Criterion) {
         scenario.run.step,
     )
     .unwrap();
-    let y = static_equilibrium(&mut system).unwrap();
+    let y = static_equilibrium(&mut system, &StaticsSettings::default())
+        .unwrap()
+        .state;
     let mut dy = vec![0.0; y.len()];
     c.bench_function("vehicle_right_hand_side", |b| {
         b.iter(|| system.derivatives(0.1, black_box(&y), &mut dy))

@@ -44,6 +44,16 @@ pub enum LocoError {
         reason: String,
     },
 
+    /// The static equilibrium a run or a linearisation starts from was not found: the Newton
+    /// search stopped after `iterations` iterations with the residual generalized force
+    /// `residual` (N, N·m) above its tolerance.
+    #[error("static equilibrium not found after {iterations} Newton iterations (residual {residual:.3e} N): {reason}")]
+    Equilibrium {
+        iterations: usize,
+        residual: f64,
+        reason: String,
+    },
+
     /// A wheel climbed past its flange (or lost contact for good).
     #[error("derailment at t = {time:.4} s ({location}): {reason}")]
     Derailed {

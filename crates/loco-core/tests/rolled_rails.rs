@@ -23,7 +23,7 @@ use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
 };
 use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::static_equilibrium;
+use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
 use std::sync::Arc;
@@ -61,7 +61,9 @@ fn run(
     every: usize,
     mut observe: impl FnMut(f64, &VehicleSystem, &[f64]),
 ) {
-    let mut y = static_equilibrium(system).unwrap();
+    let mut y = static_equilibrium(system, &StaticsSettings::default())
+        .unwrap()
+        .state;
     let steps = (distance / SPEED / 1e-3) as usize;
     integrate(
         system,

@@ -14,7 +14,7 @@ use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
 };
 use loco_core::vehicle::simulation::{SpeedProfile, VehicleSystem};
-use loco_core::vehicle::statics::{static_equilibrium, STATIC_TANGENTIAL_STIFFNESS};
+use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
 use std::sync::Arc;
@@ -37,12 +37,19 @@ fn system(parameters: ParameterSet, scenario: &Scenario) -> VehicleSystem {
 fn static_wheel_loads_carry_the_weight_equally() {
     let scenario = perfect("S_norm", 50.0, 100.0);
     let mut sys = system(ParameterSet::default_vehicle(), &scenario);
-    let y = static_equilibrium(&mut sys).unwrap();
+    let settings = StaticsSettings::default();
+    let equilibrium = static_equilibrium(&mut sys, &settings).unwrap();
+    let y = equilibrium.state;
+    let weight = sys.structure.total_mass() * sys.structure.gravity;
+    assert!(equilibrium.iterations >= 1 && equilibrium.residual < settings.tolerance * weight);
+    assert_eq!(
+        sys.statistics.newton_iterations,
+        equilibrium.iterations as u64
+    );
     // Evaluate as the static search does (wheels held, nothing rolling).
-    sys.static_stiffness = STATIC_TANGENTIAL_STIFFNESS;
+    sys.contact_mode = settings.contact_mode();
     let mut dy = vec![0.0; sys.dimension()];
     sys.derivatives(0.0, &y, &mut dy);
-    let weight = sys.structure.total_mass() * sys.structure.gravity;
     let loads: Vec<f64> = sys
         .wheel_forces
         .iter()

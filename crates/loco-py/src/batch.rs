@@ -4,6 +4,7 @@ use crate::errors::{run_detached_monitored, InternalError};
 use crate::scenario::PyRunScenario;
 use crate::vehicle::{channels_array, parameter_set};
 use loco_core::batch::{run_batch as core_run_batch, BatchMonitor, BatchSpec};
+use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::LocoError;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -19,14 +20,15 @@ type History<'py> = (
     Bound<'py, PyArray2<f64>>,
 );
 
-/// What `run_batch` returns: metric names, metrics (n × m), status codes (n), messages (n) and
-/// the kept time histories.
+/// What `run_batch` returns: metric names, metrics (n × m), status codes (n), messages (n),
+/// the kept time histories and the run statistics (n × 4, columns `run_statistics_names()`).
 type BatchTuple<'py> = (
     Vec<&'static str>,
     Bound<'py, PyArray2<f64>>,
     Bound<'py, PyArray1<i32>>,
     Vec<String>,
     Vec<History<'py>>,
+    Bound<'py, PyArray2<f64>>,
 );
 
 /// Runs one simulation per row of `params` (n × k, SI; columns `names`) on `threads` threads
@@ -94,6 +96,10 @@ fn run_batch<'py>(
     let metrics = numpy::ndarray::Array2::from_shape_vec((n, m), output.metrics)
         .map_err(|e| InternalError::new_err(e.to_string()))?;
     let status: Vec<i32> = output.status.iter().map(|s| s.code()).collect();
+    let columns = RunStatistics::NAMES.len();
+    let statistics: Vec<f64> = output.statistics.iter().flat_map(|s| s.values()).collect();
+    let statistics = numpy::ndarray::Array2::from_shape_vec((n, columns), statistics)
+        .map_err(|e| InternalError::new_err(e.to_string()))?;
     let mut kept = Vec::with_capacity(output.histories.len());
     for (i, run) in output.histories {
         let (time, channel_names, channels) = channels_array(py, run)?;
@@ -105,7 +111,14 @@ fn run_batch<'py>(
         status.into_pyarray(py),
         output.messages,
         kept,
+        statistics.into_pyarray(py),
     ))
+}
+
+/// Names of the run statistics (`loco.SimulationResult.statistics` keys, batch columns).
+#[pyfunction]
+fn run_statistics_names() -> Vec<&'static str> {
+    RunStatistics::NAMES.to_vec()
 }
 
 /// Status names by code (`status_names()[code]`).
@@ -121,5 +134,6 @@ fn batch_status_names() -> Vec<&'static str> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_batch, m)?)?;
     m.add_function(wrap_pyfunction!(batch_status_names, m)?)?;
+    m.add_function(wrap_pyfunction!(run_statistics_names, m)?)?;
     Ok(())
 }

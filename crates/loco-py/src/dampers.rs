@@ -97,8 +97,49 @@ impl PyDamper {
         Ok(d)
     }
 
+    /// The law and its main parameters in engineering units (`parameters()` has them all, SI).
     fn __repr__(&self) -> String {
-        format!("Damper({:?})", self.inner)
+        match self.inner {
+            Damper::Maxwell(m) => {
+                let p = m.params();
+                let blow_off = p.blow_off.map_or(String::new(), |b| {
+                    format!(
+                        ", blow-off above {} m/s at {} kN·s/m",
+                        b.knee_velocity_mps,
+                        b.blow_off_damping_nspm / 1e3
+                    )
+                });
+                format!(
+                    "Damper(maxwell, c={} kN·s/m, k_series={} kN/mm{blow_off})",
+                    p.damping_nspm / 1e3,
+                    p.series_stiffness_npm / 1e6
+                )
+            }
+            Damper::Fsd(f) => {
+                let p = f.params();
+                format!(
+                    "Damper(fsd, c1={} kN·s/m, c2={} kN·s/m, f_p={} Hz, delay={} s, k={} kN/mm, m={} kg)",
+                    p.low_damping_nspm / 1e3,
+                    p.high_damping_nspm / 1e3,
+                    p.cutoff_frequency_hz,
+                    p.switching_delay_s,
+                    p.equivalent_stiffness_npm / 1e6,
+                    p.equivalent_mass_kg
+                )
+            }
+            Damper::Hydraulic(h) => {
+                let p = h.params();
+                let valve = p.frequency_valve.map_or(String::new(), |v| {
+                    format!(", frequency valve at {} Hz", v.cutoff_frequency_hz)
+                });
+                format!(
+                    "Damper(hydraulic, piston={} cm², rebound orifice={} mm², k_series={} kN/mm{valve})",
+                    p.piston_area_m2 * 1e4,
+                    p.rebound_orifice_area_m2 * 1e6,
+                    p.series_stiffness_npm / 1e6
+                )
+            }
+        }
     }
 }
 

@@ -64,6 +64,12 @@ create_exception!(
 );
 create_exception!(
     _loco,
+    EquilibriumError,
+    SimulationError,
+    "The static equilibrium a run or linearisation starts from was not found (Newton search)."
+);
+create_exception!(
+    _loco,
     InternalError,
     LocoError,
     "A bug in loco (a Rust panic caught at the boundary); please report it."
@@ -81,6 +87,7 @@ pub fn to_py_err(err: CoreError) -> PyErr {
         CoreError::Contact(_) => ContactError::new_err(msg),
         CoreError::Diverged { .. } => DivergenceError::new_err(msg),
         CoreError::Derailed { .. } => DerailmentError::new_err(msg),
+        CoreError::Equilibrium { .. } => EquilibriumError::new_err(msg),
         CoreError::Interrupted => PyKeyboardInterrupt::new_err(msg),
     }
 }
@@ -179,6 +186,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SimulationError", py.get_type::<SimulationError>())?;
     m.add("DivergenceError", py.get_type::<DivergenceError>())?;
     m.add("DerailmentError", py.get_type::<DerailmentError>())?;
+    m.add("EquilibriumError", py.get_type::<EquilibriumError>())?;
     m.add("InternalError", py.get_type::<InternalError>())?;
     Ok(())
 }

@@ -14,6 +14,7 @@ use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, 
 use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
+use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::vehicle::scenario::{linearised, simulate as core_simulate};
 use loco_core::vehicle::structure::VehicleStructure;
 use numpy::ndarray::{Array2, Array3};
@@ -211,6 +212,7 @@ type SimulationTuple<'py> = (
     Bound<'py, PyArray2<f64>>,
     Vec<&'static str>,
     Bound<'py, PyArray1<f64>>,
+    Vec<(&'static str, f64)>,
 );
 
 /// Time (s), channel names and channels (n_channels × n_samples) of a run.
@@ -259,6 +261,10 @@ fn simulate<'py>(
         channels,
         RunMetrics::names().to_vec(),
         result.metrics.values().into_pyarray(py),
+        RunStatistics::NAMES
+            .into_iter()
+            .zip(result.statistics.values())
+            .collect(),
     ))
 }
 

@@ -16,6 +16,7 @@ use crate::metrics::RunMetrics;
 use crate::track::TrackIrregularity;
 use crate::vehicle::parameters::ParameterSet;
 use crate::vehicle::run::RunOutput;
+use crate::vehicle::run_statistics::RunStatistics;
 use crate::vehicle::scenario::{
     build_track, build_wheel_rail, simulate_prepared, Scenario, TrackSpec,
 };
@@ -66,6 +67,9 @@ pub struct BatchOutput {
     pub metrics: Vec<f64>,
     /// Outcome of each sample.
     pub status: Vec<SampleStatus>,
+    /// Cost of each sample ([`RunStatistics::NAMES`]): counts of a failed sample are 0, its wall
+    /// time is measured.
+    pub statistics: Vec<RunStatistics>,
     /// Error message of each failed sample (empty for successful ones).
     pub messages: Vec<String>,
     /// Time histories of the samples asked for, `(index, output)` in ascending index order.
@@ -173,6 +177,7 @@ struct SampleResult {
     message: String,
     metrics: Option<RunMetrics>,
     history: Option<RunOutput>,
+    statistics: RunStatistics,
 }
 
 fn run_sample_caught(
@@ -188,16 +193,26 @@ fn run_sample_caught(
             "not run: the batch was cancelled",
         );
     }
-    match catch_unwind(AssertUnwindSafe(|| {
+    let started = std::time::Instant::now();
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
         run_sample(spec, shared, i, row, monitor)
-    })) {
-        Ok(Ok((metrics, output))) => SampleResult {
+    }));
+    let wall_time = started.elapsed().as_secs_f64();
+    let mut result = match outcome {
+        Ok(Ok((metrics, output, statistics))) => SampleResult {
             status: SampleStatus::Ok,
             message: String::new(),
             metrics: Some(metrics),
             history: spec.histories.contains(&i).then_some(output),
+            statistics,
         },
-        Ok(Err(e)) => failure(SampleStatus::from_error(&e), &e.to_string()),
+        Ok(Err(e)) => {
+            let mut failed = failure(SampleStatus::from_error(&e), &e.to_string());
+            if let LocoError::Equilibrium { iterations, .. } = e {
+                failed.statistics.newton_iterations = iterations as u64;
+            }
+            failed
+        }
         Err(panic) => {
             let what = panic
                 .downcast_ref::<&str>()
@@ -209,7 +224,9 @@ fn run_sample_caught(
                 &format!("internal error (panic): {what}"),
             )
         }
-    }
+    };
+    result.statistics.wall_time = wall_time;
+    result
 }
 
 fn failure(status: SampleStatus, message: &str) -> SampleResult {
@@ -218,6 +235,7 @@ fn failure(status: SampleStatus, message: &str) -> SampleResult {
         message: message.to_string(),
         metrics: None,
         history: None,
+        statistics: RunStatistics::default(),
     }
 }
 
@@ -227,7 +245,7 @@ fn run_sample(
     i: usize,
     row: &[f64],
     monitor: &BatchMonitor,
-) -> Result<(RunMetrics, RunOutput)> {
+) -> Result<(RunMetrics, RunOutput, RunStatistics)> {
     let parameters = row_parameters(&spec.base, &shared.columns, row)?;
     let scenario = Scenario {
         speed: row_speed(&shared.columns, row, spec.scenario.speed),
@@ -258,7 +276,7 @@ fn run_sample(
         &scenario,
         Some(&monitor.cancel),
     )?;
-    Ok((result.metrics, result.output))
+    Ok((result.metrics, result.output, result.statistics))
 }
 
 fn collect(n: usize, results: Vec<SampleResult>) -> BatchOutput {
@@ -269,6 +287,7 @@ fn collect(n: usize, results: Vec<SampleResult>) -> BatchOutput {
         metric_names,
         metrics: Vec::with_capacity(n * m),
         status: Vec::with_capacity(n),
+        statistics: Vec::with_capacity(n),
         messages: Vec::with_capacity(n),
         histories: Vec::new(),
     };
@@ -278,6 +297,7 @@ fn collect(n: usize, results: Vec<SampleResult>) -> BatchOutput {
             None => out.metrics.extend(std::iter::repeat_n(f64::NAN, m)),
         }
         out.status.push(r.status);
+        out.statistics.push(r.statistics);
         out.messages.push(r.message);
         if let Some(h) = r.history {
             out.histories.push((i, h));

@@ -21,11 +21,13 @@ pub enum SampleStatus {
     Internal,
     /// The batch was cancelled before or while this sample ran.
     Interrupted,
+    /// The static equilibrium the run starts from was not found.
+    Equilibrium,
 }
 
 impl SampleStatus {
     /// Every status, in code order.
-    pub const ALL: [SampleStatus; 7] = [
+    pub const ALL: [SampleStatus; 8] = [
         SampleStatus::Ok,
         SampleStatus::InvalidParameter,
         SampleStatus::Diverged,
@@ -33,10 +35,11 @@ impl SampleStatus {
         SampleStatus::Contact,
         SampleStatus::Internal,
         SampleStatus::Interrupted,
+        SampleStatus::Equilibrium,
     ];
 
     /// Stable numeric code: 0 ok, 1 invalid parameter, 2 diverged, 3 derailed, 4 contact,
-    /// 5 internal error, 6 interrupted.
+    /// 5 internal error, 6 interrupted, 7 no static equilibrium.
     pub fn code(self) -> i32 {
         match self {
             SampleStatus::Ok => 0,
@@ -46,6 +49,7 @@ impl SampleStatus {
             SampleStatus::Contact => 4,
             SampleStatus::Internal => 5,
             SampleStatus::Interrupted => 6,
+            SampleStatus::Equilibrium => 7,
         }
     }
 
@@ -59,6 +63,7 @@ impl SampleStatus {
             SampleStatus::Contact => "contact",
             SampleStatus::Internal => "internal_error",
             SampleStatus::Interrupted => "interrupted",
+            SampleStatus::Equilibrium => "equilibrium",
         }
     }
 
@@ -73,6 +78,7 @@ impl SampleStatus {
             LocoError::Diverged { .. } => SampleStatus::Diverged,
             LocoError::Derailed { .. } => SampleStatus::Derailed,
             LocoError::Interrupted => SampleStatus::Interrupted,
+            LocoError::Equilibrium { .. } => SampleStatus::Equilibrium,
         }
     }
 }
@@ -95,6 +101,19 @@ mod tests {
         assert_eq!(
             SampleStatus::from_error(&LocoError::Interrupted).name(),
             "interrupted"
+        );
+        let equilibrium = LocoError::Equilibrium {
+            iterations: 50,
+            residual: 1.0,
+            reason: "z".into(),
+        };
+        assert_eq!(
+            SampleStatus::from_error(&equilibrium),
+            SampleStatus::Equilibrium
+        );
+        assert_ne!(
+            SampleStatus::Equilibrium.code(),
+            SampleStatus::Diverged.code()
         );
     }
 }

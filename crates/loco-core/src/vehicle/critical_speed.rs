@@ -35,7 +35,7 @@ use super::parameters::ParameterSet;
 use super::run::{integrate, Flow};
 use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use super::simulation::{SpeedProfile, VehicleSystem};
-use super::statics::static_equilibrium;
+use super::statics::{static_equilibrium, StaticsSettings};
 use crate::error::{check_positive, LocoError, Result};
 use std::collections::VecDeque;
 use std::sync::atomic::AtomicBool;
@@ -171,7 +171,7 @@ pub fn nonlinear_critical_speed(
     let mut system = PerfectTrackVehicle::new(parameters, &perfect)?.system(start_speed)?;
     // The ramp starts when the hunting has settled (below); until then V stays V0.
     system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
-    let mut y = static_equilibrium(&mut system)?;
+    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;
     disturb(&system, &mut y, settings.disturbance);
 
     let steps_per_window = (settings.window / dt).round().max(2.0) as usize;

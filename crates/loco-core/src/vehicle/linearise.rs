@@ -4,16 +4,18 @@
 //! The state matrix is formed by central finite differences of the full nonlinear right-hand side
 //! (contact table, Hertz, FASTSIM, dampers' internal states), so it is the Jacobian of exactly the
 //! model that the time integration runs. [`least_damped`] and [`linear_critical_speed`] take its
-//! eigenvalues with the solver of [`super::eigenvalues`] (frequencies `|Im λ|/2π`, damping ratios
-//! `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses numpy/LAPACK.
+//! eigenvalues from nalgebra's real Schur decomposition ([`eigenvalues`]; frequencies `|Im λ|/2π`,
+//! damping ratios `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses
+//! numpy/LAPACK.
 
-use super::eigenvalues::eigenvalues;
 use super::integrator::OdeSystem;
 use super::parameters::ParameterSet;
 use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
-use super::statics::static_equilibrium;
+use super::statics::{static_equilibrium, StaticsSettings};
 use crate::error::{check_positive, LocoError, Result};
+use nalgebra::linalg::balancing::balance_parlett_reinsch;
+use nalgebra::{Complex, DMatrix, Schur};
 
 /// Relative perturbation of each state for the central differences (scaled by the state's size
 /// with a floor: 1e-7 m, rad, m/s, rad/s), small against the 0.1 mm contact table grid.
@@ -21,7 +23,7 @@ const PERTURBATION: f64 = 1e-7;
 
 /// The state matrix `A` (row-major n×n) at the static equilibrium and the equilibrium state.
 pub fn linearise(system: &mut VehicleSystem) -> Result<(Vec<f64>, Vec<f64>)> {
-    let y0 = static_equilibrium(system)?;
+    let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
     let n = system.dimension();
     let mut a = vec![0.0; n * n];
     let mut y = y0.clone();
@@ -42,6 +44,38 @@ pub fn linearise(system: &mut VehicleSystem) -> Result<(Vec<f64>, Vec<f64>)> {
         return Err(e);
     }
     Ok((a, y0))
+}
+
+/// Most Francis QR sweeps, in total over all eigenvalues, before the Schur decomposition gives up:
+/// two to three per eigenvalue is typical (Golub and Van Loan, Matrix Computations, §7.5), so this
+/// is a wide margin for the vehicle's ~200 states.
+const MAX_QR_SWEEPS: usize = 100_000;
+
+/// Eigenvalues `λ` (1/s for a state matrix) of the row-major n×n matrix `a`, in no particular
+/// order, complex ones in conjugate pairs: nalgebra's Parlett-Reinsch balancing (the vehicle's
+/// state matrix mixes entries of order 1 with contact stiffness over mass, ~1e8 1/s²), Hessenberg
+/// reduction and implicit double-shift QR. Fails on a wrong size, a non-finite entry or a QR
+/// that does not converge.
+pub fn eigenvalues(a: &[f64], n: usize) -> Result<Vec<Complex<f64>>> {
+    if a.len() != n * n {
+        return Err(LocoError::input(
+            "matrix",
+            format!("expected {n}×{n} entries, got {}", a.len()),
+        ));
+    }
+    if a.iter().any(|v| !v.is_finite()) {
+        return Err(LocoError::input("matrix", "has a non-finite entry"));
+    }
+    let mut matrix = DMatrix::from_row_slice(n, n, a);
+    // A diagonal similarity: the eigenvalues are unchanged, their accuracy is not.
+    balance_parlett_reinsch(&mut matrix);
+    let schur = Schur::try_new(matrix, f64::EPSILON, MAX_QR_SWEEPS).ok_or_else(|| {
+        LocoError::input(
+            "matrix",
+            format!("QR iteration did not converge in {MAX_QR_SWEEPS} sweeps"),
+        )
+    })?;
+    Ok(schur.complex_eigenvalues().iter().copied().collect())
 }
 
 /// The least damped oscillatory mode of a state matrix in a frequency band.
@@ -135,3 +169,7 @@ pub fn linear_critical_speed(
     }
     Ok(0.5 * (low + high))
 }
+
+#[cfg(test)]
+#[path = "linearise_tests.rs"]
+mod tests;

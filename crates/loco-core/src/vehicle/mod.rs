@@ -9,7 +9,7 @@
 //! - [`suspension`]: every suspension element placed on the vehicle.
 //! - [`structure`]: the assembled vehicle and its gravity, gyroscopic and spring forces.
 //! - [`integrator`]: fixed-step RK4.
-//! - [`linearise`], [`eigenvalues`]: the state matrix about equilibrium, its eigenvalues and the
+//! - [`linearise`]: the state matrix about equilibrium, its eigenvalues (nalgebra) and the
 //!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
 //! - [`modes`]: which bodies and motions carry a mode's kinetic energy.
 //! - [`track_input`], [`shifted_hessenberg`], [`frequency_response`], [`response_psd`]: the model
@@ -19,18 +19,18 @@
 //!   level rolls it); [`track_limits`]: which irregularities the contact can follow.
 //! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once;
 //!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
+//! - [`statics`]: the static equilibrium every run starts from; [`run_statistics`]: what a run
+//!   cost (evaluations, steps, Newton iterations, wall time).
 
 pub mod bodies;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
-pub mod eigenvalues;
 pub mod elements;
 pub mod frequency_response;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
-pub mod linalg;
 pub mod linearise;
 pub mod mass;
 pub mod modes;
@@ -39,6 +39,7 @@ pub mod rail_plane;
 pub mod response_psd;
 pub mod run;
 pub mod run_metrics;
+pub mod run_statistics;
 pub mod scenario;
 pub mod scenario_settings;
 pub mod shifted_hessenberg;

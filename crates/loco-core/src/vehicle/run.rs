@@ -278,6 +278,7 @@ pub fn integrate(
             workspace.step(system, t, dt, y);
         }
         t = (n + 1) as f64 * dt;
+        system.statistics.steps += 1;
         system.finish_step(t, y)?;
     }
     Ok(())

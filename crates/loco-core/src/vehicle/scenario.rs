@@ -9,7 +9,7 @@ use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
-use super::statics::static_equilibrium;
+use super::statics::{static_equilibrium, StaticsSettings};
 use super::structure::VehicleStructure;
 use super::track_limits::TrackLimits;
 use super::wheel_rail::{WheelRail, WheelRailSettings};
@@ -269,11 +269,12 @@ pub fn build_track(scenario: &Scenario, structure: &VehicleStructure) -> Result<
     }
 }
 
-/// A run's channels and metrics.
+/// A run's channels, metrics and cost.
 #[derive(Debug, Clone)]
 pub struct SimulationResult {
     pub output: RunOutput,
     pub metrics: crate::metrics::RunMetrics,
+    pub statistics: super::run_statistics::RunStatistics,
 }
 
 /// Simulates a scenario with prepared contact and track (batches share them across samples).
@@ -284,6 +285,7 @@ pub fn simulate_prepared(
     scenario: &Scenario,
     cancel: Option<&AtomicBool>,
 ) -> Result<SimulationResult> {
+    let started = std::time::Instant::now();
     scenario.validate()?;
     TrackLimits::of(&wheel_rail).check(&track)?;
     let start = start_distance(&structure);
@@ -297,7 +299,7 @@ pub fn simulate_prepared(
         scenario.yaw_damper.as_ref(),
         scenario.run.step,
     )?;
-    let mut y = static_equilibrium(&mut system)?;
+    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;
     if scenario.initial_lateral_offset != 0.0 {
         // On the rails: rise and roll follow the contact table, as in the critical-speed ramp.
         super::critical_speed::disturb(&system, &mut y, scenario.initial_lateral_offset);
@@ -310,7 +312,13 @@ pub fn simulate_prepared(
     let output = run(&mut system, &mut y, &settings, cancel)?;
     let metrics =
         super::run_metrics::run_metrics_or_undefined(&output, scenario.speed, bogie_mass)?;
-    Ok(SimulationResult { output, metrics })
+    let mut statistics = system.statistics;
+    statistics.wall_time = started.elapsed().as_secs_f64();
+    Ok(SimulationResult {
+        output,
+        metrics,
+        statistics,
+    })
 }
 
 /// A vehicle with its scenario's contact on perfect track, built once for analyses that need

@@ -19,8 +19,9 @@ use super::layout::{
     coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF, N_WHEELSETS, X,
     Y,
 };
+use super::run_statistics::RunStatistics;
 use super::structure::VehicleStructure;
-use super::wheel_rail::{WheelForces, WheelRail};
+use super::wheel_rail::{ContactMode, WheelForces, WheelRail};
 use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
 use crate::error::{LocoError, Result};
 use crate::track::{RailIrregularity, TrackIrregularity};
@@ -123,8 +124,8 @@ pub struct VehicleSystem {
     pub speed: SpeedProfile,
     /// Track distance of the vehicle origin at t = 0, m.
     pub start_distance: f64,
-    /// Tangential contact stiffness (N/m) used instead of creep in the static search; 0 in runs.
-    pub static_stiffness: f64,
+    /// Creep while running, or the patches held in the static search.
+    pub contact_mode: ContactMode,
     /// Rail irregularities each wheelset sees in place of the track look-up (`None` in runs): the
     /// track as an input of the linearisation ([`super::track_input`]).
     pub rail_inputs: Option<[RailIrregularity; N_WHEELSETS]>,
@@ -132,6 +133,8 @@ pub struct VehicleSystem {
     n_states: usize,
     /// First error met inside a right-hand side (reported after the step).
     pub error: Option<LocoError>,
+    /// Work done so far (evaluations, steps, Newton iterations; wall time is the caller's).
+    pub statistics: RunStatistics,
     // Workspaces (no allocation in the time loop).
     pub(crate) body_states: BodyStates,
     wrenches: Wrenches,
@@ -176,10 +179,11 @@ impl VehicleSystem {
             track,
             speed: SpeedProfile::Constant(speed),
             start_distance,
-            static_stiffness: 0.0,
+            contact_mode: ContactMode::Rolling,
             rail_inputs: None,
             n_states: offset,
             error: None,
+            statistics: RunStatistics::default(),
             body_states: BodyStates::default(),
             wrenches: [[0.0; 6]; N_BODIES],
             gen_force: vec![0.0; N_DOF],
@@ -208,6 +212,7 @@ impl VehicleSystem {
     /// Generalized forces `Q(q, q̇)` (N, N·m) at time `t` with damper states from `y`; also fills
     /// the body states, wheel forces and damper forces, and the damper state rates into `dy`.
     fn forces(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.statistics.rhs_evaluations += 1;
         let (q, rest) = y.split_at(N_DOF);
         let qd = &rest[..N_DOF];
         self.structure.body_states(q, qd, &mut self.body_states);
@@ -216,7 +221,7 @@ impl VehicleSystem {
         self.structure
             .add_structural_forces(&self.body_states, speed, &mut self.wrenches);
         // Dampers carry no static force: the static search leaves them out.
-        let statics = self.static_stiffness > 0.0;
+        let statics = matches!(self.contact_mode, ContactMode::Held { .. });
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
             let n = damper.n_states();
@@ -241,7 +246,7 @@ impl VehicleSystem {
                 &self.body_states,
                 &rails,
                 speed,
-                self.static_stiffness,
+                self.contact_mode,
                 &mut self.wrenches,
                 &mut self.wheel_forces[w],
             );
@@ -344,7 +349,7 @@ impl OdeSystem for VehicleSystem {
         self.structure
             .body_states(q, &rest[..N_DOF], &mut self.body_states);
         // Dampers carry no static force: the static search leaves them out.
-        let statics = self.static_stiffness > 0.0;
+        let statics = matches!(self.contact_mode, ContactMode::Held { .. });
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
             let (x, v) = damper.stroke(&self.body_states);
             let o = damper.state_offset;

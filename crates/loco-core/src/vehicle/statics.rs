@@ -2,19 +2,84 @@
 //!
 //! Newton's method on `Q(q, q̇ = 0) = 0` with a finite-difference Jacobian and a backtracking line
 //! search. Nothing rolls in the static state, so creep forces are replaced by a tangential contact
-//! stiffness that holds each wheel where it stands (patches do not slide), which also fixes the
-//! otherwise free longitudinal position of the vehicle. The equilibrium is that on perfect track
-//! (runs start before the irregularities' run-in). Dampers carry no static force: their
-//! elongation in equilibrium becomes their reference.
+//! stiffness that holds each wheel where it stands (patches do not slide, [`ContactMode::Held`]),
+//! which also fixes the otherwise free longitudinal position of the vehicle. The equilibrium is
+//! that on perfect track (runs start before the irregularities' run-in). Dampers carry no static
+//! force: their elongation in equilibrium becomes their reference. A search that does not
+//! converge is a [`LocoError::Equilibrium`] with its iterations and residual.
 
-use super::layout::{body_wheelset, wheelset, N_DOF, N_WHEELSETS, Z};
-use super::linalg::Lu;
+use super::layout::{wheelset, N_DOF, N_WHEELSETS, Z};
 use super::simulation::VehicleSystem;
-use crate::error::{LocoError, Result};
+use super::wheel_rail::ContactMode;
+use crate::error::{check_positive, LocoError, Result};
+use nalgebra::{DMatrix, DVector};
 
-/// Tangential contact stiffness used in the static search, N/m: of the order of Mindlin's
-/// tangential stiffness of a loaded wheel-rail patch (8·G·a/(2−ν) ≈ 1e8–1e9 N/m for a ≈ 6 mm).
-pub const STATIC_TANGENTIAL_STIFFNESS: f64 = 1e8;
+/// Settings of the static-equilibrium search. [`Default`] gives the values every run uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StaticsSettings {
+    /// Converged when the norm of the residual generalized forces is below this fraction of the
+    /// vehicle's weight (–). Default 1e-8: about 8 mN on the 0.85 MN locomotive.
+    pub tolerance: f64,
+    /// Most Newton iterations before the search fails (a handful is typical). Default 50.
+    pub max_iterations: usize,
+    /// Smallest fraction of the Newton step the backtracking line search tries (halving from
+    /// 1) before it accepts the step anyway (–). Default 1e-4.
+    pub line_search_floor: f64,
+    /// Forward-difference step of the Jacobian, m or rad. Default 1e-7: small against the
+    /// 0.1 mm contact table grid, large against round-off in forces of ~1e5 N.
+    pub difference_step: f64,
+    /// Tangential contact stiffness holding each patch, N/m. Default 1e8: of the order of
+    /// Mindlin's tangential stiffness of a loaded wheel-rail patch (8·G·a/(2−ν) ≈ 1e8–1e9 N/m for
+    /// a ≈ 6 mm).
+    pub tangential_stiffness: f64,
+}
+
+impl Default for StaticsSettings {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-8,
+            max_iterations: 50,
+            line_search_floor: 1e-4,
+            difference_step: 1e-7,
+            tangential_stiffness: 1e8,
+        }
+    }
+}
+
+impl StaticsSettings {
+    /// Checks every setting; the error names the field.
+    pub fn validate(&self) -> Result<()> {
+        check_positive("statics.tolerance", self.tolerance)?;
+        check_positive("statics.line_search_floor", self.line_search_floor)?;
+        check_positive("statics.difference_step", self.difference_step)?;
+        check_positive("statics.tangential_stiffness", self.tangential_stiffness)?;
+        if self.max_iterations == 0 || self.line_search_floor >= 1.0 {
+            return Err(LocoError::param(
+                "statics",
+                "max_iterations must be >= 1 and line_search_floor < 1",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The contact mode of the search.
+    pub fn contact_mode(&self) -> ContactMode {
+        ContactMode::Held {
+            tangential_stiffness: self.tangential_stiffness,
+        }
+    }
+}
+
+/// A static equilibrium and how it was found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Equilibrium {
+    /// Initial state vector of a run: coordinates at equilibrium, velocities and damper states 0.
+    pub state: Vec<f64>,
+    /// Newton iterations taken.
+    pub iterations: usize,
+    /// Norm of the residual generalized forces at the equilibrium, N (and N·m).
+    pub residual: f64,
+}
 
 /// Initial guess of a wheel's static penetration into the rail, m (Hertz, ≈ 100 kN per wheel).
 const PENETRATION_GUESS: f64 = 1e-4;
@@ -25,45 +90,72 @@ fn residual(system: &mut VehicleSystem, q: &[f64], y: &mut [f64], out: &mut [f64
     out.iter().map(|v| v * v).sum::<f64>().sqrt()
 }
 
-/// Finds the static equilibrium and returns the initial state vector of a run (coordinates at
-/// equilibrium, velocities zero, damper states zero); sets the dampers' static elongations.
-pub fn static_equilibrium(system: &mut VehicleSystem) -> Result<Vec<f64>> {
+/// Solves `J d = r` by LU with partial pivoting; a pivot below 1e-14 of the largest entry means a
+/// body or coordinate the contact and suspension leave unrestrained.
+fn newton_step(jacobian: DMatrix<f64>, r: &[f64]) -> Result<Vec<f64>> {
+    let scale = jacobian.amax();
+    let lu = jacobian.lu();
+    let pivots = lu.u().diagonal();
+    if let Some(k) = pivots
+        .iter()
+        .position(|p| p.is_nan() || p.abs() <= 1e-14 * scale)
+    {
+        return Err(LocoError::input(
+            "static equilibrium Jacobian",
+            format!("matrix is singular (column {k}): a body or coordinate is unrestrained"),
+        ));
+    }
+    let step = lu
+        .solve(&DVector::from_column_slice(r))
+        .ok_or_else(|| LocoError::input("static equilibrium Jacobian", "matrix is singular"))?;
+    Ok(step.as_slice().to_vec())
+}
+
+/// Finds the static equilibrium with `settings`; sets the dampers' static elongations and the
+/// system's Newton iteration count ([`super::run_statistics::RunStatistics`]).
+pub fn static_equilibrium(
+    system: &mut VehicleSystem,
+    settings: &StaticsSettings,
+) -> Result<Equilibrium> {
+    settings.validate()?;
     let n = system.len_states();
     let mut y = vec![0.0; n];
     let mut q = vec![0.0; N_DOF];
     for w in 0..N_WHEELSETS {
         q[wheelset(w) + Z] = -PENETRATION_GUESS;
     }
-    system.static_stiffness = STATIC_TANGENTIAL_STIFFNESS;
+    system.contact_mode = settings.contact_mode();
     let weight = system.structure.total_mass() * system.structure.gravity;
     let mut r = vec![0.0; N_DOF];
     let mut r_trial = vec![0.0; N_DOF];
     let mut norm = residual(system, &q, &mut y, &mut r);
+    let h = settings.difference_step;
 
-    let mut converged = false;
-    for _iteration in 0..50 {
-        if norm < 1e-8 * weight {
-            converged = true;
-            break;
-        }
-        let mut jac = vec![0.0; N_DOF * N_DOF];
+    let mut iterations = 0;
+    let mut converged = norm < settings.tolerance * weight;
+    while !converged && iterations < settings.max_iterations {
+        let mut jac = DMatrix::zeros(N_DOF, N_DOF);
         let mut q_pert = q.clone();
         for j in 0..N_DOF {
-            let h = 1e-7;
             q_pert[j] = q[j] + h;
             residual(system, &q_pert, &mut y, &mut r_trial);
             q_pert[j] = q[j];
             for i in 0..N_DOF {
-                jac[i * N_DOF + j] = (r_trial[i] - r[i]) / h;
+                jac[(i, j)] = (r_trial[i] - r[i]) / h;
             }
         }
-        let lu = Lu::new(jac, N_DOF, "static equilibrium Jacobian")?;
-        let step = lu.solve(&r);
+        let step = match newton_step(jac, &r) {
+            Ok(step) => step,
+            Err(e) => {
+                system.contact_mode = ContactMode::Rolling;
+                return Err(e);
+            }
+        };
         let mut alpha = 1.0;
         loop {
             let trial: Vec<f64> = q.iter().zip(&step).map(|(a, d)| a - alpha * d).collect();
             let trial_norm = residual(system, &trial, &mut y, &mut r_trial);
-            if trial_norm < norm || alpha < 1e-4 {
+            if trial_norm < norm || alpha < settings.line_search_floor {
                 q = trial;
                 norm = trial_norm;
                 std::mem::swap(&mut r, &mut r_trial);
@@ -71,14 +163,18 @@ pub fn static_equilibrium(system: &mut VehicleSystem) -> Result<Vec<f64>> {
             }
             alpha *= 0.5;
         }
+        iterations += 1;
+        converged = norm < settings.tolerance * weight;
     }
-    system.static_stiffness = 0.0;
+    system.contact_mode = ContactMode::Rolling;
+    system.statistics.newton_iterations += iterations as u64;
     if !converged {
-        return Err(LocoError::Diverged {
-            time: 0.0,
-            location: "static equilibrium".into(),
+        return Err(LocoError::Equilibrium {
+            iterations,
+            residual: norm,
             reason: format!(
-                "Newton search did not converge (residual {norm:.3e} N against weight {weight:.3e} N)"
+                "Newton search did not converge (tolerance {:.1e} of the weight {weight:.3e} N)",
+                settings.tolerance
             ),
         });
     }
@@ -97,6 +193,9 @@ pub fn static_equilibrium(system: &mut VehicleSystem) -> Result<Vec<f64>> {
         let (x, _) = damper.stroke(&system.body_states);
         damper.static_elongation = x;
     }
-    debug_assert!(body_wheelset(0) < system.body_states.position.len());
-    Ok(y)
+    Ok(Equilibrium {
+        state: y,
+        iterations,
+        residual: norm,
+    })
 }

@@ -18,7 +18,7 @@ use super::integrator::OdeSystem;
 use super::layout::N_WHEELSETS;
 use super::run::{names_of, probes, sample};
 use super::simulation::VehicleSystem;
-use super::statics::static_equilibrium;
+use super::statics::{static_equilibrium, StaticsSettings};
 use crate::error::Result;
 use crate::track::RailIrregularity;
 
@@ -83,7 +83,7 @@ fn evaluate(
 /// Linearises `system` about its static equilibrium at its (constant) speed with the rails as
 /// inputs. The system's own track is not read.
 pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> {
-    let y0 = static_equilibrium(system)?;
+    let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
     let probes = probes(&system.structure)?;
     let outputs = names_of(&system.structure, &probes);
     let (n, m, p) = (system.dimension(), outputs.len(), N_WHEELSETS * RAIL_INPUTS);

@@ -57,6 +57,18 @@ pub struct WheelRailSettings {
     pub contact_half_distance: f64,
 }
 
+/// How the tangential contact forces are found: by creep while running, or held in the static
+/// equilibrium search (set by [`super::statics::StaticsSettings`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum ContactMode {
+    /// Running: creep forces (FASTSIM).
+    #[default]
+    Rolling,
+    /// Static search: nothing rolls; each patch is held by a tangential spring of
+    /// `tangential_stiffness` (N/m) and the brakes hold the spin.
+    Held { tangential_stiffness: f64 },
+}
+
 /// Forces at one wheel, for outputs (track frame, on the wheel).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct WheelForces {
@@ -147,7 +159,7 @@ impl WheelRail {
 
     /// Adds the wheel-rail forces on wheelset `w` at time `t` (s, for error messages) to
     /// `wrenches`; `rails` are the irregularities at the wheelset's position, `speed` is V (m/s).
-    /// `static_stiffness` > 0 replaces the creep forces by a tangential spring (N/m) at each
+    /// [`ContactMode::Held`] replaces the creep forces by a tangential spring (N/m) at each
     /// contact and a brake on the spin, holding the wheels in the static equilibrium search.
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
@@ -157,7 +169,7 @@ impl WheelRail {
         states: &BodyStates,
         rails: &RailIrregularity,
         speed: f64,
-        static_stiffness: f64,
+        mode: ContactMode,
         wrenches: &mut Wrenches,
         out: &mut [WheelForces; 2],
     ) -> Result<()> {
@@ -175,7 +187,10 @@ impl WheelRail {
             velocity: [speed + v[0], v[1], v[2]],
             angular_velocity: angular,
         };
-        if static_stiffness > 0.0 {
+        if let ContactMode::Held {
+            tangential_stiffness: static_stiffness,
+        } = mode
+        {
             // Static search: the brakes hold the spin, otherwise the vehicle could roll away.
             let r0 = self.centred_radius;
             wrenches[body][PITCH] -= static_stiffness * r0 * r0 * u[PITCH];
@@ -245,7 +260,10 @@ impl WheelRail {
                 if normal == 0.0 {
                     continue;
                 }
-                let tangential = if static_stiffness > 0.0 {
+                let tangential = if let ContactMode::Held {
+                    tangential_stiffness: static_stiffness,
+                } = mode
+                {
                     // Static search: contact patches do not slide; displacement of the wheel
                     // surface at the contact (x − r·β, y + r·φ_el, in the rails' plane) against
                     // a tangential spring.
