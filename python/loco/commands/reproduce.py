@@ -3,13 +3,16 @@
 Stages (each in ``<out>/<stage>/``, resumable by :class:`loco.studies.stages.StageRunner`: a
 stage finished with the same settings is skipped on a rerun, ``--force`` runs it again):
 
-1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h.
+1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h;
+   each point the mean and 95 % interval over ``n_tracks`` synthesised tracks.
 2. ``monte_carlo``: Latin hypercube over the six parameters, W_y (S_low) and A_yb (S_high).
-3. ``surrogate``: RBF network, k-fold held-out R², parity plots.
+3. ``surrogate``: k-fold held-out R² of the SPEC RBF network, a larger RBF network and a
+   Gaussian process; the best is the surrogate of stages 4 and 5; parity plots.
 4. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
 5. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
 6. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
-7. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h.
+7. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
+   (the same for every damper), with paired tests of whether each ranking is significant.
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
 

@@ -5,7 +5,11 @@
 - :mod:`loco.studies.evaluators`: the ``evaluate(params, names) -> metrics`` protocol every study
   takes, and the simulator evaluator (``loco.run_batch``).
 - :mod:`loco.studies.sensitivity`: Sobol' indices, direct and on a surrogate; convergence.
-- :mod:`loco.studies.surrogate`: the RBF neural network, cross-validated R², parity plot.
+- :mod:`loco.studies.surrogate`: the RBF neural network, cross-validated R², parity plot;
+  :mod:`loco.studies.surrogate_reference`: the Gaussian process; :mod:`loco.studies.
+  surrogate_selection`: the surrogate the optimisation uses, chosen by cross-validation.
+- :mod:`loco.studies.seeds`: one case on several synthesised tracks (one batch, tracks as
+  samples); :mod:`loco.studies.statistics`: means, 95 % intervals, paired tests, rankings.
 - :mod:`loco.studies.optimisation`: NSGA-II Pareto front, spread of points, re-simulation.
 - :mod:`loco.studies.report`: study records, CSV/JSON output, the Markdown report.
 - :mod:`loco.studies.stages`: resumable stages (skipped when finished with the same settings).
@@ -32,8 +36,12 @@ __all__ = [
     "parameters",
     "report",
     "sampling",
+    "seeds",
     "sensitivity",
     "speed_sweep",
     "stages",
+    "statistics",
     "surrogate",
+    "surrogate_reference",
+    "surrogate_selection",
 ]

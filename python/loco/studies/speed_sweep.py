@@ -380,7 +380,7 @@ def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
         ax.legend()
     fig.suptitle(
         f"Speed sweep (loco {loco.__version__}): mean and 95 % interval over {sweep.n_tracks} "
-        "tracks; × = a failed run or too short a record"
+        "tracks; × = the run failed on a track (the mean is that of the others)"
     )
     return save_figure(fig, path)
 

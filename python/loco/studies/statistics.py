@@ -24,7 +24,8 @@ Ranking (:func:`rank`): the dampers are ordered by mean (lower is better), the t
 t-test p values of a scenario are adjusted by Holm's step-down method (Holm 1979, Scand. J.
 Statist. 6:65-70; it controls the family-wise error without assuming independence), and the
 ranking is called significant when every neighbouring pair of the order differs at
-:data:`ALPHA` after the adjustment.
+:data:`ALPHA` after the adjustment, partly significant when some do (the report marks each step
+``<`` when it is significant and ``≈`` when it is not).
 """
 
 from __future__ import annotations
@@ -192,7 +193,14 @@ class Ranking:
         for a, b in zip(self.order, self.order[1:], strict=False):
             t = self.test(a, b)
             parts.append(f"{'<' if t.significant else '≈'} {b}")
-        verdict = "significant" if self.significant else "not significant"
+        steps = [
+            self.test(a, b).significant for a, b in zip(self.order, self.order[1:], strict=False)
+        ]
+        verdict = (
+            "significant"
+            if self.significant
+            else ("partly significant" if any(steps) else "not significant")
+        )
         pairs = "; ".join(
             f"{t.a}/{t.b} ratio {t.ratio:.2f} [{t.ratio_low:.2f}, {t.ratio_high:.2f}], "
             f"Holm p {t.p_holm:.3g}"
