@@ -35,7 +35,13 @@ from typing import Any
 import loco
 from loco import dampers
 from loco.commands import damper_bench
-from loco.studies import fsd_comparison, parameter_stages, parameter_study, speed_sweep
+from loco.studies import (
+    fsd_comparison,
+    parameter_stages,
+    parameter_study,
+    speed_sweep,
+    surrogate_validation,
+)
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import StageRunner
 from loco.studies.surrogate_selection import Selection, selection_settings
@@ -257,13 +263,13 @@ def reproduce(
     def lhs_and_models() -> Fitted:
         if not fitted_models:
             x, y = parameter_study.load_monte_carlo(mc_csv)
-            chosen = parameter_study.select_surrogates(x, y, n_splits=sizes.kfold, seed=seed)
+            chosen = surrogate_validation.select_surrogates(x, y, n_splits=sizes.kfold, seed=seed)
             fitted_models.append((x, y, chosen))
         return fitted_models[0]
 
     def surrogate(d: Path) -> StudyRecord:
         x, y, chosen = lhs_and_models()
-        return parameter_study.validate_surrogate(
+        return surrogate_validation.validate_surrogate(
             x, y, d, n_splits=sizes.kfold, seed=seed, selections=chosen
         )
 
@@ -278,7 +284,7 @@ def reproduce(
             surrogate_base=sizes.surrogate_base,
             seed=seed,
             models=[c.model for c in chosen],
-            surrogate_name=parameter_study.surrogate_label(chosen),
+            surrogate_name=surrogate_validation.surrogate_label(chosen),
         )
 
     def optimisation(d: Path) -> StudyRecord:
@@ -293,7 +299,7 @@ def reproduce(
             n_verify=sizes.n_verify,
             seed=seed,
             models=[c.model for c in chosen],
-            surrogate_name=parameter_study.surrogate_label(chosen),
+            surrogate_name=surrogate_validation.surrogate_label(chosen),
         )
 
     def fsd(d: Path) -> StudyRecord:

@@ -16,10 +16,13 @@
 
 The studies of SPEC §6, each writing its figures, tables and report record:
 
-- :mod:`loco.studies.speed_sweep`: W_y and A_yb against speed, PSDs at 200 km/h (§6.1).
-- :mod:`loco.studies.parameter_study`: objectives, Latin hypercube Monte Carlo, surrogate R²
-  (§6.2-6.3); :mod:`loco.studies.parameter_stages`: Sobol' indices and NSGA-II (§6.2, §6.4).
-- :mod:`loco.studies.fsd_comparison`: YD1, YD2 and FSD on S_low and S_high (§6.6).
+- :mod:`loco.studies.speed_sweep`: W_y and A_yb against speed, PSDs at 200 km/h (§6.1); its
+  figures in :mod:`loco.studies.speed_sweep_figures`.
+- :mod:`loco.studies.parameter_study`: objectives, Latin hypercube Monte Carlo (§6.2);
+  :mod:`loco.studies.surrogate_validation`: surrogate R² and the surrogate used (§6.3);
+  :mod:`loco.studies.parameter_stages`: Sobol' indices and NSGA-II (§6.2, §6.4).
+- :mod:`loco.studies.fsd_comparison`: YD1, YD2 and FSD on S_low and S_high (§6.6); its
+  figures in :mod:`loco.studies.fsd_figures`.
 
 ``loco reproduce`` (:mod:`loco.commands.reproduce`) runs them all.
 
@@ -30,6 +33,7 @@ scikit-learn load only when a study needs them.
 __all__ = [
     "evaluators",
     "fsd_comparison",
+    "fsd_figures",
     "optimisation",
     "parameter_stages",
     "parameter_study",
@@ -39,9 +43,11 @@ __all__ = [
     "seeds",
     "sensitivity",
     "speed_sweep",
+    "speed_sweep_figures",
     "stages",
     "statistics",
     "surrogate",
     "surrogate_reference",
     "surrogate_selection",
+    "surrogate_validation",
 ]

@@ -27,7 +27,7 @@ import pandas as pd
 
 import loco
 from loco import dampers
-from loco.studies.plotting import Spectrum, draw_intervals, draw_spectra, pyplot, save_figure
+from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
 from loco.studies.speed_sweep import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
@@ -38,10 +38,6 @@ __all__ = [
     "DAMPERS",
     "JUDGED_BY",
     "FsdComparison",
-    "plot_peaks",
-    "plot_psds",
-    "plot_time_histories",
-    "plot_valves",
     "run_fsd_comparison",
     "save_fsd_comparison",
 ]
@@ -58,18 +54,19 @@ VALVE_SUFFIX = "_valve"
 
 #: Metric by which each scenario judges a yaw damper (SPEC §5): W_y on S_low, A_yb on S_high.
 JUDGED_BY: dict[str, str] = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
-#: Per-track columns of the comparison's table (the core's run metrics but the valve fraction,
-#: computed from the valve channels): (column, metric of the case's quantity or None for the
-#: run metric of the same name).
+#: Fraction of the record the valves were closed (from the valve channels, not a core metric).
+VALVE_FRACTION = "valve_closed_fraction"
+#: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
+#: core's run metrics of the case's quantity (:data:`RMS_METRICS`, :data:`PEAK_METRICS`), then two
+#: run metrics under their own names and the valve fraction (:meth:`FsdComparison.values`).
 SUMMARY_COLUMNS: tuple[str, ...] = (
     "rms",
     "dominant_hz",
     "psd_peak",
     "wy_max",
     "ayb_peak_lp",
-    "valve_closed_fraction",
+    VALVE_FRACTION,
 )
-VALVE_FRACTION = "valve_closed_fraction"
 
 
 @dataclass(frozen=True)
@@ -193,26 +190,7 @@ class FsdComparison:
         """Every pairwise test of :meth:`rankings`: scenario, metric, pair, geometric-mean ratio
         with its 95 % interval, p values (t, Holm-adjusted, Wilcoxon), significance, and the
         ranking and whether it is significant."""
-        rows = []
-        for r in self.rankings():
-            for t in r.tests:
-                rows.append({
-                    "scenario": r.label,
-                    "metric": r.metric,
-                    "a": t.a,
-                    "b": t.b,
-                    "n_tracks": t.n,
-                    "ratio_a_b": t.ratio,
-                    "ratio_low": t.ratio_low,
-                    "ratio_high": t.ratio_high,
-                    "p_t": t.p_t,
-                    "p_holm": t.p_holm,
-                    "p_wilcoxon": t.p_wilcoxon,
-                    "differ": t.significant,
-                    "ranking": " < ".join(r.order),
-                    "ranking_significant": r.significant,
-                })  # fmt: skip
-        return pd.DataFrame(rows)
+        return pd.DataFrame([row for r in self.rankings() for row in r.rows()])
 
 
 def valve_channels(result: loco.SimulationResult) -> list[str]:
@@ -340,114 +318,6 @@ def run_fsd_comparison(
     )
 
 
-def plot_time_histories(cmp: FsdComparison, path: str | Path) -> Path:
-    """Save A_yc (S_low) and A_yb (S_high) against time, one panel per damper, as PNG."""
-    plt = pyplot()
-    fig, axes = plt.subplots(
-        len(CASES),
-        len(cmp.dampers),
-        figsize=(4 * len(cmp.dampers), 6.5),
-        sharex=True,
-        sharey="row",
-        squeeze=False,
-        layout="constrained",
-    )
-    for r, (scenario, label, channel) in enumerate(CASES):
-        for c, name in enumerate(cmp.dampers):
-            ax = axes[r, c]
-            result = cmp.results.get((scenario, name))
-            if result is None:
-                ax.text(0.5, 0.5, "run failed", ha="center", transform=ax.transAxes)
-            else:
-                ax.plot(result.time, result.channel(channel), lw=0.5, color=f"C{c}")
-            ax.set_title(f"{label}, {scenario}, {name}")
-            ax.grid(True, alpha=0.3)
-            if c == 0:
-                ax.set_ylabel(f"{label} (m/s²)")
-            if r == len(CASES) - 1:
-                ax.set_xlabel("time (s)")
-    fig.suptitle(f"{cmp.settings.get('speed_kmh', 0.0):g} km/h, track 0 (loco {loco.__version__})")
-    return save_figure(fig, path)
-
-
-def plot_psds(cmp: FsdComparison, path: str | Path, *, fmax: float = 20.0) -> Path:
-    """Save the PSDs of A_yc (S_low) and A_yb (S_high), dampers overlaid, as PNG (0 to ``fmax``
-    Hz)."""
-    plt = pyplot()
-    spectra = cmp.spectra()
-    fig, axes = plt.subplots(1, len(CASES), figsize=(11, 4), layout="constrained")
-    for ax, (scenario, label, channel) in zip(axes, CASES, strict=True):
-        lines = {name: spectra.get((scenario, name)) for name in cmp.dampers}
-        draw_spectra(ax, lines, label, f"{label} ({channel}), {scenario}", fmax)
-    fig.suptitle(f"Mean over {cmp.n_tracks} tracks of the per-track PSDs; legend: track means")
-    return save_figure(fig, path)
-
-
-def plot_valves(cmp: FsdComparison, path: str | Path, *, damper: str = "FSD") -> Path:
-    """Save the valve state (0 open … 1 closed) of every yaw damper of the ``damper`` runs on
-    each scenario against time, one row per yaw damper, as PNG."""
-    plt = pyplot()
-    runs = [(s, cmp.results.get((s, damper))) for s, _, _ in CASES]
-    names = next((valve_channels(r) for _, r in runs if r is not None), [])
-    fig, axes = plt.subplots(
-        max(1, len(names)),
-        len(runs),
-        figsize=(11, 1.3 * len(names) + 1.5),
-        sharex=True,
-        squeeze=False,
-        layout="constrained",
-    )
-    for c, (scenario, result) in enumerate(runs):
-        for r, channel in enumerate(names):
-            ax = axes[r, c]
-            if result is not None:
-                ax.fill_between(result.time, result.channel(channel), step="mid", alpha=0.6)
-            ax.set_ylim(-0.1, 1.1)
-            ax.set_yticks([0, 1], ["open", "closed"])
-            ax.set_title(f"{scenario}: {channel.removesuffix(VALVE_SUFFIX)}", fontsize=9)
-        axes[-1, c].set_xlabel("time (s)")
-    fig.suptitle(
-        f"{damper} frequency valve state on track 0 (0 open: low damping; 1 closed: high damping)"
-    )
-    return save_figure(fig, path)
-
-
-def plot_peaks(cmp: FsdComparison, path: str | Path) -> Path:
-    """Save, per scenario, the PSD peak of its quantity and the metric that judges it
-    (:data:`JUDGED_BY`) for every damper as PNG: every track, the mean and its 95 % interval."""
-    plt = pyplot()
-    fig, axes = plt.subplots(2, len(CASES), figsize=(11, 7), squeeze=False, layout="constrained")
-    for c, (scenario, label, _) in enumerate(CASES):
-        for r, (column, ylabel) in enumerate(
-            (("psd_peak", f"PSD peak of {label} ((m/s²)²/Hz)"),
-             (JUDGED_BY[scenario], JUDGED_BY[scenario]))
-        ):  # fmt: skip
-            groups = {d: cmp.values(scenario, d, column) for d in cmp.dampers}
-            draw_intervals(axes[r, c], groups, ylabel, f"{scenario}: {ylabel.split(' (')[0]}")
-    fig.suptitle(
-        f"Yaw dampers over {cmp.n_tracks} tracks (the same for every damper): mean and 95 % "
-        "interval"
-    )
-    return save_figure(fig, path)
-
-
-def _histories_frame(cmp: FsdComparison) -> pd.DataFrame:
-    """Wide table on the common time axis: each case's quantity per damper, the valve channels."""
-    columns: dict[str, Any] = {}
-    for scenario, label, channel in CASES:
-        for name in cmp.dampers:
-            result = cmp.results.get((scenario, name))
-            if result is None:
-                continue
-            columns.setdefault("time_s", result.time)
-            columns[f"{scenario}_{name}_{label}"] = result.channel(channel)
-            if cmp.has_valve(name):
-                for v in valve_channels(result):
-                    columns[f"{scenario}_{name}_{v}"] = result.channel(v)
-    length = min((len(v) for v in columns.values()), default=0)
-    return pd.DataFrame({k: np.asarray(v)[:length] for k, v in columns.items()})
-
-
 def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     """Write figures, tables and settings into ``out_dir``; return the record.
 
@@ -457,6 +327,14 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     ``fsd_rankings.csv`` (the paired tests), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
     ``fsd_comparison.json`` (loco version and settings).
     """
+    from loco.studies.fsd_figures import (
+        histories_frame,
+        plot_peaks,
+        plot_psds,
+        plot_time_histories,
+        plot_valves,
+    )
+
     start = time.perf_counter()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -480,7 +358,7 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         save_table(
             pd.concat(psd, ignore_index=True) if psd else pd.DataFrame(), out / "fsd_psd.csv"
         ),
-        save_table(_histories_frame(cmp), out / "fsd_time_histories.csv"),
+        save_table(histories_frame(cmp), out / "fsd_time_histories.csv"),
         save_json(cmp.settings, out / "fsd_comparison.json"),
     ]
     lead_in = cmp.settings.get("lead_in_m", 0.0)

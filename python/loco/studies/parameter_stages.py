@@ -89,7 +89,8 @@ def run_sensitivity(
         The surrogates learn log(objective) (:data:`loco.studies.parameter_study.LOG_TARGET`).
     models : sequence of Predictor, optional
         The surrogates fitted on ``(x_lhs, y_lhs)`` with ``log_target``, one per objective: the
-        ones :func:`~loco.studies.parameter_study.select_surrogates` chose (``selection.model``)
+        ones :func:`~loco.studies.surrogate_validation.select_surrogates` chose
+        (``selection.model``)
         or the SPEC networks of :func:`~loco.studies.parameter_study.fit_surrogates` (the
         default, fitted here).
     surrogate_name : str

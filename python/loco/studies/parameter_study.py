@@ -1,5 +1,6 @@
 """The parameter study of SPEC §6.2–6.3 on the simulator: its objectives, the Latin hypercube
-Monte Carlo and the cross-validated RBF surrogate.
+Monte Carlo, and the SPEC RBF surrogates (their validation and the choice of the surrogate the
+Sobol' and NSGA-II stages use are in :mod:`loco.studies.surrogate_validation`).
 
 Objectives (:data:`OBJECTIVES`): the Sperling lateral index W_y on S_low (metric ``wy_max``: the
 low-conicity ride, carbody sway) and the bogie frame lateral acceleration A_yb on S_high (metric
@@ -8,7 +9,8 @@ distance on one synthesised track. The yaw damper is the vehicle file's Maxwell 
 damping and series stiffness are the study parameters C_sx and K_ncsx (no ``yaw_damper`` law in
 the scenario, which would override them).
 
-The surrogates (:func:`fit_surrogates`, :func:`surrogate_objectives`) learn the logarithm of the
+The surrogates (:func:`fit_surrogates`, :func:`surrogate_objectives`,
+:func:`loco.studies.surrogate_validation.select_surrogates`) learn the logarithm of the
 objectives (:data:`LOG_TARGET`). Sobol' indices and NSGA-II on top of these are in
 :mod:`loco.studies.parameter_stages`; every function here writes its figures (PNG) and numbers
 (CSV/JSON) into a directory and returns the
@@ -17,7 +19,6 @@ objectives (:data:`LOG_TARGET`). Sobol' indices and NSGA-II on top of these are 
 
 from __future__ import annotations
 
-import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -31,17 +32,13 @@ import loco
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study_units
 from loco.studies.plotting import pyplot, save_figure
-from loco.studies.report import StudyRecord, jsonable, save_json, save_table
+from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sampling import latin_hypercube
-from loco.studies.surrogate import Predictor, RBFNetwork, fit_per_output, parity_plot
-from loco.studies.surrogate import surrogate_evaluator as _surrogate_evaluator
-from loco.studies.surrogate_selection import (
-    DESCRIPTIONS,
-    R2_REQUIRED,
-    SPEC_MODEL,
-    Selection,
-    select_surrogate,
-    selection_settings,
+from loco.studies.surrogate import (
+    Predictor,
+    RBFNetwork,
+    fit_per_output,
+    surrogate_evaluator,
 )
 
 __all__ = [
@@ -52,10 +49,7 @@ __all__ = [
     "fit_surrogates",
     "load_monte_carlo",
     "run_monte_carlo",
-    "select_surrogates",
-    "surrogate_label",
     "surrogate_objectives",
-    "validate_surrogate",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -243,10 +237,11 @@ def fit_surrogates(
 def surrogate_objectives(
     models: Sequence[Predictor], *, log_target: bool = LOG_TARGET
 ) -> Evaluator:
-    """The fitted surrogates (SPEC networks or the ones :func:`select_surrogates` chose) as an
+    """The fitted surrogates (SPEC networks or the ones
+    :func:`loco.studies.surrogate_validation.select_surrogates` chose) as an
     evaluator of the objectives in their own units (the exponential
     of the networks' outputs with ``log_target``), for Sobol' indices and NSGA-II."""
-    inner = _surrogate_evaluator(models, names())
+    inner = surrogate_evaluator(models, names())
     if not log_target:
         return inner
 
@@ -262,145 +257,3 @@ def _to_target(y: FloatArray, log_target: bool) -> FloatArray:
     if np.any(y[np.isfinite(y)] <= 0):
         raise ValueError("log_target needs objectives > 0")
     return np.asarray(np.log(y), dtype=np.float64)
-
-
-def select_surrogates(
-    x: FloatArray,
-    y: FloatArray,
-    *,
-    n_splits: int = 5,
-    seed: int = 0,
-    log_target: bool = LOG_TARGET,
-) -> list[Selection]:
-    """For each objective (column of ``y``), on the samples where it is finite: every candidate
-    of :mod:`loco.studies.surrogate_selection` scored on the same ``n_splits`` folds, the best
-    refitted on all of them (``selection.model``, the surrogate Sobol' and NSGA-II use) and the
-    SPEC network (``selection.spec_model``)."""
-    out = []
-    for j in range(y.shape[1]):
-        ok = np.isfinite(y[:, j])
-        out.append(
-            select_surrogate(
-                x[ok], y[ok, j], bounds_si(), n_splits=n_splits, seed=seed, log_target=log_target
-            )
-        )
-    return out
-
-
-def surrogate_label(selections: Sequence[Selection]) -> str:
-    """Which surrogate each objective uses, e.g. ``W_y: gp, A_yb: gp``."""
-    return ", ".join(f"{o.label}: {s.chosen}" for o, s in zip(OBJECTIVES, selections, strict=True))
-
-
-def validate_surrogate(
-    x: FloatArray,
-    y: FloatArray,
-    out_dir: Path,
-    *,
-    n_splits: int = 5,
-    seed: int = 0,
-    log_target: bool = LOG_TARGET,
-    selections: Sequence[Selection] | None = None,
-) -> StudyRecord:
-    """k-fold held-out R² of the SPEC network (SPEC §6.3) and of the other surrogate candidates
-    for each objective, and which one the surrogate Sobol' indices and NSGA-II use
-    (:func:`select_surrogates`; pass its result as ``selections`` when already computed with the
-    same ``n_splits``, ``seed`` and ``log_target``). Failed samples (NaN) are left out of that
-    objective's folds. With ``log_target`` the models learn log(objective) and the R² is that of
-    their exponential against the objective itself (scikit-learn ``KFold`` shuffled with
-    ``seed``).
-
-    Writes ``surrogate_r2.csv`` (R² per model and fold), ``surrogate_selection.csv`` (mean and
-    worst-fold R² per model, hyperparameters, which was used), ``surrogate_predictions.csv``
-    (held-out prediction of every sample by every model), ``parity_<label>.png`` (the SPEC
-    network), ``parity_<label>_used.png`` (the model used) and ``surrogate.json``.
-    """
-    if selections is None:
-        selections = select_surrogates(x, y, n_splits=n_splits, seed=seed, log_target=log_target)
-    folds, predictions, rows, figures = [], [], [], []
-    summary: dict[str, dict[str, Any]] = {}
-    for j, (objective, sel) in enumerate(zip(OBJECTIVES, selections, strict=True)):
-        ok = np.isfinite(y[:, j])
-        frame = pd.DataFrame({"objective": objective.label, "sample": np.flatnonzero(ok),
-                              "simulated": y[ok, j]})  # fmt: skip
-        for kind, score in sel.scores.items():
-            folds.append(pd.DataFrame({"objective": objective.label, "model": kind,
-                                       "fold": np.arange(len(score.r2_folds)),
-                                       "r2": score.r2_folds}))  # fmt: skip
-            frame[f"predicted_{kind}"] = score.predictions
-            rows.append({
-                "objective": objective.label,
-                "model": kind,
-                "description": DESCRIPTIONS[kind],
-                "r2_mean": score.r2_mean,
-                "r2_min": score.r2_min,
-                "used": kind == sel.chosen,
-                "hyperparameters": json.dumps(jsonable(score.hyperparameters)),
-            })  # fmt: skip
-        predictions.append(frame)
-        for kind, suffix in ((SPEC_MODEL, ""), (sel.chosen, "_used")):
-            figures.append(
-                parity_plot(
-                    y[ok, j],
-                    sel.scores[kind].predictions,
-                    out_dir / f"parity_{objective.label}{suffix}.png",
-                    label=objective.label,
-                    unit=objective.unit,
-                    title=f"{kind} surrogate of {objective.label} ({objective.scenario}), "
-                    f"{n_splits}-fold held out" + (" (used)" if suffix else " (SPEC)"),
-                )
-            )
-        summary[objective.label] = {
-            "spec_r2_mean": sel.scores[SPEC_MODEL].r2_mean,
-            "spec_r2_min": sel.scores[SPEC_MODEL].r2_min,
-            "used": sel.chosen,
-            "used_r2_mean": sel.scores[sel.chosen].r2_mean,
-            "meets_r2_required": sel.meets_requirement,
-            "why": sel.reason(),
-            "r2_mean": {k: v.r2_mean for k, v in sel.scores.items()},
-            "n_samples": int(ok.sum()),
-        }
-    settings = {
-        "loco_version": loco.__version__,
-        "n_splits": n_splits,
-        "seed": seed,
-        "log_target": log_target,
-        **selection_settings(n_splits),
-        "r2": summary,
-    }
-    spec = ", ".join(
-        f"{k} {v['spec_r2_mean']:.3f} (worst fold {v['spec_r2_min']:.3f})"
-        for k, v in summary.items()
-    )
-    used = "; ".join(f"{k}: **{v['used']}**, because {v['why']}" for k, v in summary.items())
-    met = all(v["meets_r2_required"] for v in summary.values())
-    notes = (
-        f"SPEC network (10 Gaussian units) mean held-out R²: {spec} (SPEC §6.3 asks for > "
-        f"{R2_REQUIRED}). Candidates on the same folds (mean held-out R²): "
-        + "; ".join(
-            f"{k}: " + ", ".join(f"{m} {r:.3f}" for m, r in v["r2_mean"].items())
-            for k, v in summary.items()
-        )
-        + f". Surrogate used by the surrogate Sobol' indices and NSGA-II: {used}. "
-        + (
-            f"Both objectives reach R² ≥ {R2_REQUIRED}."
-            if met
-            else f"**Not every objective reaches R² ≥ {R2_REQUIRED}**: the Pareto front rests on a "
-            "surrogate below the required accuracy (see the re-simulated points)."
-        )
-    )
-    return StudyRecord(
-        name=out_dir.name,
-        title="Surrogates: held-out R² by k-fold cross-validation, and the one used (SPEC §6.3)",
-        figures=figures,
-        tables=[
-            save_table(pd.DataFrame(rows), out_dir / "surrogate_selection.csv"),
-            save_table(pd.concat(folds, ignore_index=True), out_dir / "surrogate_r2.csv"),
-            save_table(
-                pd.concat(predictions, ignore_index=True), out_dir / "surrogate_predictions.csv"
-            ),
-            save_json(settings, out_dir / "surrogate.json"),
-        ],
-        parameters={k: v for k, v in settings.items() if k != "r2"},
-        notes=notes,
-    )

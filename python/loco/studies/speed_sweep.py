@@ -32,7 +32,7 @@ import pandas as pd
 
 import loco
 from loco import _loco, dampers, metrics
-from loco.studies.plotting import Spectrum, draw_intervals, draw_spectra, pyplot, save_figure
+from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import run_over_tracks
 from loco.studies.statistics import Interval, mean_interval
@@ -46,9 +46,6 @@ __all__ = [
     "RMS_METRICS",
     "SCENARIOS",
     "SpeedSweep",
-    "plot_peaks",
-    "plot_psds",
-    "plot_sweep",
     "run_speed_sweep",
     "save_speed_sweep",
     "spectrum",
@@ -124,13 +121,14 @@ class SpeedSweep:
         """One metric, shape (scenarios, speeds, tracks)."""
         return np.asarray(self.metrics[..., self.metric_names.index(name)], dtype=np.float64)
 
-    def _speed_index(self, speed_kmh: float) -> int:
+    def speed_index(self, speed_kmh: float) -> int:
+        """Index of the sweep speed nearest ``speed_kmh`` (km/h)."""
         return int(np.abs(self.speeds_kmh - speed_kmh).argmin())
 
     def interval(self, scenario: str, metric: str, speed_kmh: float) -> Interval:
         """Mean and 95 % interval over the tracks of ``metric`` for ``scenario`` at the sweep
         speed nearest ``speed_kmh``."""
-        i, j = self.scenarios.index(scenario), self._speed_index(speed_kmh)
+        i, j = self.scenarios.index(scenario), self.speed_index(speed_kmh)
         return mean_interval(self.metric(metric)[i, j])
 
     def at(self, scenario: str, metric: str, speed_kmh: float) -> float:
@@ -346,73 +344,6 @@ def run_speed_sweep(
     )
 
 
-def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
-    """Save W_y and A_yb against speed as PNG: one line per scenario through the track means,
-    error bars the 95 % interval over the tracks, failed runs as × at the bottom."""
-    plt = pyplot()
-    fig, axes = plt.subplots(1, len(SWEEP_METRICS), figsize=(11, 4), layout="constrained")
-    for ax, (metric, label) in zip(axes, SWEEP_METRICS, strict=True):
-        for scenario in sweep.scenarios:
-            i = sweep.scenarios.index(scenario)
-            cis = [sweep.interval(scenario, metric, v) for v in sweep.speeds_kmh]
-            mean = np.array([c.mean for c in cis])
-            err = np.array([[c.mean - c.low, c.high - c.mean] for c in cis]).T
-            line = ax.errorbar(sweep.speeds_kmh, mean, yerr=np.nan_to_num(err), marker="o",
-                               ms=3, capsize=3, label=scenario)  # fmt: skip
-            failed = (sweep.status[i] != 0).any(axis=1) | ~np.isfinite(mean)
-            if failed.any():
-                ax.plot(
-                    sweep.speeds_kmh[failed],
-                    np.full(int(failed.sum()), 0.03),
-                    "x",
-                    color=line.lines[0].get_color(),
-                    ms=8,
-                    transform=ax.get_xaxis_transform(),
-                )
-        ax.axvline(sweep.psd_speed_kmh, color="0.7", lw=0.8, ls="--")
-        ax.set(
-            xlabel="speed (km/h)",
-            ylabel=label,
-            title=f"{label.split(' ')[0]}, {sweep.damper_label}",
-        )
-        ax.set_ylim(bottom=0.0)
-        ax.grid(True, alpha=0.3)
-        ax.legend()
-    fig.suptitle(
-        f"Speed sweep (loco {loco.__version__}): mean and 95 % interval over {sweep.n_tracks} "
-        "tracks; × = the run failed on a track (the mean is that of the others)"
-    )
-    return save_figure(fig, path)
-
-
-def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Path:
-    """Save the PSDs of A_yc and A_yb at ``psd_speed_kmh`` (one line per scenario) as PNG;
-    ``fmax`` is the upper frequency shown, Hz."""
-    channels = sweep.settings.get("channels", CHANNELS)
-    fig, axes = pyplot().subplots(1, len(channels), figsize=(11, 4), layout="constrained")
-    for ax, (label, channel) in zip(axes, channels.items(), strict=True):
-        lines = {sc: sweep.spectra.get((sc, label)) for sc in sweep.scenarios}
-        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}"
-        draw_spectra(ax, lines, label, title, fmax)
-    fig.suptitle(f"Mean over {sweep.n_tracks} tracks of the per-track PSDs; legend: track means")
-    return save_figure(fig, path)
-
-
-def plot_peaks(sweep: SpeedSweep, path: str | Path) -> Path:
-    """Save the PSD peaks of A_yc and A_yb at ``psd_speed_kmh`` per scenario as PNG: every
-    track, the mean and its 95 % interval."""
-    plt = pyplot()
-    fig, axes = plt.subplots(1, len(PEAK_METRICS), figsize=(11, 4), layout="constrained")
-    i = sweep._speed_index(sweep.psd_speed_kmh)
-    for ax, (label, (_, peak)) in zip(axes, PEAK_METRICS.items(), strict=True):
-        values = sweep.metric(peak)
-        groups = {s: values[k, i] for k, s in enumerate(sweep.scenarios)}
-        draw_intervals(ax, groups, f"PSD peak of {label} ((m/s²)²/Hz)",
-                       f"{label}, {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}")  # fmt: skip
-    fig.suptitle(f"PSD peaks over {sweep.n_tracks} tracks: mean and 95 % interval")
-    return save_figure(fig, path)
-
-
 def _ci(interval: Interval) -> str:
     return f"{interval.mean:.2f} [{interval.low:.2f}, {interval.high:.2f}]"
 
@@ -426,6 +357,8 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
     (dominant frequency and PSD peak, mean and interval), ``speed_sweep_psd.csv`` (the
     track-mean spectra) and ``speed_sweep.json`` (loco version and settings).
     """
+    from loco.studies.speed_sweep_figures import plot_peaks, plot_psds, plot_sweep
+
     start = time.perf_counter()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -187,6 +187,19 @@ class Ranking:
         pairs = zip(self.order, self.order[1:], strict=False)
         return len(self.order) > 1 and all(self.test(a, b).significant for a, b in pairs)
 
+    def rows(self) -> list[dict[str, object]]:
+        """One table row per pairwise test: label, metric, pair, geometric-mean ratio a/b with its
+        interval, p values (t, Holm, Wilcoxon), whether the pair differs, the ranking and whether
+        it is significant."""
+        return [
+            {"scenario": self.label, "metric": self.metric, "a": t.a, "b": t.b, "n_tracks": t.n,
+             "ratio_a_b": t.ratio, "ratio_low": t.ratio_low, "ratio_high": t.ratio_high,
+             "p_t": t.p_t, "p_holm": t.p_holm, "p_wilcoxon": t.p_wilcoxon,
+             "differ": t.significant, "ranking": " < ".join(self.order),
+             "ranking_significant": self.significant}
+            for t in self.tests
+        ]  # fmt: skip
+
     def statement(self) -> str:
         """One sentence for the report, e.g. ``S_low, W_y: FSD < YD1 < YD2 (significant ...)``."""
         parts = [self.order[0]]
