@@ -19,7 +19,8 @@ Then ``<out>/report.md`` shows every figure and table with settings, seeds, vers
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
 500 m at 200 km/h; 256 Saltelli base samples for the direct indices). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
-sweep: about 960 runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
+sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``): about 1 100
+runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
 """
 
 from __future__ import annotations
@@ -102,12 +103,12 @@ FULL = Sizes(
     n_verify=20,
     n_tracks=8,
 )
-#: The README's main job: < 15 min on 2 cores (about 960 runs of 500 m, 5.5 min on the shared
-#: 2-core machine under load). It keeps SPEC's distance, speed, Latin hypercube and NSGA-II
-#: sizes (NSGA-II on the surrogate costs seconds); the direct Sobol' indices use 32 Saltelli base
-#: samples (256 runs per scenario) and the speed sweep steps 25 km/h. The sweep and the damper
-#: comparison run on 4 tracks (3 is the least issue 11 allows; on 2 cores a batch of 3 tracks
-#: takes as long as one of 4).
+#: The README's main job: < 15 min on 2 cores (about 1 100 runs of 500 m). It keeps SPEC's
+#: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
+#: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
+#: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
+#: allows; on 2 cores a batch of 3 tracks takes as long as one of 4): 12 % more CPU time than on
+#: one track (345 s against 307 s; 15.4 against 11.1 min wall on the shared machine, load 9-14).
 QUICK = dataclasses.replace(
     FULL,
     name="quick",
