@@ -107,8 +107,8 @@ FULL = Sizes(
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
-#: allows; on 2 cores a batch of 3 tracks takes as long as one of 4): 12 % more CPU time than on
-#: one track (345 s against 307 s; 15.4 against 11.1 min wall on the shared machine, load 9-14).
+#: allows; on 2 cores a batch of 3 tracks takes as long as one of 4): 12-18 % more CPU time than
+#: on one track (two before/after pairs on the shared machine: 307 -> 345 s and 330 -> 389 s).
 QUICK = dataclasses.replace(
     FULL,
     name="quick",
