@@ -1,5 +1,5 @@
 """The yaw damper comparison of SPEC §6.6 on a tiny setting: YD1, YD2 and FSD on S_low and
-S_high over 300 m at 200 km/h, the real simulator."""
+S_high over 300 m at 200 km/h on two tracks, the real simulator."""
 
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ import loco
 from loco.studies.fsd_comparison import (
     CASES,
     DAMPERS,
+    LEAD_IN,
     FsdComparison,
     run_fsd_comparison,
     save_fsd_comparison,
@@ -21,10 +22,12 @@ from loco.studies.fsd_comparison import (
     valve_open_fractions,
 )
 
+TRACKS = 2
+
 
 @pytest.fixture(scope="module")
 def comparison() -> FsdComparison:
-    return run_fsd_comparison(distance=300.0, seed=2, threads=2)
+    return run_fsd_comparison(distance=300.0, seed=2, n_tracks=TRACKS, threads=2)
 
 
 def test_runs_and_table(comparison: FsdComparison) -> None:
@@ -36,13 +39,25 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     assert list(table["quantity"]) == ["A_yc"] * 4 + ["A_yb"] * 4
     assert (table["dominant_hz"] > 0.2).all() and (table["psd_peak"] > 0).all()
     assert (table["rms"] > 0).all() and (table["error"] == "").all()
-    # The table's peak and rms are the core's run metrics of the case's quantity.
+    assert (table["n_tracks"] == TRACKS).all()
+    assert (table["psd_peak_low"] < table["psd_peak"]).all()
+    assert (table["psd_peak"] < table["psd_peak_high"]).all()
+    # The table's values are the track means of the core's run metrics of the case's quantity;
+    # track 0 is the single run on the seed's track.
     result = comparison.results[("S_high", "YD1")]
     assert result is not None
+    single = loco.simulate(
+        loco.Locomotive.default(),
+        loco.Scenario(scenario="S_high", distance=300.0, lead_in=LEAD_IN, seed=2,
+                      yaw_damper=DAMPERS["YD1"]),
+    )  # fmt: skip
+    assert single.metrics["ayb_psd_peak"] == result.metrics["ayb_psd_peak"]
+    runs = comparison.runs[("S_high", "YD1")]
     row = table[(table["scenario"] == "S_high") & (table["damper"] == "YD1")].iloc[0]
-    assert row["dominant_hz"] == pytest.approx(result.metrics["ayb_f0_hz"])
-    assert row["psd_peak"] == pytest.approx(result.metrics["ayb_psd_peak"])
-    assert row["rms"] == pytest.approx(result.metrics["ayb_rms"])
+    assert row["dominant_hz"] == pytest.approx(runs.values("ayb_f0_hz").mean())
+    assert row["psd_peak"] == pytest.approx(runs.values("ayb_psd_peak").mean())
+    assert row["rms"] == pytest.approx(runs.values("ayb_rms").mean())
+    assert runs.values("ayb_psd_peak")[0] == result.metrics["ayb_psd_peak"]
     # The dampers were applied: the three runs of a scenario differ.
     for scenario, _, channel in CASES:
         signals = [comparison.results[(scenario, d)] for d in DAMPERS]
@@ -79,6 +94,25 @@ def test_valves(comparison: FsdComparison) -> None:
         assert values.min() >= 0.0 and values.max() <= 1.0
 
 
+def test_rankings(comparison: FsdComparison) -> None:
+    rankings = comparison.rankings()
+    assert [(r.label, r.metric) for r in rankings] == [
+        ("S_low", "PSD peak of A_yc"),
+        ("S_low", "wy_max"),
+        ("S_high", "PSD peak of A_yb"),
+        ("S_high", "ayb_peak_lp"),
+    ]
+    pairs = len(DAMPERS) * (len(DAMPERS) - 1) // 2
+    for r in rankings:
+        assert sorted(r.order) == sorted(DAMPERS) and len(r.tests) == pairs
+        means = [r.means[d] for d in r.order]
+        assert means == sorted(means)
+        for t in r.tests:
+            assert t.n == TRACKS and 0.0 <= t.p_t <= t.p_holm <= 1.0
+    frame = comparison.rankings_frame()
+    assert len(frame) == 4 * pairs and set(frame["ranking_significant"]) <= {True, False}
+
+
 def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
     out = tmp_path / "fsd_comparison"
     record = save_fsd_comparison(comparison, out)
@@ -88,9 +122,14 @@ def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
     assert names == {
         "fsd_time_histories.png",
         "fsd_psd.png",
+        "fsd_peaks.png",
         "fsd_valve.png",
         "fsd_valve_hydraulic.png",
     }
+    tracks = pd.read_csv(out / "fsd_tracks.csv")
+    assert len(tracks) == 2 * len(DAMPERS) * TRACKS
+    assert set(tracks["track"]) == set(range(TRACKS))
+    assert "ranking" in record.notes and record.notes.count("significant at") == 4
     histories = pd.read_csv(out / "fsd_time_histories.csv")
     result = comparison.results[("S_low", "FSD")]
     assert result is not None
@@ -103,3 +142,4 @@ def test_files(comparison: FsdComparison, tmp_path: Path) -> None:
     settings = json.loads((out / "fsd_comparison.json").read_text())
     assert settings["loco_version"] == loco.__version__ and settings["speed_kmh"] == 200.0
     assert settings["dampers"]["FSD"]["kind"] == "fsd"
+    assert settings["n_tracks"] == TRACKS and settings["lead_in_m"] == LEAD_IN

@@ -15,22 +15,27 @@ import pandas as pd
 import pytest
 
 import loco
+from loco import dampers
 from loco.cli import main
 from loco.commands.reproduce import TINY, reproduce
+from loco.studies import fsd_comparison, speed_sweep
 from loco.studies.parameters import names
-from loco.studies.stages import MARKER
+from loco.studies.stages import MARKER, settings_hash
+from loco.studies.surrogate_selection import CANDIDATES
 
 STAGES = {
-    "speed_sweep": ["speed_sweep.png", "speed_sweep_psd.png", "speed_sweep.csv"],
+    "speed_sweep": ["speed_sweep.png", "speed_sweep_psd.png", "speed_sweep_peaks.png",
+                    "speed_sweep.csv", "speed_sweep_summary.csv", "speed_sweep_peaks.csv"],
     "monte_carlo": ["monte_carlo.png", "monte_carlo.csv", "monte_carlo_summary.csv"],
-    "surrogate": ["parity_W_y.png", "parity_A_yb.png", "surrogate_r2.csv"],
+    "surrogate": ["parity_W_y.png", "parity_A_yb.png", "parity_W_y_used.png",
+                  "parity_A_yb_used.png", "surrogate_r2.csv", "surrogate_selection.csv"],
     "sensitivity": ["sobol_W_y.png", "sobol_A_yb.png", "sobol_convergence.png",
                     "sobol_indices.csv", "sobol_summary.csv", "saltelli_samples.csv"],
     "optimisation": ["pareto.png", "pareto_verification.png", "pareto_front.csv",
                      "pareto_verification.csv"],
     "damper_bench": ["damper_bench.png", "damper_bench_summary.csv"],
-    "fsd_comparison": ["fsd_time_histories.png", "fsd_psd.png", "fsd_valve.png",
-                       "fsd_summary.csv"],
+    "fsd_comparison": ["fsd_time_histories.png", "fsd_psd.png", "fsd_peaks.png",
+                       "fsd_valve.png", "fsd_summary.csv", "fsd_rankings.csv", "fsd_tracks.csv"],
 }  # fmt: skip
 ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
 
@@ -68,6 +73,12 @@ def test_report(run: tuple[Path, str]) -> None:
     assert len(figures) >= sum(n.endswith(".png") for f in STAGES.values() for n in f)
     for link in links:
         assert (out / link).is_file(), link
+    # The damper comparison says whether each ranking is significant; the surrogate section
+    # which surrogate the optimisation used, and still the SPEC network's R².
+    rankings = re.findall(r"ranking (not |partly )?significant at 0.05 over 2 tracks", text)
+    assert len(rankings) == 4
+    assert "Surrogate used by the surrogate Sobol' indices and NSGA-II: W_y: **" in text
+    assert "SPEC network (10 Gaussian units) mean held-out R²: W_y " in text
     meta = json.loads((out / "reproduce.json").read_text())
     assert meta["loco_version"] == loco.__version__ and meta["sizes"]["name"] == "tiny"
 
@@ -78,7 +89,18 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     assert len(mc) == TINY.lhs_samples and set(names()) <= set(mc.columns)
     assert mc[["W_y", "A_yb"]].notna().all().all()
     r2 = pd.read_csv(out / "surrogate" / "surrogate_r2.csv")
-    assert len(r2) == 2 * TINY.kfold and (r2["r2"] <= 1.0).all()
+    assert len(r2) == 2 * len(CANDIDATES) * TINY.kfold and (r2["r2"] <= 1.0).all()
+    chosen = pd.read_csv(out / "surrogate" / "surrogate_selection.csv")
+    assert (
+        len(chosen) == 2 * len(CANDIDATES) and chosen.groupby("objective")["used"].sum().eq(1).all()
+    )
+    for _, group in chosen.groupby("objective"):
+        assert group.loc[group["used"], "r2_mean"].iloc[0] == group["r2_mean"].max()
+    sweep = pd.read_csv(out / "speed_sweep" / "speed_sweep_summary.csv")
+    assert (sweep["n_tracks"] == TINY.n_tracks).all()
+    assert (sweep["W_y low"] <= sweep["W_y mean"]).all() and (
+        sweep["W_y mean"] <= sweep["W_y high"]
+    ).all()
     indices = pd.read_csv(out / "sensitivity" / "sobol_indices.csv")
     assert set(indices["method"]) == {"direct", "surrogate"}
     assert len(indices) == 2 * 2 * 2 * len(names())  # method x metric x order x parameter
@@ -93,10 +115,13 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     assert 1 <= len(check) <= TINY.n_verify
     assert np.isfinite(check[["W_y_simulated", "A_yb_simulated"]].to_numpy()).all()
     summary = pd.read_csv(out / "fsd_comparison" / "fsd_summary.csv")
-    assert len(summary) == 8  # YD1, YD2, FSD, FSD-H on S_low and S_high
+    assert len(summary) == 8 and (summary["n_tracks"] == TINY.n_tracks).all()  # 4 dampers x 2
     openings = pd.read_csv(out / "fsd_comparison" / "fsd_valve_open_fraction.csv")
     assert set(openings["damper"]) == {"FSD", "FSD-H"}
     assert openings["open_fraction"].between(0.0, 1.0).all()
+    tests = pd.read_csv(out / "fsd_comparison" / "fsd_rankings.csv")
+    pairs = len(fsd_comparison.DAMPERS) * (len(fsd_comparison.DAMPERS) - 1) // 2
+    assert len(tests) == 4 * pairs  # (scenario, metric) x damper pairs
 
 
 def test_rerun_skips_finished_stages(
@@ -135,3 +160,19 @@ def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, st
     assert [line for line in lines if line.endswith("running")] == ["[monte_carlo] running"]
     assert table.read_bytes() == whole
     assert sorted((out / "monte_carlo" / "store").rglob("part-*.parquet")) == parts
+
+
+def test_stage_hashes_cover_their_inputs() -> None:
+    """The settings the stage hashes are made from change with every input of the stage (the
+    speed sweep's damper was once left out)."""
+    base = {"speeds_kmh": (180.0,), "seed": 0, "n_tracks": 2}
+    reference = settings_hash("speed_sweep", speed_sweep.sweep_settings(**base))
+    for change in ({"yaw_damper": dampers.YD1}, {"n_tracks": 3}, {"lead_in": 100.0},
+                   {"distance": 300.0}, {"psd_speed_kmh": 160.0}, {"seed": 1}):  # fmt: skip
+        changed = speed_sweep.sweep_settings(**{**base, **change})
+        assert settings_hash("speed_sweep", changed) != reference, change
+    reference = settings_hash("fsd", fsd_comparison.comparison_settings(n_tracks=2))
+    fewer = {"YD1": dampers.YD1, "FSD": dampers.FSD}
+    for change in ({"damper_set": fewer}, {"n_tracks": 3}, {"lead_in": 0.0}, {"seed": 1}):
+        changed = fsd_comparison.comparison_settings(**{"n_tracks": 2, **change})
+        assert settings_hash("fsd", changed) != reference, change

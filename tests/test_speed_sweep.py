@@ -1,5 +1,5 @@
-"""The speed sweep of SPEC §6.1 on a tiny setting: two speeds, 300 m (5.4 s at 200 km/h, the
-metrics need 5 s), the real simulator."""
+"""The speed sweep of SPEC §6.1 on a tiny setting: two speeds, two tracks, 300 m (5.4 s at
+200 km/h, the metrics need 5 s), the real simulator."""
 
 from __future__ import annotations
 
@@ -23,23 +23,28 @@ from loco.studies.speed_sweep import (
 
 DISTANCE = 300.0
 SEED = 3
+TRACKS = 2
 
 
 @pytest.fixture(scope="module")
 def sweep() -> SpeedSweep:
-    return run_speed_sweep([180.0], distance=DISTANCE, seed=SEED, threads=2, progress=False)
+    return run_speed_sweep(
+        [180.0], distance=DISTANCE, seed=SEED, n_tracks=TRACKS, threads=2, progress=False
+    )
 
 
 def test_shapes_and_ranges(sweep: SpeedSweep) -> None:
     # The PSD speed (200 km/h) is added to the sweep, speeds sorted.
     np.testing.assert_array_equal(sweep.speeds_kmh, [180.0, 200.0])
     assert sweep.scenarios == SCENARIOS
-    assert sweep.metrics.shape == (3, 2, len(sweep.metric_names))
-    assert sweep.status.shape == (3, 2) and not sweep.status.any()
+    assert sweep.metrics.shape == (3, 2, TRACKS, len(sweep.metric_names))
+    assert sweep.status.shape == (3, 2, TRACKS) and not sweep.status.any()
     for metric in ("wy_max", "ayb_peak_lp"):
         values = sweep.metric(metric)
-        assert values.shape == (3, 2)
+        assert values.shape == (3, 2, TRACKS)
         assert np.isfinite(values).all() and (values > 0).all()
+        # The tracks differ, so the values do.
+        assert (values[..., 0] != values[..., 1]).all()
     assert set(sweep.spectra) == {(s, q) for s in SCENARIOS for q in (A_YC[0], A_YB[0])}
     for sp in sweep.spectra.values():
         assert sp.frequency.shape == sp.density.shape
@@ -50,18 +55,27 @@ def test_shapes_and_ranges(sweep: SpeedSweep) -> None:
 
 
 def test_matches_a_single_run(sweep: SpeedSweep) -> None:
-    """The batch row at 200 km/h is the run loco.simulate makes with YD2 on the same track."""
+    """Track 0 at 200 km/h is the run loco.simulate makes with YD2 on the track of the seed; the
+    sweep's values are the track means, its spectra the track-mean PSDs."""
     scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6, distance=DISTANCE, seed=SEED,
                              yaw_damper=dampers.YD2)  # fmt: skip
     single = loco.simulate(loco.Locomotive.default(), scenario)
+    j = 1  # 200 km/h
     for metric in ("wy_max", "ayb_peak_lp"):
-        assert sweep.at("S_high", metric, 200.0) == pytest.approx(single.metrics[metric], rel=1e-9)
+        values = sweep.metric(metric)[2, j]
+        assert values[0] == pytest.approx(single.metrics[metric], rel=1e-9)
+        assert sweep.at("S_high", metric, 200.0) == pytest.approx(values.mean(), rel=1e-12)
+        ci = sweep.interval("S_high", metric, 200.0)
+        half = 12.706 * values.std(ddof=1) / np.sqrt(2)  # t(0.975, 1 dof)
+        assert ci.high - ci.mean == pytest.approx(half, rel=1e-4)
     f, p = loco.metrics.psd(single.channel(A_YB[1]), single.sampling_rate)
-    np.testing.assert_allclose(sweep.spectra[("S_high", "A_yb")].density, p, rtol=1e-9)
-    np.testing.assert_allclose(sweep.spectra[("S_high", "A_yb")].frequency, f)
-    # The peaks are the core's run metrics, not recomputed in Python.
-    assert sweep.spectra[("S_high", "A_yb")].dominant_hz == single.metrics["ayb_f0_hz"]
-    assert sweep.spectra[("S_high", "A_yb")].peak == single.metrics["ayb_psd_peak"]
+    mean = sweep.spectra[("S_high", "A_yb")]
+    np.testing.assert_allclose(mean.frequency, f)
+    assert not np.allclose(mean.density, p)  # the mean of two different tracks
+    # The peaks are the track means of the core's run metrics, not recomputed in Python.
+    peaks = sweep.metric("ayb_psd_peak")[2, j]
+    assert peaks[0] == single.metrics["ayb_psd_peak"]
+    assert mean.peak == pytest.approx(peaks.mean(), rel=1e-12)
 
 
 def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
@@ -69,15 +83,23 @@ def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
     for path in [*record.figures, *record.tables]:
         assert path.is_file() and path.stat().st_size > 0, path
     assert {p.suffix for p in record.figures} == {".png"}
+    assert "speed_sweep_peaks.png" in {p.name for p in record.figures}
     table = pd.read_csv(tmp_path / "speed_sweep" / "speed_sweep.csv")
-    assert len(table) == 6 and set(table["scenario"]) == set(SCENARIOS)
+    assert len(table) == 6 * TRACKS and set(table["scenario"]) == set(SCENARIOS)
+    assert set(table["track"]) == set(range(TRACKS))
     summary = pd.read_csv(tmp_path / "speed_sweep" / "speed_sweep_summary.csv")
-    assert summary.shape == (2, 7)
-    assert summary["W_y S_low"].iloc[1] == pytest.approx(sweep.at("S_low", "wy_max", 200.0))
+    assert len(summary) == 6 and (summary["n_tracks"] == TRACKS).all()
+    row = summary[(summary["scenario"] == "S_low") & (summary["speed_kmh"] == 200.0)].iloc[0]
+    ci = sweep.interval("S_low", "wy_max", 200.0)
+    assert row["W_y mean"] == pytest.approx(ci.mean)
+    assert row["W_y low"] == pytest.approx(ci.low) and row["W_y high"] == pytest.approx(ci.high)
+    assert row["W_y low"] < row["W_y mean"] < row["W_y high"]
     peaks = pd.read_csv(tmp_path / "speed_sweep" / "speed_sweep_peaks.csv")
     assert len(peaks) == 6 and (peaks["speed_kmh"] == 200.0).all()
+    assert (peaks["psd_peak_low"] < peaks["psd_peak_high"]).all()
     settings = json.loads((tmp_path / "speed_sweep" / "speed_sweep.json").read_text())
     assert settings["loco_version"] == loco.__version__
     assert settings["distance_m"] == DISTANCE and settings["track_seed"] == SEED
+    assert settings["n_tracks"] == TRACKS
     assert settings["yaw_damper"]["damping"] == dampers.YD2.parameters()["damping"]
     assert "S_low: W_y" in record.notes

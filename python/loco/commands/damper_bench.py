@@ -80,6 +80,19 @@ def _closed_form(damper: dampers.Damper, frequency: float) -> tuple[float, float
     )
 
 
+def bench_settings(amplitude: float = AMPLITUDE) -> dict[str, object]:
+    """Everything :func:`bench_study` depends on (its settings and stage hash): the dampers, the
+    excitation and the cycles."""
+    return {
+        "loco_version": loco.__version__,
+        "amplitude_m": amplitude,
+        "frequencies_hz": list(FREQUENCIES_HZ),
+        "cycles": CYCLES,
+        "loop_cycles": LOOP_CYCLES,
+        "dampers": {n: dampers.describe(d) for n, d in dampers.PRESETS.items()},
+    }
+
+
 def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecord:
     """Bench YD1, YD2 and FSD at :data:`FREQUENCIES_HZ` with a sine of ``amplitude`` (m); write
     the figure, tables and parameters into ``out_dir`` and return the report record."""

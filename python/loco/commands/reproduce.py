@@ -3,13 +3,16 @@
 Stages (each in ``<out>/<stage>/``, resumable by :class:`loco.studies.stages.StageRunner`: a
 stage finished with the same settings is skipped on a rerun, ``--force`` runs it again):
 
-1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h.
+1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h;
+   each point the mean and 95 % interval over ``n_tracks`` synthesised tracks.
 2. ``monte_carlo``: Latin hypercube over the six parameters, W_y (S_low) and A_yb (S_high).
-3. ``surrogate``: RBF network, k-fold held-out R², parity plots.
+3. ``surrogate``: k-fold held-out R² of the SPEC RBF network, a larger RBF network and a
+   Gaussian process; the best is the surrogate of stages 4 and 5; parity plots.
 4. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
 5. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
 6. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
-7. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h.
+7. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
+   (the same for every damper), with paired tests of whether each ranking is significant.
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
 
@@ -23,7 +26,8 @@ record its hash in their settings, so a damaged output is never reused.
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
 500 m at 200 km/h; 256 Saltelli base samples for the direct indices). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
-sweep: about 960 runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
+sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``): about 1 100
+runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
 """
 
 from __future__ import annotations
@@ -40,13 +44,19 @@ from pathlib import Path
 from typing import Any
 
 import loco
-from loco import campaign
+from loco import campaign, dampers
 from loco.commands import damper_bench
 from loco.executors import Executor, LocalExecutor, executor_from_options
-from loco.studies import fsd_comparison, parameter_stages, parameter_study, speed_sweep
+from loco.studies import (
+    fsd_comparison,
+    parameter_stages,
+    parameter_study,
+    speed_sweep,
+    surrogate_validation,
+)
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import StageRunner
-from loco.studies.surrogate import RBFNetwork
+from loco.studies.surrogate_selection import Selection, selection_settings
 
 NAME = "reproduce"
 HELP = "run the whole SPEC §6 study (every figure and table) and write a Markdown report"
@@ -60,7 +70,9 @@ class Sizes:
     speed sweep (km/h); ``lhs_samples`` the Monte Carlo; ``convergence_bases`` the Saltelli base
     sample counts N of the direct Sobol' indices (the largest is simulated: N·8 runs per
     scenario); ``surrogate_base`` the Saltelli N on the surrogate; ``kfold`` the folds of the R²;
-    ``pop_size`` and ``n_gen`` NSGA-II; ``n_verify`` the Pareto points re-simulated.
+    ``pop_size`` and ``n_gen`` NSGA-II; ``n_verify`` the Pareto points re-simulated;
+    ``n_tracks`` the synthesised tracks every case of the speed sweep and the damper comparison
+    runs on (their tables give the mean and 95 % interval over them).
     """
 
     name: str
@@ -74,6 +86,7 @@ class Sizes:
     pop_size: int
     n_gen: int
     n_verify: int
+    n_tracks: int
 
     def runs(self) -> int:
         """Simulations of 'distance' at 'speed_kmh' this costs, about (the sweep's slower runs
@@ -81,7 +94,9 @@ class Sizes:
         sweep = sum(self.speed_kmh / v for v in {*self.sweep_speeds_kmh, self.speed_kmh})
         saltelli = max(self.convergence_bases) * (len(parameter_study.names()) + 2)
         n_obj = len(parameter_study.OBJECTIVES)
-        return round(3 * sweep + n_obj * (self.lhs_samples + saltelli + self.n_verify) + 6)
+        fsd = 6 * (1 + fsd_comparison.LEAD_IN / self.distance)
+        parameters = n_obj * (self.lhs_samples + saltelli + self.n_verify)
+        return round(self.n_tracks * (3 * sweep + fsd) + parameters)
 
 
 #: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples).
@@ -97,11 +112,14 @@ FULL = Sizes(
     pop_size=500,
     n_gen=100,
     n_verify=20,
+    n_tracks=8,
 )
-#: The README's main job: < 15 min on 2 cores (about 960 runs of 500 m, 5.5 min on the shared
-#: 2-core machine under load). It keeps SPEC's distance, speed, Latin hypercube and NSGA-II
-#: sizes (NSGA-II on the surrogate costs seconds); the direct Sobol' indices use 32 Saltelli base
-#: samples (256 runs per scenario) and the speed sweep steps 25 km/h.
+#: The README's main job: < 15 min on 2 cores (about 1 100 runs of 500 m). It keeps SPEC's
+#: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
+#: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
+#: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
+#: allows; on 2 cores a batch of 3 tracks takes as long as one of 4): 12-18 % more CPU time than
+#: on one track (two before/after pairs on the shared machine: 307 -> 345 s and 330 -> 389 s).
 QUICK = dataclasses.replace(
     FULL,
     name="quick",
@@ -109,6 +127,7 @@ QUICK = dataclasses.replace(
     convergence_bases=(8, 16, 32),
     surrogate_base=4096,
     n_verify=8,
+    n_tracks=4,
 )
 #: For tests: every stage on a few short runs (300 m is the shortest record the metrics take at
 #: 200 km/h, and 10 RBF centres need 10 training samples in each of 3 folds).
@@ -124,6 +143,7 @@ TINY = dataclasses.replace(
     pop_size=24,
     n_gen=4,
     n_verify=3,
+    n_tracks=2,
 )
 PRESETS: dict[str, Sizes] = {s.name: s for s in (QUICK, FULL, TINY)}
 
@@ -229,7 +249,36 @@ def reproduce(
     # `--full` run after `--quick` reuses the stages whose sizes the two share.
     common = {"seed": seed, **setup.settings()}
     lhs = {**common, "lhs_samples": sizes.lhs_samples}
-    fitted = {**lhs, "log_target": parameter_study.LOG_TARGET}
+    # The surrogates are chosen by k-fold cross-validation: every stage that uses them depends on
+    # the folds and the candidates too.
+    fitted = {
+        **lhs,
+        "log_target": parameter_study.LOG_TARGET,
+        "kfold": sizes.kfold,
+        "surrogate_selection": selection_settings(sizes.kfold),
+    }
+    # The arguments of the sweep and of the damper comparison, from which both the run and its
+    # stage hash are made (so that no input is left out of the hash). Only the damper comparison
+    # has a lead-in (its FSD must leave its start state): for the passive Maxwell yaw dampers of
+    # the other stages, 8 tracks at 200 km/h with 0, 100, 200 and 500 m of lead-in gave W_y on
+    # S_low 2.72 / 2.82 / 2.82 / 2.62 (track-to-track sd 0.11-0.19) and A_yb on S_high 1.40 /
+    # 1.50 / 1.69 / 1.56 m/s² (sd 0.17-0.46): no systematic change, while 500 m would double the
+    # cost of the Monte Carlo and Sobol' stages.
+    sweep_args: dict[str, Any] = {
+        "speeds_kmh": sizes.sweep_speeds_kmh,
+        "psd_speed_kmh": sizes.speed_kmh,
+        "distance": sizes.distance,
+        "seed": seed,
+        "n_tracks": sizes.n_tracks,
+        "yaw_damper": dampers.YD2,
+    }
+    fsd_args: dict[str, Any] = {
+        "speed_kmh": sizes.speed_kmh,
+        "distance": sizes.distance,
+        "lead_in": fsd_comparison.LEAD_IN,
+        "seed": seed,
+        "n_tracks": sizes.n_tracks,
+    }
     mc_csv = out_dir / "monte_carlo" / "monte_carlo.csv"
     log(
         f"loco {loco.__version__}: reproducing SPEC §6 ({sizes.name}, ~{sizes.runs()} runs of "
@@ -237,38 +286,32 @@ def reproduce(
     )
 
     def sweep(d: Path) -> StudyRecord:
-        s = speed_sweep.run_speed_sweep(
-            sizes.sweep_speeds_kmh,
-            psd_speed_kmh=sizes.speed_kmh,
-            distance=sizes.distance,
-            seed=seed,
-            threads=threads,
-            progress=progress,
-        )
+        s = speed_sweep.run_speed_sweep(**sweep_args, threads=threads, progress=progress)
         return speed_sweep.save_speed_sweep(s, d)
 
     def monte_carlo(d: Path) -> StudyRecord:
         return parameter_study.run_monte_carlo(setup, sizes.lhs_samples, seed, d)
 
-    # The Monte Carlo samples and the RBF surrogates fitted on them, loaded and fitted once on
-    # the first stage that needs them and shared by the surrogate, Sobol' and NSGA-II stages.
-    Fitted = tuple[parameter_study.FloatArray, parameter_study.FloatArray, list[RBFNetwork]]
+    # The Monte Carlo samples and the surrogates chosen and fitted on them, loaded and chosen once
+    # on the first stage that needs them and shared by the surrogate, Sobol' and NSGA-II stages.
+    Fitted = tuple[parameter_study.FloatArray, parameter_study.FloatArray, list[Selection]]
     fitted_models: list[Fitted] = []
 
     def lhs_and_models() -> Fitted:
         if not fitted_models:
             x, y = parameter_study.load_monte_carlo(mc_csv)
-            fitted_models.append((x, y, parameter_study.fit_surrogates(x, y, seed=seed)))
+            chosen = surrogate_validation.select_surrogates(x, y, n_splits=sizes.kfold, seed=seed)
+            fitted_models.append((x, y, chosen))
         return fitted_models[0]
 
     def surrogate(d: Path) -> StudyRecord:
-        x, y, models = lhs_and_models()
-        return parameter_study.validate_surrogate(
-            x, y, d, n_splits=sizes.kfold, seed=seed, models=models
+        x, y, chosen = lhs_and_models()
+        return surrogate_validation.validate_surrogate(
+            x, y, d, n_splits=sizes.kfold, seed=seed, selections=chosen
         )
 
     def sensitivity(d: Path) -> StudyRecord:
-        x, y, models = lhs_and_models()
+        x, y, chosen = lhs_and_models()
         return parameter_stages.run_sensitivity(
             setup,
             x,
@@ -277,11 +320,12 @@ def reproduce(
             convergence_bases=sizes.convergence_bases,
             surrogate_base=sizes.surrogate_base,
             seed=seed,
-            models=models,
+            models=[c.model for c in chosen],
+            surrogate_name=surrogate_validation.surrogate_label(chosen),
         )
 
     def optimisation(d: Path) -> StudyRecord:
-        x, y, models = lhs_and_models()
+        x, y, chosen = lhs_and_models()
         return parameter_stages.run_optimisation(
             setup,
             x,
@@ -291,19 +335,18 @@ def reproduce(
             n_gen=sizes.n_gen,
             n_verify=sizes.n_verify,
             seed=seed,
-            models=models,
+            models=[c.model for c in chosen],
+            surrogate_name=surrogate_validation.surrogate_label(chosen),
         )
 
     def fsd(d: Path) -> StudyRecord:
-        c = fsd_comparison.run_fsd_comparison(
-            speed_kmh=sizes.speed_kmh, distance=sizes.distance, seed=seed, threads=threads
-        )
+        c = fsd_comparison.run_fsd_comparison(**fsd_args, threads=threads, progress=progress)
         return fsd_comparison.save_fsd_comparison(c, d)
 
     stages: list[tuple[str, dict[str, Any], Callable[[Path], StudyRecord]]] = [
-        ("speed_sweep", {**common, "speeds_kmh": sizes.sweep_speeds_kmh}, sweep),
+        ("speed_sweep", speed_sweep.sweep_settings(**sweep_args), sweep),
         ("monte_carlo", lhs, monte_carlo),
-        ("surrogate", {**fitted, "kfold": sizes.kfold}, surrogate),
+        ("surrogate", fitted, surrogate),
         (
             "sensitivity",
             {
@@ -323,12 +366,8 @@ def reproduce(
             },
             optimisation,
         ),
-        (
-            "damper_bench",
-            {"version": loco.__version__, "amplitude_m": damper_bench.AMPLITUDE},
-            damper_bench.bench_study,
-        ),
-        ("fsd_comparison", {**common, "lead_in_m": fsd_comparison.LEAD_IN}, fsd),
+        ("damper_bench", damper_bench.bench_settings(), damper_bench.bench_study),
+        ("fsd_comparison", fsd_comparison.comparison_settings(**fsd_args), fsd),
     ]
 
     def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:
@@ -359,6 +398,9 @@ def reproduce(
         "command": command or f"loco reproduce --{sizes.name}",
         "sizes": dataclasses.asdict(sizes),
         "seed (track, designs, K-means, NSGA-II)": seed,
+        "tracks of the speed sweep and the damper comparison": (
+            f"{sizes.n_tracks} (ChaCha streams 0-{sizes.n_tracks - 1} of the track seed)"
+        ),
         "threads": threads or "all cores",
         "executor": executor.describe(),
         "stages run": runner.ran,

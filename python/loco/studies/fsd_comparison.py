@@ -1,41 +1,43 @@
 """Yaw damper comparison of SPEC §6.6: the locomotive with YD1, YD2 and FSD yaw dampers on S_low
 and S_high at 200 km/h.
 
-Six runs of :func:`loco.simulate` (in parallel threads: the simulator releases the GIL), all on
-the same synthesised track. Outputs: the time histories and Welch PSDs of the carbody floor
-lateral acceleration A_yc on S_low (low-conicity carbody sway) and of the bogie frame lateral
-acceleration A_yb on S_high (high-conicity bogie hunting), the dominant frequency and PSD peak of
-each (the core's run metrics, :data:`loco.studies.speed_sweep.PEAK_METRICS`), and the state of
-the FSD frequency valves over time (channels ``*_valve``: 0 open, low damping c1; 1 closed,
-high damping c2).
+Six cases (scenario, damper), each one ``loco.run_batch`` over the same synthesised tracks (the
+tracks as samples, :mod:`loco.studies.seeds`; common random numbers, so the dampers are compared
+by paired tests, :mod:`loco.studies.statistics`). Outputs: the time histories (track 0) and
+track-mean Welch PSDs of the carbody floor lateral acceleration A_yc on S_low (low-conicity carbody
+sway) and of the bogie frame lateral acceleration A_yb on S_high (high-conicity bogie hunting); the
+dominant frequency and PSD peak of each (the core's run metrics,
+:data:`loco.studies.speed_sweep.PEAK_METRICS`), W_y and A_yb as the mean and 95 % interval over the
+tracks, with the per-track values; whether each ranking of the dampers is significant; and the
+state of the FSD frequency valves over time (channels ``*_valve``: 0 open, low damping c1;
+1 closed, high damping c2).
 """
 
 from __future__ import annotations
 
-import os
 import time
 from collections.abc import Mapping
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
 import loco
 from loco import dampers
-from loco.studies.plotting import Spectrum, draw_spectra, pyplot, save_figure
+from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
-from loco.studies.speed_sweep import A_YB, A_YC, RMS_METRICS, spectrum
+from loco.studies.seeds import TrackRuns, run_over_tracks
+from loco.studies.speed_sweep import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
+from loco.studies.statistics import Ranking, mean_interval, rank
 
 __all__ = [
     "CASES",
     "DAMPERS",
+    "JUDGED_BY",
     "FsdComparison",
-    "plot_psds",
-    "plot_time_histories",
-    "plot_valves",
     "run_fsd_comparison",
     "save_fsd_comparison",
     "valve_open_fractions",
@@ -46,29 +48,67 @@ DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HY
 #: (scenario, quantity label, channel): A_yc judges S_low, A_yb judges S_high.
 CASES: tuple[tuple[str, str, str], ...] = (("S_low", *A_YC), ("S_high", *A_YB))
 SCENARIO_QUANTITY: dict[str, str] = {s: q for s, q, _ in CASES}
+FloatArray = npt.NDArray[np.float64]
 #: Suffix of the frequency-valve channels of the yaw dampers.
 VALVE_SUFFIX = "_valve"
 
 
+#: Metric by which each scenario judges a yaw damper (SPEC §5): W_y on S_low, A_yb on S_high.
+JUDGED_BY: dict[str, str] = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
+#: Fraction of the record the valves were closed (from the valve channels, not a core metric).
+VALVE_FRACTION = "valve_closed_fraction"
+#: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
+#: core's run metrics of the case's quantity (:data:`RMS_METRICS`, :data:`PEAK_METRICS`), then two
+#: run metrics under their own names and the valve fraction (:meth:`FsdComparison.values`).
+SUMMARY_COLUMNS: tuple[str, ...] = (
+    "rms",
+    "dominant_hz",
+    "psd_peak",
+    "wy_max",
+    "ayb_peak_lp",
+    VALVE_FRACTION,
+)
+
+
 @dataclass(frozen=True)
 class FsdComparison:
-    """Runs keyed by (scenario, damper name); a failed run is None with its message in
-    ``errors``."""
+    """Every (scenario, damper) run on tracks ``0 … n-1`` (:mod:`loco.studies.seeds`).
+
+    ``runs`` holds the per-track metrics and the track-mean spectrum of each case; ``results``
+    the time history on track 0 (None when it failed, with its message in ``errors``), for the
+    time-history and valve figures.
+    """
 
     damper_laws: dict[str, dampers.Damper]
     """The yaw damper laws compared, by name (in order)."""
-    results: dict[tuple[str, str], loco.SimulationResult | None]
-    errors: dict[tuple[str, str], str]
+    runs: dict[tuple[str, str], TrackRuns]
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
-    _spectra: dict[tuple[str, str], Spectrum] = field(
-        default_factory=dict, init=False, repr=False, compare=False
-    )
 
     @property
     def dampers(self) -> tuple[str, ...]:
         """Names of the yaw dampers compared, in order."""
         return tuple(self.damper_laws)
+
+    @property
+    def n_tracks(self) -> int:
+        """Tracks per case."""
+        return min((r.n_tracks for r in self.runs.values()), default=0)
+
+    @property
+    def results(self) -> dict[tuple[str, str], loco.SimulationResult | None]:
+        """Time history of each case on track 0 (None when that run failed)."""
+        return {k: r.first for k, r in self.runs.items()}
+
+    @property
+    def errors(self) -> dict[tuple[str, str], str]:
+        """Why runs failed, by case: the messages of its failed tracks."""
+        out = {}
+        for key, r in self.runs.items():
+            failed = [f"track {i}: {m}" for i, m in enumerate(r.messages) if r.status[i] != 0]
+            if failed:
+                out[key] = "; ".join(failed)
+        return out
 
     def has_valve(self, damper: str) -> bool:
         """Whether the yaw damper law ``damper`` has a frequency valve (an FSD)."""
@@ -76,51 +116,82 @@ class FsdComparison:
         return law is not None and law.kind == "fsd"
 
     def spectra(self) -> dict[tuple[str, str], Spectrum]:
-        """Spectrum of each case's quantity (A_yc on S_low, A_yb on S_high), by (scenario,
-        damper): the PSD curve by :func:`loco.metrics.psd`, its peak from the run's metrics.
-        Computed once, on the first call."""
-        if not self._spectra:
-            for scenario, label, _ in CASES:
-                for name in self.dampers:
-                    result = self.results.get((scenario, name))
-                    if result is not None:
-                        self._spectra[(scenario, name)] = spectrum(result, label)
-        return self._spectra
+        """Track-mean spectrum of each case's quantity (A_yc on S_low, A_yb on S_high), by
+        (scenario, damper); its dominant frequency and peak are the track means of the run
+        metrics."""
+        return {
+            key: r.spectra[SCENARIO_QUANTITY[key[0]]]
+            for key, r in self.runs.items()
+            if SCENARIO_QUANTITY[key[0]] in r.spectra
+        }
+
+    def values(self, scenario: str, damper: str, column: str) -> FloatArray:
+        """Per-track values of a :data:`SUMMARY_COLUMNS` entry for one case, shape (n,)."""
+        runs = self.runs[(scenario, damper)]
+        label = SCENARIO_QUANTITY[scenario]
+        metric = {
+            "rms": RMS_METRICS[label],
+            "dominant_hz": PEAK_METRICS[label][0],
+            "psd_peak": PEAK_METRICS[label][1],
+        }.get(column, column)
+        if column == VALVE_FRACTION and not self.has_valve(damper):
+            return np.full(runs.n_tracks, np.nan)
+        return runs.values(metric)
 
     def table(self) -> pd.DataFrame:
-        """One row per (scenario, damper): the quantity, its rms (m/s²), dominant frequency (Hz),
-        PSD peak ((m/s²)²/Hz) (all three the core's run metrics), W_y and A_yb peak of the run,
+        """One row per (scenario, damper): the quantity, and of its rms (m/s²), dominant
+        frequency (Hz), PSD peak ((m/s²)²/Hz) (the core's run metrics), W_y and A_yb peak, and
         the fraction of time the yaw damper valves were closed (FSD only, NaN for dampers without
-        a valve), and the error message of a failed run."""
-        spectra = self.spectra()
+        a valve) the mean over the tracks (column named as the quantity) and its 95 % interval
+        (``_low``, ``_high``); the number of tracks that finished, and why the others failed."""
+        errors = self.errors
         rows = []
         for scenario, label, channel in CASES:
             for name in self.dampers:
-                result = self.results.get((scenario, name))
                 row: dict[str, Any] = {
                     "scenario": scenario,
                     "damper": name,
                     "quantity": label,
                     "channel": channel,
                 }
-                if result is None:
-                    row["error"] = self.errors.get((scenario, name), "")
-                    rows.append(row)
-                    continue
-                sp = spectra[(scenario, name)]
-                valves = [result.channel(c) for c in valve_channels(result)]
-                valves = valves if self.has_valve(name) else []
-                row.update(
-                    rms=result.metrics[RMS_METRICS[label]],
-                    dominant_hz=sp.dominant_hz,
-                    psd_peak=sp.peak,
-                    wy_max=result.metrics["wy_max"],
-                    ayb_peak_lp=result.metrics["ayb_peak_lp"],
-                    valve_closed_fraction=float(np.mean(valves)) if valves else np.nan,
-                    error="",
-                )
+                for column in SUMMARY_COLUMNS:
+                    ci = mean_interval(self.values(scenario, name, column))
+                    row.update({column: ci.mean, f"{column}_low": ci.low,
+                                f"{column}_high": ci.high})  # fmt: skip
+                row["n_tracks"] = int(np.count_nonzero(self.runs[(scenario, name)].status == 0))
+                row["error"] = errors.get((scenario, name), "")
                 rows.append(row)
         return pd.DataFrame(rows)
+
+    def tracks_frame(self) -> pd.DataFrame:
+        """The numbers behind the statistics: one row per (scenario, damper, track)."""
+        rows = []
+        for (scenario, name), runs in self.runs.items():
+            for i in range(runs.n_tracks):
+                row: dict[str, Any] = {"scenario": scenario, "damper": name, "track": i,
+                                       "status": int(runs.status[i])}  # fmt: skip
+                for column in SUMMARY_COLUMNS:
+                    row[column] = float(self.values(scenario, name, column)[i])
+                row["message"] = runs.messages[i]
+                rows.append(row)
+        return pd.DataFrame(rows)
+
+    def rankings(self) -> list[Ranking]:
+        """Per scenario, the dampers ranked by the PSD peak of its quantity and by the metric
+        that judges it (:data:`JUDGED_BY`), with paired tests over the shared tracks."""
+        out = []
+        for scenario, label, _ in CASES:
+            for column, name in (("psd_peak", f"PSD peak of {label}"),
+                                 (JUDGED_BY[scenario], JUDGED_BY[scenario])):  # fmt: skip
+                values = {d: self.values(scenario, d, column) for d in self.dampers}
+                out.append(rank(values, label=scenario, metric=name))
+        return out
+
+    def rankings_frame(self) -> pd.DataFrame:
+        """Every pairwise test of :meth:`rankings`: scenario, metric, pair, geometric-mean ratio
+        with its 95 % interval, p values (t, Holm-adjusted, Wilcoxon), significance, and the
+        ranking and whether it is significant."""
+        return pd.DataFrame([row for r in self.rankings() for row in r.rows()])
 
 
 def valve_open_fractions(cmp: FsdComparison) -> pd.DataFrame:
@@ -151,11 +222,45 @@ def valve_channels(result: loco.SimulationResult) -> list[str]:
     return [c for c in result.channel_names if c.endswith(VALVE_SUFFIX)]
 
 
+def valve_closed_fraction(result: loco.SimulationResult) -> float:
+    """Fraction of the record the yaw damper valves of a run were closed (mean over the valves;
+    NaN without valve channels)."""
+    channels = valve_channels(result)
+    return float(np.mean([result.channel(c) for c in channels])) if channels else np.nan
+
+
 #: Track run before the recorded section, m. The FSD starts in its defined state (valve closed,
 #: high damping) and its trigger needs a few cycles of the slow carbody sway to open the valve:
 #: at 200 km/h on S_low that took 3–7 s (170–390 m) from the start of the run. 500 m of lead-in
 #: compares the dampers in their steady regime, every damper on the same track and section.
 LEAD_IN = 500.0
+
+
+def comparison_settings(
+    *,
+    speed_kmh: float = 200.0,
+    distance: float = 500.0,
+    lead_in: float = LEAD_IN,
+    seed: int = 0,
+    n_tracks: int = 1,
+    vehicle: loco.Locomotive | None = None,
+    damper_set: Mapping[str, dampers.Damper] = DAMPERS,
+) -> dict[str, Any]:
+    """Everything the comparison's numbers depend on (the arguments of
+    :func:`run_fsd_comparison` but the thread count and progress bar), JSON-ready: its settings
+    and its stage hash."""
+    return {
+        "loco_version": loco.__version__,
+        "speed_kmh": speed_kmh,
+        "distance_m": distance,
+        "lead_in_m": lead_in,
+        "track_seed": seed,
+        "n_tracks": n_tracks,
+        "tracks": f"ChaCha streams 0-{n_tracks - 1} of track seed {seed}",
+        "cases": [list(c) for c in CASES],
+        "dampers": {n: dampers.describe(d) for n, d in damper_set.items()},
+        "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
+    }
 
 
 def run_fsd_comparison(
@@ -164,11 +269,14 @@ def run_fsd_comparison(
     distance: float = 500.0,
     lead_in: float = LEAD_IN,
     seed: int = 0,
+    n_tracks: int = 1,
     vehicle: loco.Locomotive | None = None,
     damper_set: Mapping[str, dampers.Damper] = DAMPERS,
     threads: int | None = None,
+    progress: bool = False,
 ) -> FsdComparison:
-    """Run every damper of ``damper_set`` on S_low and S_high.
+    """Run every damper of ``damper_set`` on S_low and S_high, each on tracks
+    ``0 … n_tracks-1`` (one batch per case, the tracks as samples).
 
     Parameters
     ----------
@@ -179,157 +287,86 @@ def run_fsd_comparison(
     lead_in : float
         Track run before the recorded ``distance`` and not recorded, m (:data:`LEAD_IN`).
     seed : int
-        Track irregularity seed, the same for every run.
+        Track irregularity seed; track ``j`` is its ChaCha stream ``j``, the same for every
+        damper (common random numbers: the paired tests of :meth:`FsdComparison.rankings`).
+    n_tracks : int
+        Tracks per case; the table gives the mean and 95 % interval over them.
     vehicle : Locomotive, optional
         Default: the embedded locomotive.
     damper_set : mapping of str to Damper
         Yaw damper laws by name (default YD1, YD2, FSD).
     threads : int, optional
-        Runs at once (default: all cores).
+        Threads of each batch (default: all cores).
+    progress : bool
+        Show the batch progress bars.
 
-    A run that fails with :class:`loco.SimulationError` (divergence, derailment) is kept as
-    None with its message, so one unstable configuration does not lose the others.
+    A run that fails (divergence, derailment) is flagged with its message and left out of the
+    statistics, so one unstable configuration does not lose the others.
     """
     start = time.perf_counter()
-    vehicle = vehicle if vehicle is not None else loco.Locomotive.default()
-    keys = [(s, name) for s, _, _ in CASES for name in damper_set]
-
-    def one(key: tuple[str, str]) -> tuple[loco.SimulationResult | None, str]:
-        scenario = loco.Scenario(
-            scenario=key[0],
-            speed=speed_kmh / 3.6,
-            distance=distance,
-            lead_in=lead_in,
-            seed=seed,
-            yaw_damper=damper_set[key[1]],
-        )
-        try:
-            return loco.simulate(vehicle, scenario), ""
-        except loco.SimulationError as e:
-            return None, f"{type(e).__name__}: {e}"
-
-    workers = max(1, min(len(keys), threads or os.cpu_count() or 1))
-    with ThreadPoolExecutor(max_workers=workers) as pool:
-        outcomes = list(pool.map(one, keys))
-    settings = {
-        "loco_version": loco.__version__,
-        "speed_kmh": speed_kmh,
-        "distance_m": distance,
-        "lead_in_m": lead_in,
-        "track_seed": seed,
-        "cases": [list(c) for c in CASES],
-        "dampers": {n: dampers.describe(d) for n, d in damper_set.items()},
-        "vehicle_overrides": dict(vehicle.overrides),
-    }
+    settings = comparison_settings(
+        speed_kmh=speed_kmh,
+        distance=distance,
+        lead_in=lead_in,
+        seed=seed,
+        n_tracks=n_tracks,
+        vehicle=vehicle,
+        damper_set=damper_set,
+    )
+    runs = {}
+    for scenario_name, label, channel in CASES:
+        for name, law in damper_set.items():
+            scenario = loco.Scenario(
+                scenario=scenario_name,
+                speed=speed_kmh / 3.6,
+                distance=distance,
+                lead_in=lead_in,
+                seed=seed,
+                yaw_damper=law,
+            )
+            runs[(scenario_name, name)] = run_over_tracks(
+                scenario,
+                n_tracks,
+                vehicle=vehicle,
+                threads=threads,
+                progress=progress,
+                spectra=((label, channel, PEAK_METRICS[label]),),
+                keep_first=True,
+                derived={VALVE_FRACTION: valve_closed_fraction},
+            )
     return FsdComparison(
         damper_laws=dict(damper_set),
-        results={k: r for k, (r, _) in zip(keys, outcomes, strict=True)},
-        errors={k: m for k, (_, m) in zip(keys, outcomes, strict=True) if m},
+        runs=runs,
         settings=settings,
         seconds=time.perf_counter() - start,
     )
 
 
-def plot_time_histories(cmp: FsdComparison, path: str | Path) -> Path:
-    """Save A_yc (S_low) and A_yb (S_high) against time, one panel per damper, as PNG."""
-    plt = pyplot()
-    fig, axes = plt.subplots(
-        len(CASES),
-        len(cmp.dampers),
-        figsize=(4 * len(cmp.dampers), 6.5),
-        sharex=True,
-        sharey="row",
-        squeeze=False,
-        layout="constrained",
-    )
-    for r, (scenario, label, channel) in enumerate(CASES):
-        for c, name in enumerate(cmp.dampers):
-            ax = axes[r, c]
-            result = cmp.results.get((scenario, name))
-            if result is None:
-                ax.text(0.5, 0.5, "run failed", ha="center", transform=ax.transAxes)
-            else:
-                ax.plot(result.time, result.channel(channel), lw=0.5, color=f"C{c}")
-            ax.set_title(f"{label}, {scenario}, {name}")
-            ax.grid(True, alpha=0.3)
-            if c == 0:
-                ax.set_ylabel(f"{label} (m/s²)")
-            if r == len(CASES) - 1:
-                ax.set_xlabel("time (s)")
-    fig.suptitle(f"{cmp.settings.get('speed_kmh', 0.0):g} km/h (loco {loco.__version__})")
-    return save_figure(fig, path)
-
-
-def plot_psds(cmp: FsdComparison, path: str | Path, *, fmax: float = 20.0) -> Path:
-    """Save the PSDs of A_yc (S_low) and A_yb (S_high), dampers overlaid, as PNG (0 to ``fmax``
-    Hz)."""
-    plt = pyplot()
-    spectra = cmp.spectra()
-    fig, axes = plt.subplots(1, len(CASES), figsize=(11, 4), layout="constrained")
-    for ax, (scenario, label, channel) in zip(axes, CASES, strict=True):
-        lines = {name: spectra.get((scenario, name)) for name in cmp.dampers}
-        draw_spectra(ax, lines, label, f"{label} ({channel}), {scenario}", fmax)
-    return save_figure(fig, path)
-
-
-def plot_valves(cmp: FsdComparison, path: str | Path, *, damper: str = "FSD") -> Path:
-    """Save the valve state (0 open … 1 closed) of every yaw damper of the ``damper`` runs on
-    each scenario against time, one row per yaw damper, as PNG."""
-    plt = pyplot()
-    runs = [(s, cmp.results.get((s, damper))) for s, _, _ in CASES]
-    names = next((valve_channels(r) for _, r in runs if r is not None), [])
-    fig, axes = plt.subplots(
-        max(1, len(names)),
-        len(runs),
-        figsize=(11, 1.3 * len(names) + 1.5),
-        sharex=True,
-        squeeze=False,
-        layout="constrained",
-    )
-    for c, (scenario, result) in enumerate(runs):
-        for r, channel in enumerate(names):
-            ax = axes[r, c]
-            if result is not None:
-                ax.fill_between(result.time, result.channel(channel), step="mid", alpha=0.6)
-            ax.set_ylim(-0.1, 1.1)
-            ax.set_yticks([0, 1], ["open", "closed"])
-            ax.set_title(f"{scenario}: {channel.removesuffix(VALVE_SUFFIX)}", fontsize=9)
-        axes[-1, c].set_xlabel("time (s)")
-    fig.suptitle(f"{damper} frequency valve state (0 open: low damping; 1 closed: high damping)")
-    return save_figure(fig, path)
-
-
-def _histories_frame(cmp: FsdComparison) -> pd.DataFrame:
-    """Wide table on the common time axis: each case's quantity per damper, the valve channels."""
-    columns: dict[str, Any] = {}
-    for scenario, label, channel in CASES:
-        for name in cmp.dampers:
-            result = cmp.results.get((scenario, name))
-            if result is None:
-                continue
-            columns.setdefault("time_s", result.time)
-            columns[f"{scenario}_{name}_{label}"] = result.channel(channel)
-            if cmp.has_valve(name):
-                for v in valve_channels(result):
-                    columns[f"{scenario}_{name}_{v}"] = result.channel(v)
-    length = min((len(v) for v in columns.values()), default=0)
-    return pd.DataFrame({k: np.asarray(v)[:length] for k, v in columns.items()})
-
-
 def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
     """Write figures, tables and settings into ``out_dir``; return the record.
 
-    Files: ``fsd_time_histories.png``, ``fsd_psd.png``, ``fsd_valve.png`` (and
-    ``fsd_valve_hydraulic.png`` for FSD-H), ``fsd_valve_open_fraction.csv``, ``fsd_summary.csv``
-    (dominant frequency and PSD peak per run), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
+    Files: ``fsd_time_histories.png`` and ``fsd_valve.png`` (track 0; and
+    ``fsd_valve_hydraulic.png`` for FSD-H), ``fsd_psd.png`` (track-mean PSDs), ``fsd_peaks.png``
+    (per-track values, means and 95 % intervals), ``fsd_summary.csv`` (mean and interval per
+    case), ``fsd_tracks.csv`` (every track), ``fsd_rankings.csv`` (the paired tests),
+    ``fsd_valve_open_fraction.csv`` (track 0), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
     ``fsd_comparison.json`` (loco version and settings).
     """
+    from loco.studies.fsd_figures import (
+        histories_frame,
+        plot_peaks,
+        plot_psds,
+        plot_time_histories,
+        plot_valves,
+    )
+
     start = time.perf_counter()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     figures = [
         plot_time_histories(cmp, out / "fsd_time_histories.png"),
         plot_psds(cmp, out / "fsd_psd.png"),
+        plot_peaks(cmp, out / "fsd_peaks.png"),
         plot_valves(cmp, out / "fsd_valve.png"),
         *(
             [plot_valves(cmp, out / "fsd_valve_hydraulic.png", damper="FSD-H")]
@@ -343,20 +380,30 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         pd.DataFrame({"scenario": s, "damper": d, "frequency_hz": sp.frequency, "psd": sp.density})
         for (s, d), sp in spectra.items()
     ]
+    rankings = cmp.rankings()
     tables = [
         save_table(summary, out / "fsd_summary.csv"),
+        save_table(cmp.rankings_frame(), out / "fsd_rankings.csv"),
+        save_table(cmp.tracks_frame(), out / "fsd_tracks.csv"),
         save_table(
             pd.concat(psd, ignore_index=True) if psd else pd.DataFrame(), out / "fsd_psd.csv"
         ),
-        save_table(_histories_frame(cmp), out / "fsd_time_histories.csv"),
+        save_table(histories_frame(cmp), out / "fsd_time_histories.csv"),
         save_table(valve_open_fractions(cmp), out / "fsd_valve_open_fraction.csv"),
         save_json(cmp.settings, out / "fsd_comparison.json"),
     ]
     lead_in = cmp.settings.get("lead_in_m", 0.0)
-    notes = f"Recorded after {lead_in:g} m of lead-in (start transients settled). " + "; ".join(
-        f"{s} {d}: {SCENARIO_QUANTITY[s]} dominant {sp.dominant_hz:.2f} Hz, "
-        f"PSD peak {sp.peak:.3g} (m/s²)²/Hz"
-        for (s, d), sp in spectra.items()
+    peaks = "; ".join(
+        f"{row.scenario} {row.damper}: {row.quantity} dominant {row.dominant_hz:.2f} Hz, "
+        f"PSD peak {row.psd_peak:.3g} [{row.psd_peak_low:.3g}, {row.psd_peak_high:.3g}] "
+        "(m/s²)²/Hz"
+        for row in summary.itertuples()
+    )
+    notes = (
+        f"Recorded after {lead_in:g} m of lead-in (start transients settled), on "
+        f"{cmp.n_tracks} tracks, the same for every damper; mean [95 % interval]: {peaks}.\n\n"
+        "**Rankings** (lower is better; `<` a significant step, `≈` none):\n\n"
+        + "\n".join(f"- {r.statement()}." for r in rankings)
     )
     openings = valve_open_fractions(cmp)
     bogies = openings[openings["valve"] == openings["bogie"]]
@@ -364,7 +411,7 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         f"{r.scenario} {r.damper} {r.bogie} {r.open_fraction:.2f}" for r in bogies.itertuples()
     )
     if cmp.errors:
-        notes += ". Failed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())
+        notes += "\n\nFailed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())
     return StudyRecord(
         name=out.name,
         title="YD1, YD2 and FSD yaw dampers on S_low and S_high (SPEC §6.6)",
@@ -372,5 +419,5 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         tables=tables,
         parameters={k: v for k, v in cmp.settings.items() if k != "dampers"},
         seconds=cmp.seconds + time.perf_counter() - start,
-        notes=notes + ".",
+        notes=notes,
     )

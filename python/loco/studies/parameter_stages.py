@@ -1,5 +1,5 @@
 """Sobol' sensitivity and NSGA-II optimisation of the parameter study (SPEC §6.2, §6.4), on the
-simulator and on the RBF surrogates trained from the Latin hypercube Monte Carlo of
+simulator and on the surrogates trained from the Latin hypercube Monte Carlo of
 :mod:`loco.studies.parameter_study`.
 
 - :func:`run_sensitivity`: Sobol' first- and total-order indices of W_y (S_low) and A_yb
@@ -40,7 +40,7 @@ from loco.studies.sensitivity import (
     sobol_convergence,
     sobol_direct,
 )
-from loco.studies.surrogate import RBFNetwork
+from loco.studies.surrogate import Predictor
 
 __all__ = ["run_optimisation", "run_sensitivity"]
 
@@ -65,7 +65,8 @@ def run_sensitivity(
     surrogate_base: int = 4096,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
-    models: Sequence[RBFNetwork] | None = None,
+    models: Sequence[Predictor] | None = None,
+    surrogate_name: str = "SPEC RBF network",
 ) -> StudyRecord:
     """Sobol' indices of both objectives, direct (simulator) and on the surrogates.
 
@@ -86,10 +87,15 @@ def run_sensitivity(
         Seed of the Saltelli designs, the bootstrap intervals and the networks' K-means.
     log_target : bool
         The surrogates learn log(objective) (:data:`loco.studies.parameter_study.LOG_TARGET`).
-    models : sequence of RBFNetwork, optional
-        The surrogates already fitted on ``(x_lhs, y_lhs)`` by
-        :func:`~loco.studies.parameter_study.fit_surrogates` with ``log_target`` and ``seed``
-        (default: fitted here).
+    models : sequence of Predictor, optional
+        The surrogates fitted on ``(x_lhs, y_lhs)`` with ``log_target``, one per objective: the
+        ones :func:`~loco.studies.surrogate_validation.select_surrogates` chose
+        (``selection.model``)
+        or the SPEC networks of :func:`~loco.studies.parameter_study.fit_surrogates` (the
+        default, fitted here).
+    surrogate_name : str
+        Which surrogates ``models`` are, for the figures and settings (e.g. ``W_y: gp, A_yb:
+        gp``).
 
     Writes ``sobol_<label>.png`` (S1 and ST, direct and surrogate side by side),
     ``sobol_convergence.png``, ``sobol_summary.csv`` (one row per parameter), ``sobol_indices.csv``
@@ -115,7 +121,7 @@ def run_sensitivity(
         seed=seed,
     )
     direct_label = f"direct, Saltelli N={n_direct} ({n_direct * (len(names()) + 2)} runs)"
-    surrogate_label = f"RBF surrogate of {len(x_lhs)} LHS runs"
+    surrogate_label = f"surrogate ({surrogate_name}) of {len(x_lhs)} LHS runs"
     figures = []
     for d, s in zip(direct, surrogate, strict=True):
         path = out_dir / f"sobol_{d.metric}.png"
@@ -150,11 +156,12 @@ def run_sensitivity(
         "lhs_samples": len(x_lhs),
         "seed": seed,
         "log_target": log_target,
+        "surrogate": surrogate_name,
         **setup.settings(),
     }
     notes = (
         f"Total-order indices, direct: {_st_summary(direct)}. "
-        f"On the surrogate: {_st_summary(surrogate)}. "
+        f"On the surrogate ({surrogate_name}): {_st_summary(surrogate)}. "
         f"Saltelli base samples dropped for failed runs: {dropped}."
     )
     return StudyRecord(
@@ -221,12 +228,13 @@ def run_optimisation(
     n_verify: int = 10,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
-    models: Sequence[RBFNetwork] | None = None,
+    models: Sequence[Predictor] | None = None,
+    surrogate_name: str = "SPEC RBF network",
 ) -> StudyRecord:
-    """NSGA-II on the RBF surrogates of W_y and A_yb, then ``n_verify`` Pareto points spread along
-    the front re-simulated (``setup``) to measure the surrogate's error. ``models`` are the
-    surrogates already fitted on ``(x_lhs, y_lhs)`` (as in :func:`run_sensitivity`; default:
-    fitted here).
+    """NSGA-II on the surrogates of W_y and A_yb, then ``n_verify`` Pareto points spread along
+    the front re-simulated (``setup``) to measure the surrogate's error. ``models`` and
+    ``surrogate_name`` are as in :func:`run_sensitivity` (default: the SPEC networks, fitted
+    here).
 
     Writes ``pareto.png`` (front and parameter distributions), ``pareto_verification.png``,
     ``pareto_front.csv``, ``pareto_verification.csv`` and ``optimisation.json``.
@@ -244,7 +252,8 @@ def run_optimisation(
     plot_pareto(
         result,
         out_dir / "pareto.png",
-        title=f"NSGA-II on the RBF surrogates: population {pop_size}, {n_gen} generations",
+        title=f"NSGA-II on the surrogates ({surrogate_name}): population {pop_size}, "
+        f"{n_gen} generations",
     )
     picked = pick_spread(result, n_verify)
     check = verify_points(result, picked, setup.evaluator())
@@ -264,13 +273,15 @@ def run_optimisation(
         "seed": seed,
         "log_target": log_target,
         "lhs_samples": len(x_lhs),
+        "surrogate": surrogate_name,
         "nsga2_seconds": result.seconds,
         **setup.settings(),
     }
     notes = (
         f"{len(result.f)} Pareto points; W_y from {result.f[:, 0].min():.3g} to "
         f"{result.f[:, 0].max():.3g}, A_yb from {result.f[:, 1].min():.3g} to "
-        f"{result.f[:, 1].max():.3g} m/s² (surrogate). Surrogate error at {len(picked)} "
+        f"{result.f[:, 1].max():.3g} m/s² (surrogate: {surrogate_name}). Surrogate error at "
+        f"{len(picked)} "
         "re-simulated points, mean |relative error|: "
         + ", ".join(
             f"{o} {e['mean_abs_rel_error']:.1%} (max {e['max_abs_rel_error']:.1%})"

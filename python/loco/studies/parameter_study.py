@@ -1,5 +1,6 @@
 """The parameter study of SPEC §6.2–6.3 on the simulator: its objectives, the Latin hypercube
-Monte Carlo and the cross-validated RBF surrogate.
+Monte Carlo, and the SPEC RBF surrogates (their validation and the choice of the surrogate the
+Sobol' and NSGA-II stages use are in :mod:`loco.studies.surrogate_validation`).
 
 Objectives (:data:`OBJECTIVES`): the Sperling lateral index W_y on S_low (metric ``wy_max``: the
 low-conicity ride, carbody sway) and the bogie frame lateral acceleration A_yb on S_high (metric
@@ -8,7 +9,8 @@ distance on one synthesised track. The yaw damper is the vehicle file's Maxwell 
 damping and series stiffness are the study parameters C_sx and K_ncsx (no ``yaw_damper`` law in
 the scenario, which would override them).
 
-The surrogates (:func:`fit_surrogates`, :func:`surrogate_objectives`) learn the logarithm of the
+The surrogates (:func:`fit_surrogates`, :func:`surrogate_objectives`,
+:func:`loco.studies.surrogate_validation.select_surrogates`) learn the logarithm of the
 objectives (:data:`LOG_TARGET`). Sobol' indices and NSGA-II on top of these are in
 :mod:`loco.studies.parameter_stages`; every function here writes its figures (PNG) and numbers
 (CSV/JSON) into a directory and returns the
@@ -25,7 +27,6 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
-from sklearn.model_selection import KFold
 
 import loco
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
@@ -34,14 +35,11 @@ from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sampling import latin_hypercube
 from loco.studies.surrogate import (
+    Predictor,
     RBFNetwork,
-    cross_validate,
     fit_per_output,
-    parity_plot,
-    r2_score,
     surrogate_evaluator,
 )
-from loco.studies.surrogate_reference import gaussian_process_r2
 
 __all__ = [
     "LOG_TARGET",
@@ -52,7 +50,6 @@ __all__ = [
     "load_monte_carlo",
     "run_monte_carlo",
     "surrogate_objectives",
-    "validate_surrogate",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -238,9 +235,11 @@ def fit_surrogates(
 
 
 def surrogate_objectives(
-    models: Sequence[RBFNetwork], *, log_target: bool = LOG_TARGET
+    models: Sequence[Predictor], *, log_target: bool = LOG_TARGET
 ) -> Evaluator:
-    """The fitted networks as an evaluator of the objectives in their own units (the exponential
+    """The fitted surrogates (SPEC networks or the ones
+    :func:`loco.studies.surrogate_validation.select_surrogates` chose) as an
+    evaluator of the objectives in their own units (the exponential
     of the networks' outputs with ``log_target``), for Sobol' indices and NSGA-II."""
     inner = surrogate_evaluator(models, names())
     if not log_target:
@@ -258,119 +257,3 @@ def _to_target(y: FloatArray, log_target: bool) -> FloatArray:
     if np.any(y[np.isfinite(y)] <= 0):
         raise ValueError("log_target needs objectives > 0")
     return np.asarray(np.log(y), dtype=np.float64)
-
-
-def validate_surrogate(
-    x: FloatArray,
-    y: FloatArray,
-    out_dir: Path,
-    *,
-    n_splits: int = 5,
-    n_centres: int = 10,
-    seed: int = 0,
-    log_target: bool = LOG_TARGET,
-    models: Sequence[RBFNetwork] | None = None,
-) -> StudyRecord:
-    """k-fold held-out R² of the RBF network (SPEC §6.3) for each objective, with parity plots
-    of the held-out predictions. Failed samples (NaN) are left out of that objective's folds.
-    With ``log_target`` the networks learn log(objective) and the R² is that of their
-    exponential against the objective itself (the folds are those of
-    :func:`loco.studies.surrogate.cross_validate`: scikit-learn ``KFold`` shuffled with ``seed``).
-
-    Writes ``surrogate_r2.csv`` (R² per fold), ``surrogate_predictions.csv`` (held-out
-    prediction of every sample), ``parity_<label>.png`` and ``surrogate.json`` (settings, the mean
-    R² and the width factor the network fitted on all samples chose). ``models`` are those
-    networks, one per objective, if already fitted by :func:`fit_surrogates` with the same
-    ``log_target``, ``n_centres`` and ``seed`` (default: fitted here); pass them on to the
-    Sobol' and NSGA-II stages, which use the same networks.
-    """
-    if models is None:
-        models = fit_surrogates(x, y, log_target=log_target, n_centres=n_centres, seed=seed)
-    folds, predictions, figures, summary = [], [], [], {}
-    for j, objective in enumerate(OBJECTIVES):
-        ok = np.isfinite(y[:, j])
-        cv = cross_validate(
-            x[ok],
-            _to_target(y[ok, j], log_target),
-            n_splits=n_splits,
-            seed=seed,
-            n_centres=n_centres,
-            bounds=bounds_si(),
-        )
-        held_out = np.exp(cv.predictions[:, 0]) if log_target else cv.predictions[:, 0]
-        splits = KFold(n_splits=n_splits, shuffle=True, random_state=seed).split(x[ok])
-        r2 = np.array([r2_score(y[ok, j][test], held_out[test])[0] for _, test in splits])
-        folds.append(
-            pd.DataFrame({"objective": objective.label, "fold": np.arange(len(r2)), "r2": r2})
-        )
-        predictions.append(
-            pd.DataFrame(
-                {
-                    "objective": objective.label,
-                    "sample": np.flatnonzero(ok),
-                    "simulated": y[ok, j],
-                    "predicted": held_out,
-                }
-            )
-        )
-        figures.append(
-            parity_plot(
-                y[ok, j],
-                held_out,
-                out_dir / f"parity_{objective.label}.png",
-                label=objective.label,
-                unit=objective.unit,
-                title=f"RBF surrogate of {objective.label} ({objective.scenario}), "
-                f"{n_splits}-fold held out",
-            )
-        )
-        gp_r2, gp_noise = gaussian_process_r2(
-            x[ok],
-            _to_target(y[ok, j], log_target),
-            bounds_si(),
-            n_splits=n_splits,
-            seed=seed,
-            log_target=log_target,
-        )
-        summary[objective.label] = {
-            "r2_mean": float(r2.mean()),
-            "r2_min": float(r2.min()),
-            "reference_gp_r2": gp_r2,
-            "reference_gp_noise_share": gp_noise,
-            "n_samples": int(ok.sum()),
-            "width_factor": models[j].width_factor_,
-        }
-    settings = {
-        "loco_version": loco.__version__,
-        "n_splits": n_splits,
-        "n_centres": n_centres,
-        "seed": seed,
-        "width_rule": "nearest (Moody-Darken), factor by leave-one-out",
-        "log_target": log_target,
-        "r2": summary,
-    }
-    return StudyRecord(
-        name=out_dir.name,
-        title="RBF surrogate: held-out R² by k-fold cross-validation (SPEC §6.3)",
-        figures=figures,
-        tables=[
-            save_table(pd.concat(folds, ignore_index=True), out_dir / "surrogate_r2.csv"),
-            save_table(
-                pd.concat(predictions, ignore_index=True), out_dir / "surrogate_predictions.csv"
-            ),
-            save_json(settings, out_dir / "surrogate.json"),
-        ],
-        parameters={k: v for k, v in settings.items() if k != "r2"},
-        notes="Mean held-out R²: "
-        + ", ".join(
-            f"{k} {v['r2_mean']:.3f} (worst fold {v['r2_min']:.3f})" for k, v in summary.items()
-        )
-        + " (SPEC §6.3 asks for > 0.9). Reference on the same folds, a Gaussian process with one"
-        " length scale per parameter (`loco.studies.surrogate_reference`): "
-        + ", ".join(
-            f"{k} R² {v['reference_gp_r2']:.3f}, unexplained noise share "
-            f"{v['reference_gp_noise_share']:.3f}"
-            for k, v in summary.items()
-        )
-        + ": where it is much higher, 10 Gaussian units are too few for these responses.",
-    )

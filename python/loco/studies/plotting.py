@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["DPI", "Spectrum", "draw_spectra", "pyplot", "save_figure"]
+__all__ = ["DPI", "Spectrum", "draw_intervals", "draw_spectra", "pyplot", "save_figure"]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -80,3 +80,25 @@ def draw_spectra(
     )
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(title="dominant frequency, PSD peak", fontsize=8)
+
+
+def draw_intervals(ax: Any, groups: Mapping[str, npt.ArrayLike], ylabel: str, title: str) -> None:
+    """Draw one column per group: the value of every track (dots), their mean (bar) and its 95 %
+    interval (error bar, :func:`loco.studies.statistics.mean_interval`); NaN tracks are left
+    out."""
+    from loco.studies.statistics import mean_interval
+
+    for k, values in enumerate(groups.values()):
+        v = np.asarray(values, dtype=np.float64)
+        v = v[np.isfinite(v)]
+        ci = mean_interval(v)
+        ax.bar(k, ci.mean, color=f"C{k}", alpha=0.35, width=0.6)
+        if ci.n > 1:
+            ax.errorbar(k, ci.mean, yerr=[[ci.mean - ci.low], [ci.high - ci.mean]],
+                        color="k", capsize=5, lw=1.2)  # fmt: skip
+        ax.plot(np.full(len(v), k) + np.linspace(-0.12, 0.12, len(v)), v, "o", ms=3,
+                color=f"C{k}")  # fmt: skip
+    ax.set_xticks(range(len(groups)), list(groups))
+    ax.set(ylabel=ylabel, title=title)
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, axis="y", alpha=0.3)

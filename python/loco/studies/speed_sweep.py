@@ -1,9 +1,11 @@
 """Speed sweep of SPEC §6.1: W_y and A_yb against speed for S_low, S_norm and S_high with the YD2
 yaw damper, and the PSDs of A_yc and A_yb at 200 km/h.
 
-One ``loco.run_batch`` per scenario, one row per speed (the batch's ``speed`` column, m/s), all on
-the same synthesised track (``seed``) over the same ``distance``; the time histories of the row at
-``psd_speed_kmh`` are kept for the PSDs.
+One ``loco.run_batch`` per (scenario, speed) with the tracks as samples
+(:func:`loco.studies.seeds.run_over_tracks`): track ``j`` is ChaCha stream ``j`` of the track seed,
+the same at every speed and in every scenario, over the same recorded ``distance``. Every quantity
+is given as its mean over the tracks with the 95 % interval (:mod:`loco.studies.statistics`); the
+PSDs at ``psd_speed_kmh`` are the track means of the per-track Welch PSDs.
 
 Quantities (names of the package's channels and metrics):
 
@@ -30,8 +32,10 @@ import pandas as pd
 
 import loco
 from loco import _loco, dampers, metrics
-from loco.studies.plotting import Spectrum, draw_spectra, pyplot, save_figure
+from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.seeds import run_over_tracks
+from loco.studies.statistics import Interval, mean_interval
 
 __all__ = [
     "A_YB",
@@ -42,11 +46,10 @@ __all__ = [
     "RMS_METRICS",
     "SCENARIOS",
     "SpeedSweep",
-    "plot_psds",
-    "plot_sweep",
     "run_speed_sweep",
     "save_speed_sweep",
     "spectrum",
+    "sweep_settings",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -90,11 +93,12 @@ def spectrum(result: loco.SimulationResult, quantity: str) -> Spectrum:
 
 @dataclass(frozen=True)
 class SpeedSweep:
-    """Metrics of every (scenario, speed) and the spectra at ``psd_speed_kmh``.
+    """Metrics of every (scenario, speed, track) and the track-mean spectra at ``psd_speed_kmh``.
 
-    ``metrics`` has shape (scenarios, speeds, metrics), NaN where a run failed (``status`` != 0,
-    reason in ``messages``). ``spectra[(scenario, label)]`` holds the PSD of A_yc or A_yb at
-    ``psd_speed_kmh`` (absent when that run failed).
+    ``metrics`` has shape (scenarios, speeds, tracks, metrics), NaN where a run failed
+    (``status`` != 0, reason in ``messages[scenario][speed][track]``). ``spectra[(scenario,
+    label)]`` holds the track-mean PSD of A_yc or A_yb at ``psd_speed_kmh`` (absent when every
+    run there failed); track ``j`` is stream ``j`` of the track seed (:mod:`loco.studies.seeds`).
     """
 
     scenarios: tuple[str, ...]
@@ -102,43 +106,73 @@ class SpeedSweep:
     metric_names: list[str]
     metrics: FloatArray
     status: npt.NDArray[np.int64]
-    messages: list[list[str]]
+    messages: list[list[list[str]]]
     psd_speed_kmh: float
     spectra: dict[tuple[str, str], Spectrum]
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
 
+    @property
+    def n_tracks(self) -> int:
+        """Tracks run per (scenario, speed)."""
+        return int(self.metrics.shape[2])
+
     def metric(self, name: str) -> FloatArray:
-        """One metric, shape (scenarios, speeds)."""
-        return np.asarray(self.metrics[:, :, self.metric_names.index(name)], dtype=np.float64)
+        """One metric, shape (scenarios, speeds, tracks)."""
+        return np.asarray(self.metrics[..., self.metric_names.index(name)], dtype=np.float64)
+
+    def speed_index(self, speed_kmh: float) -> int:
+        """Index of the sweep speed nearest ``speed_kmh`` (km/h)."""
+        return int(np.abs(self.speeds_kmh - speed_kmh).argmin())
+
+    def interval(self, scenario: str, metric: str, speed_kmh: float) -> Interval:
+        """Mean and 95 % interval over the tracks of ``metric`` for ``scenario`` at the sweep
+        speed nearest ``speed_kmh``."""
+        i, j = self.scenarios.index(scenario), self.speed_index(speed_kmh)
+        return mean_interval(self.metric(metric)[i, j])
 
     def at(self, scenario: str, metric: str, speed_kmh: float) -> float:
-        """Value of ``metric`` for ``scenario`` at the sweep speed nearest ``speed_kmh``."""
-        j = int(np.abs(self.speeds_kmh - speed_kmh).argmin())
-        return float(self.metric(metric)[self.scenarios.index(scenario), j])
+        """Track mean of ``metric`` for ``scenario`` at the sweep speed nearest ``speed_kmh``."""
+        return self.interval(scenario, metric, speed_kmh).mean
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per (scenario, speed): speed in km/h and m/s, status, message, every metric."""
+        """One row per (scenario, speed, track): speed in km/h and m/s, status, message, every
+        metric."""
         rows = []
         for i, scenario in enumerate(self.scenarios):
             for j, v in enumerate(self.speeds_kmh):
-                row: dict[str, Any] = {"scenario": scenario, "speed_kmh": v, "speed_mps": v / 3.6}
-                row["status"] = int(self.status[i, j])
-                row["message"] = self.messages[i][j]
-                row.update(zip(self.metric_names, self.metrics[i, j].tolist(), strict=True))
-                rows.append(row)
+                for k in range(self.n_tracks):
+                    row: dict[str, Any] = {
+                        "scenario": scenario,
+                        "speed_kmh": v,
+                        "speed_mps": v / 3.6,
+                        "track": k,
+                        "status": int(self.status[i, j, k]),
+                        "message": self.messages[i][j][k],
+                    }
+                    row.update(zip(self.metric_names, self.metrics[i, j, k].tolist(), strict=True))
+                    rows.append(row)
         return pd.DataFrame(rows)
 
     def summary_frame(self) -> pd.DataFrame:
-        """W_y and A_yb (the :data:`SWEEP_METRICS`) per speed, one column per scenario."""
-        frame = pd.DataFrame({"speed_kmh": self.speeds_kmh})
-        for metric, label in SWEEP_METRICS:
-            for i, scenario in enumerate(self.scenarios):
-                frame[f"{label.split(' ')[0]} {scenario}"] = self.metric(metric)[i]
-        return frame
+        """W_y and A_yb (the :data:`SWEEP_METRICS`) per scenario and speed: track mean and 95 %
+        interval (``low``, ``high``), and the number of tracks that finished."""
+        rows = []
+        for scenario in self.scenarios:
+            for v in self.speeds_kmh:
+                row: dict[str, Any] = {"scenario": scenario, "speed_kmh": v}
+                for metric, label in SWEEP_METRICS:
+                    ci = self.interval(scenario, metric, v)
+                    name = label.split(" ")[0]
+                    row.update({f"{name} mean": ci.mean, f"{name} low": ci.low,
+                                f"{name} high": ci.high})  # fmt: skip
+                row["n_tracks"] = ci.n
+                rows.append(row)
+        return pd.DataFrame(rows)
 
     def psd_frame(self) -> pd.DataFrame:
-        """The spectra as a tidy table: scenario, quantity, channel, frequency_hz, psd."""
+        """The track-mean spectra as a tidy table: scenario, quantity, channel, frequency_hz,
+        psd."""
         channels = self.settings.get("channels", CHANNELS)
         frames = [
             pd.DataFrame(
@@ -160,20 +194,53 @@ class SpeedSweep:
         return str(self.settings.get("yaw_damper_label", "yaw damper"))
 
     def peaks_frame(self) -> pd.DataFrame:
-        """Dominant frequency (Hz) and PSD peak ((m/s²)²/Hz) of each spectrum (the core's run
-        metrics :data:`PEAK_METRICS`)."""
-        return pd.DataFrame(
-            [
-                {
-                    "scenario": s,
-                    "quantity": q,
-                    "speed_kmh": self.psd_speed_kmh,
-                    "dominant_hz": sp.dominant_hz,
-                    "psd_peak": sp.peak,
-                }
-                for (s, q), sp in self.spectra.items()
-            ]
-        )
+        """Dominant frequency (Hz) and PSD peak ((m/s²)²/Hz) of each quantity at
+        ``psd_speed_kmh`` (the core's run metrics :data:`PEAK_METRICS`): track mean and 95 %
+        interval."""
+        rows = []
+        for s in self.scenarios:
+            for q, (frequency, peak) in PEAK_METRICS.items():
+                row: dict[str, Any] = {"scenario": s, "quantity": q}
+                row["speed_kmh"] = self.psd_speed_kmh
+                for column, metric in (("dominant_hz", frequency), ("psd_peak", peak)):
+                    ci = self.interval(s, metric, self.psd_speed_kmh)
+                    row.update({column: ci.mean, f"{column}_low": ci.low,
+                                f"{column}_high": ci.high})  # fmt: skip
+                row["n_tracks"] = ci.n
+                rows.append(row)
+        return pd.DataFrame(rows)
+
+
+def sweep_settings(
+    speeds_kmh: Sequence[float],
+    *,
+    scenarios: Sequence[str] = SCENARIOS,
+    psd_speed_kmh: float = 200.0,
+    distance: float = 500.0,
+    lead_in: float = 0.0,
+    seed: int = 0,
+    n_tracks: int = 1,
+    vehicle: loco.Locomotive | None = None,
+    yaw_damper: dampers.Damper | None = dampers.YD2,
+) -> dict[str, Any]:
+    """Everything the sweep's numbers depend on (the arguments of :func:`run_speed_sweep` but the
+    thread count and progress bar), JSON-ready: the sweep's settings and its stage hash."""
+    speeds = np.unique(np.append(np.asarray(speeds_kmh, dtype=np.float64), psd_speed_kmh))
+    return {
+        "loco_version": loco.__version__,
+        "scenarios": list(scenarios),
+        "speeds_kmh": speeds.tolist(),
+        "psd_speed_kmh": psd_speed_kmh,
+        "distance_m": distance,
+        "lead_in_m": lead_in,
+        "track_seed": seed,
+        "n_tracks": n_tracks,
+        "tracks": f"ChaCha streams 0-{n_tracks - 1} of track seed {seed}",
+        "yaw_damper": None if yaw_damper is None else dampers.describe(yaw_damper),
+        "yaw_damper_label": dampers.label(yaw_damper),
+        "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
+        "channels": dict(CHANNELS),
+    }
 
 
 def run_speed_sweep(
@@ -182,13 +249,16 @@ def run_speed_sweep(
     scenarios: Sequence[str] = SCENARIOS,
     psd_speed_kmh: float = 200.0,
     distance: float = 500.0,
+    lead_in: float = 0.0,
     seed: int = 0,
+    n_tracks: int = 1,
     vehicle: loco.Locomotive | None = None,
     yaw_damper: dampers.Damper | None = dampers.YD2,
     threads: int | None = None,
     progress: bool = True,
 ) -> SpeedSweep:
-    """Run the sweep: for each scenario one batch over ``speeds_kmh`` (plus ``psd_speed_kmh``).
+    """Run the sweep: for each scenario and speed (``speeds_kmh`` plus ``psd_speed_kmh``) one
+    batch over tracks ``0 … n_tracks-1``.
 
     Parameters
     ----------
@@ -199,10 +269,15 @@ def run_speed_sweep(
     psd_speed_kmh : float
         Speed of the PSDs, km/h (SPEC: 200).
     distance : float
-        Track length run at every speed, m (the simulated time is distance / speed; the metrics
-        need at least 5 s).
+        Recorded track length at every speed, m (the simulated time is distance / speed; the
+        metrics need at least 5 s).
+    lead_in : float
+        Track run before the recorded ``distance`` and not recorded, m.
     seed : int
-        Track irregularity seed, shared by every run.
+        Track irregularity seed; track ``j`` is its ChaCha stream ``j``, the same at every speed
+        and in every scenario.
+    n_tracks : int
+        Tracks per (scenario, speed); the tables give their mean and 95 % interval.
     vehicle : Locomotive, optional
         Default: the embedded locomotive.
     yaw_damper : Damper, optional
@@ -213,49 +288,48 @@ def run_speed_sweep(
         Show the batch progress bar.
     """
     start = time.perf_counter()
-    speeds = np.unique(np.append(np.asarray(speeds_kmh, dtype=np.float64), psd_speed_kmh))
-    psd_row = int(np.flatnonzero(speeds == psd_speed_kmh)[0])
+    settings = sweep_settings(
+        speeds_kmh,
+        scenarios=scenarios,
+        psd_speed_kmh=psd_speed_kmh,
+        distance=distance,
+        lead_in=lead_in,
+        seed=seed,
+        n_tracks=n_tracks,
+        vehicle=vehicle,
+        yaw_damper=yaw_damper,
+    )
+    speeds = np.asarray(settings["speeds_kmh"], dtype=np.float64)
     values, status, messages = [], [], []
     spectra: dict[tuple[str, str], Spectrum] = {}
     names: list[str] = []
+    peak_specs = tuple((q, CHANNELS[q], PEAK_METRICS[q]) for q in CHANNELS)
     for name in scenarios:
-        scenario = loco.Scenario(
-            scenario=name,
-            speed=psd_speed_kmh / 3.6,
-            distance=distance,
-            seed=seed,
-            yaw_damper=yaw_damper,
-        )
-        batch = loco.run_batch(
-            (speeds / 3.6)[:, None],
-            ["speed"],
-            vehicle=vehicle,
-            scenario=scenario,
-            threads=threads,
-            seed=seed,
-            progress=progress,
-            histories=(psd_row,),
-        )
-        names = list(batch.metric_names)
-        values.append(np.asarray(batch.metrics, dtype=np.float64))
-        status.append(np.asarray(batch.status, dtype=np.int64))
-        messages.append([str(m) for m in batch.messages])
-        history = batch.histories.get(psd_row)
-        if history is not None:
-            for label in CHANNELS:
-                spectra[(name, label)] = spectrum(history, label)
-    settings = {
-        "loco_version": loco.__version__,
-        "scenarios": list(scenarios),
-        "speeds_kmh": speeds.tolist(),
-        "psd_speed_kmh": psd_speed_kmh,
-        "distance_m": distance,
-        "track_seed": seed,
-        "yaw_damper": None if yaw_damper is None else dampers.describe(yaw_damper),
-        "yaw_damper_label": dampers.label(yaw_damper),
-        "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
-        "channels": dict(CHANNELS),
-    }
+        rows = []
+        for v in speeds:
+            scenario = loco.Scenario(
+                scenario=name,
+                speed=v / 3.6,
+                distance=distance,
+                lead_in=lead_in,
+                seed=seed,
+                yaw_damper=yaw_damper,
+            )
+            runs = run_over_tracks(
+                scenario,
+                n_tracks,
+                vehicle=vehicle,
+                threads=threads,
+                progress=progress,
+                spectra=peak_specs if v == psd_speed_kmh else (),
+            )
+            names = runs.metric_names
+            rows.append(runs)
+            for label, sp in runs.spectra.items():
+                spectra[(name, label)] = sp
+        values.append(np.stack([r.metrics for r in rows]))
+        status.append(np.stack([r.status for r in rows]))
+        messages.append([r.messages for r in rows])
     return SpeedSweep(
         scenarios=tuple(scenarios),
         speeds_kmh=speeds,
@@ -270,63 +344,28 @@ def run_speed_sweep(
     )
 
 
-def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
-    """Save W_y and A_yb against speed (one line per scenario, failed runs as ×) as PNG."""
-    plt = pyplot()
-    fig, axes = plt.subplots(1, len(SWEEP_METRICS), figsize=(11, 4), layout="constrained")
-    for ax, (metric, label) in zip(axes, SWEEP_METRICS, strict=True):
-        values = sweep.metric(metric)
-        for i, scenario in enumerate(sweep.scenarios):
-            (line,) = ax.plot(sweep.speeds_kmh, values[i], marker="o", ms=3, label=scenario)
-            failed = (sweep.status[i] != 0) | ~np.isfinite(values[i])
-            if failed.any():
-                ax.plot(
-                    sweep.speeds_kmh[failed],
-                    np.full(int(failed.sum()), 0.03),
-                    "x",
-                    color=line.get_color(),
-                    ms=8,
-                    transform=ax.get_xaxis_transform(),
-                )
-        ax.axvline(sweep.psd_speed_kmh, color="0.7", lw=0.8, ls="--")
-        ax.set(
-            xlabel="speed (km/h)",
-            ylabel=label,
-            title=f"{label.split(' ')[0]}, {sweep.damper_label}",
-        )
-        ax.set_ylim(bottom=0.0)
-        ax.grid(True, alpha=0.3)
-        ax.legend()
-    fig.suptitle(f"Speed sweep (loco {loco.__version__}; × = failed run or too short a record)")
-    return save_figure(fig, path)
-
-
-def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Path:
-    """Save the PSDs of A_yc and A_yb at ``psd_speed_kmh`` (one line per scenario) as PNG;
-    ``fmax`` is the upper frequency shown, Hz."""
-    channels = sweep.settings.get("channels", CHANNELS)
-    fig, axes = pyplot().subplots(1, len(channels), figsize=(11, 4), layout="constrained")
-    for ax, (label, channel) in zip(axes, channels.items(), strict=True):
-        lines = {sc: sweep.spectra.get((sc, label)) for sc in sweep.scenarios}
-        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}"
-        draw_spectra(ax, lines, label, title, fmax)
-    return save_figure(fig, path)
+def _ci(interval: Interval) -> str:
+    return f"{interval.mean:.2f} [{interval.low:.2f}, {interval.high:.2f}]"
 
 
 def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
     """Write the figures, tables and settings of ``sweep`` into ``out_dir``; return the record.
 
-    Files: ``speed_sweep.png``, ``speed_sweep_psd.png``, ``speed_sweep_summary.csv`` (W_y and
-    A_yb per speed and scenario), ``speed_sweep.csv`` (every metric of every run),
-    ``speed_sweep_peaks.csv`` (dominant frequency and PSD peak), ``speed_sweep_psd.csv`` (the
-    spectra) and ``speed_sweep.json`` (loco version and settings).
+    Files: ``speed_sweep.png``, ``speed_sweep_psd.png``, ``speed_sweep_peaks.png``,
+    ``speed_sweep_summary.csv`` (W_y and A_yb per speed and scenario, mean and 95 % interval over
+    the tracks), ``speed_sweep.csv`` (every metric of every run), ``speed_sweep_peaks.csv``
+    (dominant frequency and PSD peak, mean and interval), ``speed_sweep_psd.csv`` (the
+    track-mean spectra) and ``speed_sweep.json`` (loco version and settings).
     """
+    from loco.studies.speed_sweep_figures import plot_peaks, plot_psds, plot_sweep
+
     start = time.perf_counter()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     figures = [
         plot_sweep(sweep, out / "speed_sweep.png"),
         plot_psds(sweep, out / "speed_sweep_psd.png"),
+        plot_peaks(sweep, out / "speed_sweep_peaks.png"),
     ]
     tables = [
         save_table(sweep.summary_frame(), out / "speed_sweep_summary.csv"),
@@ -337,11 +376,15 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
     ]
     v = sweep.psd_speed_kmh
     parts = [
-        f"{s}: W_y {sweep.at(s, 'wy_max', v):.2f}, A_yb {sweep.at(s, 'ayb_peak_lp', v):.2f} m/s²"
+        f"{s}: W_y {_ci(sweep.interval(s, 'wy_max', v))}, "
+        f"A_yb {_ci(sweep.interval(s, 'ayb_peak_lp', v))} m/s²"
         for s in sweep.scenarios
     ]
     n_failed = int((sweep.status != 0).sum())
-    notes = f"At {v:g} km/h with {sweep.damper_label}: " + "; ".join(parts) + "."
+    notes = (
+        f"At {v:g} km/h with {sweep.damper_label}, mean [95 % interval] over {sweep.n_tracks} "
+        "tracks: " + "; ".join(parts) + "."
+    )
     if n_failed:
         notes += (
             f" {n_failed} of {sweep.status.size} runs failed (× in the figure, NaN in the CSV)."

@@ -33,7 +33,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Literal, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -45,6 +45,7 @@ from loco.studies.plotting import pyplot, save_figure
 
 __all__ = [
     "CrossValidation",
+    "Predictor",
     "RBFNetwork",
     "cross_validate",
     "fit_per_output",
@@ -294,8 +295,15 @@ def fit_per_output(
     return models
 
 
-def surrogate_evaluator(models: Sequence[RBFNetwork], input_names: Sequence[str]) -> Evaluator:
-    """An :class:`~loco.studies.evaluators.Evaluator` from fitted networks, outputs side by side.
+class Predictor(Protocol):
+    """A fitted surrogate of one output: ``predict(x (n, k) in SI) -> (n,)``."""
+
+    def predict(self, x: npt.ArrayLike) -> FloatArray: ...
+
+
+def surrogate_evaluator(models: Sequence[Predictor], input_names: Sequence[str]) -> Evaluator:
+    """An :class:`~loco.studies.evaluators.Evaluator` from fitted surrogates (e.g.
+    :class:`RBFNetwork`), outputs side by side.
 
     ``input_names`` are the columns the networks were trained on; the evaluator checks that it is
     called with the same names in the same order.

@@ -21,9 +21,46 @@ from sklearn.model_selection import KFold
 
 from loco.studies.surrogate import r2_score
 
-__all__ = ["gaussian_process_r2"]
+__all__ = ["GaussianProcessSurrogate", "gaussian_process_r2"]
 
 FloatArray = npt.NDArray[np.float64]
+
+
+class GaussianProcessSurrogate:
+    """ARD Gaussian process on inputs scaled to [0, 1] by ``bounds`` (k, 2): a constant times a
+    squared-exponential kernel with one length scale per parameter (1e-2 to 1e3 of the box) plus
+    white noise, targets normalised (scikit-learn ``GaussianProcessRegressor``, hyperparameters by
+    maximum marginal likelihood, ``seed``).
+
+    After :meth:`fit`: ``length_scales_`` (k,) in box units (a length at the upper bound means the
+    parameter does not matter), ``noise_share_`` (white-noise variance over the target variance:
+    the share no smooth function of the parameters explains)."""
+
+    def __init__(self, bounds: npt.ArrayLike, *, seed: int = 0) -> None:
+        self.bounds = np.asarray(bounds, dtype=np.float64)
+        self.seed = seed
+
+    def _scale(self, x: npt.ArrayLike) -> FloatArray:
+        z = np.atleast_2d(np.asarray(x, dtype=np.float64))
+        return (z - self.bounds[:, 0]) / (self.bounds[:, 1] - self.bounds[:, 0])
+
+    def fit(self, x: FloatArray, y: FloatArray) -> GaussianProcessSurrogate:
+        kernel = ConstantKernel(1.0) * RBF(np.full(x.shape[1], 0.5), (1e-2, 1e3)) + WhiteKernel(
+            1e-2, (1e-8, 1e1)
+        )
+        self.model_ = GaussianProcessRegressor(kernel, normalize_y=True, random_state=self.seed)
+        with warnings.catch_warnings():
+            # A length scale at its upper bound means that parameter does not matter: expected.
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            self.model_.fit(self._scale(x), np.asarray(y, dtype=np.float64))
+        kernel_ = self.model_.kernel_
+        self.length_scales_ = np.atleast_1d(kernel_.k1.k2.length_scale).astype(float).tolist()
+        # normalize_y scales the target to unit variance, so the noise level is already a share.
+        self.noise_share_ = float(kernel_.k2.noise_level)
+        return self
+
+    def predict(self, x: npt.ArrayLike) -> FloatArray:
+        return np.asarray(self.model_.predict(self._scale(x)), dtype=np.float64)
 
 
 def gaussian_process_r2(
@@ -35,30 +72,16 @@ def gaussian_process_r2(
     seed: int = 0,
     log_target: bool = False,
 ) -> tuple[float, float]:
-    """Mean held-out R² of an ARD Gaussian process on the folds of ``KFold(n_splits, shuffle,
-    seed)``, and the fitted noise share (white-noise variance over the target's variance, on all
-    samples). ``x`` (n, k) in SI is scaled to [0, 1] by ``bounds`` (k, 2); ``target`` (n,) is the
-    fitted quantity (log of the objective when ``log_target``); R² is scored on the objective.
+    """Mean held-out R² of :class:`GaussianProcessSurrogate` on the folds of ``KFold(n_splits,
+    shuffle, seed)``, and the fitted noise share on all samples. ``x`` (n, k) in SI, scaled by
+    ``bounds`` (k, 2); ``target`` (n,) is the fitted quantity (log of the objective when
+    ``log_target``); R² is scored on the objective.
     """
-    z = (x - bounds[:, 0]) / (bounds[:, 1] - bounds[:, 0])
     objective = np.exp(target) if log_target else target
-
-    def model() -> GaussianProcessRegressor:
-        kernel = ConstantKernel(1.0) * RBF(np.full(x.shape[1], 0.5), (1e-2, 1e3)) + WhiteKernel(
-            1e-2, (1e-8, 1e1)
-        )
-        return GaussianProcessRegressor(kernel, normalize_y=True, random_state=seed)
-
     scores = []
-    with warnings.catch_warnings():
-        # A length scale at its upper bound means that parameter does not matter: expected.
-        warnings.simplefilter("ignore", ConvergenceWarning)
-        for train, test in KFold(n_splits=n_splits, shuffle=True, random_state=seed).split(z):
-            predicted = model().fit(z[train], target[train]).predict(z[test])
-            if log_target:
-                predicted = np.exp(predicted)
-            scores.append(float(r2_score(objective[test], predicted)[0]))
-        full = model().fit(z, target)
-    noise = float(full.kernel_.k2.noise_level)
-    # normalize_y scales the target to unit variance, so the noise level is already a share.
-    return float(np.mean(scores)), noise
+    for train, test in KFold(n_splits=n_splits, shuffle=True, random_state=seed).split(x):
+        predicted = GaussianProcessSurrogate(bounds, seed=seed).fit(x[train], target[train])
+        p = predicted.predict(x[test])
+        scores.append(float(r2_score(objective[test], np.exp(p) if log_target else p)[0]))
+    full = GaussianProcessSurrogate(bounds, seed=seed).fit(x, target)
+    return float(np.mean(scores)), full.noise_share_

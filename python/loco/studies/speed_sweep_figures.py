@@ -1,0 +1,81 @@
+"""Figures of the speed sweep (:mod:`loco.studies.speed_sweep`): W_y and A_yb against speed with
+their 95 % intervals over the tracks, the track-mean PSDs and the PSD peaks at the PSD speed."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+import loco
+from loco.studies.plotting import draw_intervals, draw_spectra, pyplot, save_figure
+from loco.studies.speed_sweep import CHANNELS, PEAK_METRICS, SWEEP_METRICS, SpeedSweep
+
+__all__ = ["plot_peaks", "plot_psds", "plot_sweep"]
+
+
+def plot_sweep(sweep: SpeedSweep, path: str | Path) -> Path:
+    """Save W_y and A_yb against speed as PNG: one line per scenario through the track means,
+    error bars the 95 % interval over the tracks, failed runs as × at the bottom."""
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(SWEEP_METRICS), figsize=(11, 4), layout="constrained")
+    for ax, (metric, label) in zip(axes, SWEEP_METRICS, strict=True):
+        for scenario in sweep.scenarios:
+            i = sweep.scenarios.index(scenario)
+            cis = [sweep.interval(scenario, metric, v) for v in sweep.speeds_kmh]
+            mean = np.array([c.mean for c in cis])
+            err = np.array([[c.mean - c.low, c.high - c.mean] for c in cis]).T
+            line = ax.errorbar(sweep.speeds_kmh, mean, yerr=np.nan_to_num(err), marker="o",
+                               ms=3, capsize=3, label=scenario)  # fmt: skip
+            failed = (sweep.status[i] != 0).any(axis=1) | ~np.isfinite(mean)
+            if failed.any():
+                ax.plot(
+                    sweep.speeds_kmh[failed],
+                    np.full(int(failed.sum()), 0.03),
+                    "x",
+                    color=line.lines[0].get_color(),
+                    ms=8,
+                    transform=ax.get_xaxis_transform(),
+                )
+        ax.axvline(sweep.psd_speed_kmh, color="0.7", lw=0.8, ls="--")
+        ax.set(
+            xlabel="speed (km/h)",
+            ylabel=label,
+            title=f"{label.split(' ')[0]}, {sweep.damper_label}",
+        )
+        ax.set_ylim(bottom=0.0)
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+    fig.suptitle(
+        f"Speed sweep (loco {loco.__version__}): mean and 95 % interval over {sweep.n_tracks} "
+        "tracks; × = the run failed on a track (the mean is that of the others)"
+    )
+    return save_figure(fig, path)
+
+
+def plot_psds(sweep: SpeedSweep, path: str | Path, *, fmax: float = 20.0) -> Path:
+    """Save the PSDs of A_yc and A_yb at ``psd_speed_kmh`` (one line per scenario) as PNG;
+    ``fmax`` is the upper frequency shown, Hz."""
+    channels = sweep.settings.get("channels", CHANNELS)
+    fig, axes = pyplot().subplots(1, len(channels), figsize=(11, 4), layout="constrained")
+    for ax, (label, channel) in zip(axes, channels.items(), strict=True):
+        lines = {sc: sweep.spectra.get((sc, label)) for sc in sweep.scenarios}
+        title = f"{label} ({channel}), {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}"
+        draw_spectra(ax, lines, label, title, fmax)
+    fig.suptitle(f"Mean over {sweep.n_tracks} tracks of the per-track PSDs; legend: track means")
+    return save_figure(fig, path)
+
+
+def plot_peaks(sweep: SpeedSweep, path: str | Path) -> Path:
+    """Save the PSD peaks of A_yc and A_yb at ``psd_speed_kmh`` per scenario as PNG: every
+    track, the mean and its 95 % interval."""
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(PEAK_METRICS), figsize=(11, 4), layout="constrained")
+    i = sweep.speed_index(sweep.psd_speed_kmh)
+    for ax, (label, (_, peak)) in zip(axes, PEAK_METRICS.items(), strict=True):
+        values = sweep.metric(peak)
+        groups = {s: values[k, i] for k, s in enumerate(sweep.scenarios)}
+        draw_intervals(ax, groups, f"PSD peak of {label} ((m/s²)²/Hz)",
+                       f"{label}, {sweep.psd_speed_kmh:g} km/h, {sweep.damper_label}")  # fmt: skip
+    fig.suptitle(f"PSD peaks over {sweep.n_tracks} tracks: mean and 95 % interval")
+    return save_figure(fig, path)

@@ -1,0 +1,176 @@
+"""The surrogate stage of the parameter study (SPEC §6.3): the held-out R² of the SPEC RBF network
+and of the other candidates of :mod:`loco.studies.surrogate_selection` on the Latin hypercube
+Monte Carlo, and which surrogate the Sobol' and NSGA-II stages
+(:mod:`loco.studies.parameter_stages`) use.
+
+The models learn log(objective) (:data:`loco.studies.parameter_study.LOG_TARGET`) and are scored on
+the objective itself.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+import loco
+from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray
+from loco.studies.parameters import bounds_si
+from loco.studies.report import StudyRecord, jsonable, save_json, save_table
+from loco.studies.surrogate import parity_plot
+from loco.studies.surrogate_selection import (
+    DESCRIPTIONS,
+    R2_REQUIRED,
+    SPEC_MODEL,
+    Selection,
+    select_surrogate,
+    selection_settings,
+)
+
+__all__ = ["select_surrogates", "surrogate_label", "validate_surrogate"]
+
+
+def select_surrogates(
+    x: FloatArray,
+    y: FloatArray,
+    *,
+    n_splits: int = 5,
+    seed: int = 0,
+    log_target: bool = LOG_TARGET,
+) -> list[Selection]:
+    """For each objective (column of ``y``), on the samples where it is finite: every candidate
+    of :mod:`loco.studies.surrogate_selection` scored on the same ``n_splits`` folds, the best
+    refitted on all of them (``selection.model``, the surrogate Sobol' and NSGA-II use) and the
+    SPEC network (``selection.spec_model``)."""
+    out = []
+    for j in range(y.shape[1]):
+        ok = np.isfinite(y[:, j])
+        out.append(
+            select_surrogate(
+                x[ok], y[ok, j], bounds_si(), n_splits=n_splits, seed=seed, log_target=log_target
+            )
+        )
+    return out
+
+
+def surrogate_label(selections: Sequence[Selection]) -> str:
+    """Which surrogate each objective uses, e.g. ``W_y: gp, A_yb: gp``."""
+    return ", ".join(f"{o.label}: {s.chosen}" for o, s in zip(OBJECTIVES, selections, strict=True))
+
+
+def validate_surrogate(
+    x: FloatArray,
+    y: FloatArray,
+    out_dir: Path,
+    *,
+    n_splits: int = 5,
+    seed: int = 0,
+    log_target: bool = LOG_TARGET,
+    selections: Sequence[Selection] | None = None,
+) -> StudyRecord:
+    """k-fold held-out R² of the SPEC network (SPEC §6.3) and of the other surrogate candidates
+    for each objective, and which one the surrogate Sobol' indices and NSGA-II use
+    (:func:`select_surrogates`; pass its result as ``selections`` when already computed with the
+    same ``n_splits``, ``seed`` and ``log_target``). Failed samples (NaN) are left out of that
+    objective's folds. With ``log_target`` the models learn log(objective) and the R² is that of
+    their exponential against the objective itself (scikit-learn ``KFold`` shuffled with
+    ``seed``).
+
+    Writes ``surrogate_r2.csv`` (R² per model and fold), ``surrogate_selection.csv`` (mean and
+    worst-fold R² per model, hyperparameters, which was used), ``surrogate_predictions.csv``
+    (held-out prediction of every sample by every model), ``parity_<label>.png`` (the SPEC
+    network), ``parity_<label>_used.png`` (the model used) and ``surrogate.json``.
+    """
+    if selections is None:
+        selections = select_surrogates(x, y, n_splits=n_splits, seed=seed, log_target=log_target)
+    folds, predictions, rows, figures = [], [], [], []
+    summary: dict[str, dict[str, Any]] = {}
+    for j, (objective, sel) in enumerate(zip(OBJECTIVES, selections, strict=True)):
+        ok = np.isfinite(y[:, j])
+        frame = pd.DataFrame({"objective": objective.label, "sample": np.flatnonzero(ok),
+                              "simulated": y[ok, j]})  # fmt: skip
+        for kind, score in sel.scores.items():
+            folds.append(pd.DataFrame({"objective": objective.label, "model": kind,
+                                       "fold": np.arange(len(score.r2_folds)),
+                                       "r2": score.r2_folds}))  # fmt: skip
+            frame[f"predicted_{kind}"] = score.predictions
+            rows.append({
+                "objective": objective.label,
+                "model": kind,
+                "description": DESCRIPTIONS[kind],
+                "r2_mean": score.r2_mean,
+                "r2_min": score.r2_min,
+                "used": kind == sel.chosen,
+                "hyperparameters": json.dumps(jsonable(score.hyperparameters)),
+            })  # fmt: skip
+        predictions.append(frame)
+        for kind, suffix in ((SPEC_MODEL, ""), (sel.chosen, "_used")):
+            figures.append(
+                parity_plot(
+                    y[ok, j],
+                    sel.scores[kind].predictions,
+                    out_dir / f"parity_{objective.label}{suffix}.png",
+                    label=objective.label,
+                    unit=objective.unit,
+                    title=f"{kind} surrogate of {objective.label} ({objective.scenario}), "
+                    f"{n_splits}-fold held out" + (" (used)" if suffix else " (SPEC)"),
+                )
+            )
+        summary[objective.label] = {
+            "spec_r2_mean": sel.scores[SPEC_MODEL].r2_mean,
+            "spec_r2_min": sel.scores[SPEC_MODEL].r2_min,
+            "used": sel.chosen,
+            "used_r2_mean": sel.scores[sel.chosen].r2_mean,
+            "meets_r2_required": sel.meets_requirement,
+            "why": sel.reason(),
+            "r2_mean": {k: v.r2_mean for k, v in sel.scores.items()},
+            "n_samples": int(ok.sum()),
+        }
+    settings = {
+        "loco_version": loco.__version__,
+        "n_splits": n_splits,
+        "seed": seed,
+        "log_target": log_target,
+        **selection_settings(n_splits),
+        "r2": summary,
+    }
+    spec = ", ".join(
+        f"{k} {v['spec_r2_mean']:.3f} (worst fold {v['spec_r2_min']:.3f})"
+        for k, v in summary.items()
+    )
+    used = "; ".join(f"{k}: **{v['used']}**, because {v['why']}" for k, v in summary.items())
+    met = all(v["meets_r2_required"] for v in summary.values())
+    notes = (
+        f"SPEC network (10 Gaussian units) mean held-out R²: {spec} (SPEC §6.3 asks for > "
+        f"{R2_REQUIRED}). Candidates on the same folds (mean held-out R²): "
+        + "; ".join(
+            f"{k}: " + ", ".join(f"{m} {r:.3f}" for m, r in v["r2_mean"].items())
+            for k, v in summary.items()
+        )
+        + f". Surrogate used by the surrogate Sobol' indices and NSGA-II: {used}. "
+        + (
+            f"Both objectives reach R² ≥ {R2_REQUIRED}."
+            if met
+            else f"**Not every objective reaches R² ≥ {R2_REQUIRED}**: the Pareto front rests on a "
+            "surrogate below the required accuracy (see the re-simulated points)."
+        )
+    )
+    return StudyRecord(
+        name=out_dir.name,
+        title="Surrogates: held-out R² by k-fold cross-validation, and the one used (SPEC §6.3)",
+        figures=figures,
+        tables=[
+            save_table(pd.DataFrame(rows), out_dir / "surrogate_selection.csv"),
+            save_table(pd.concat(folds, ignore_index=True), out_dir / "surrogate_r2.csv"),
+            save_table(
+                pd.concat(predictions, ignore_index=True), out_dir / "surrogate_predictions.csv"
+            ),
+            save_json(settings, out_dir / "surrogate.json"),
+        ],
+        parameters={k: v for k, v in settings.items() if k != "r2"},
+        notes=notes,
+    )

@@ -1,0 +1,67 @@
+"""Choosing the surrogate by cross-validation, on a smooth 6-D function whose answer is known:
+10 Gaussian units are too few for it, a Gaussian process fits it."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.stats import qmc
+
+from loco.studies.surrogate import RBFNetwork
+from loco.studies.surrogate_selection import (
+    CANDIDATES,
+    R2_REQUIRED,
+    LargerRBF,
+    select_surrogate,
+)
+
+BOUNDS = np.array([[0.0, 1.0]] * 6)
+
+
+def smooth(z: np.ndarray) -> np.ndarray:
+    """Positive, smooth, one period of structure along two axes and interactions."""
+    g = np.sin(2 * np.pi * z[:, 0]) + np.cos(2 * np.pi * z[:, 1]) * z[:, 2] + 2 * z[:, 3] ** 2
+    return np.exp(0.5 * (g - z[:, 4] * z[:, 5]))
+
+
+@pytest.fixture(scope="module")
+def selection():  # type: ignore[no-untyped-def]
+    x = qmc.LatinHypercube(d=6, seed=1).random(120)
+    return x, select_surrogate(x, smooth(x), BOUNDS, n_splits=3, seed=0, log_target=True)
+
+
+def test_gp_chosen_where_ten_units_are_too_few(selection) -> None:  # type: ignore[no-untyped-def]
+    x, sel = selection
+    assert tuple(sel.scores) == CANDIDATES
+    r2 = {k: s.r2_mean for k, s in sel.scores.items()}
+    assert r2["rbf10"] < R2_REQUIRED < r2["gp"]
+    assert r2["gp"] > 0.95 and r2["gp"] == max(r2.values())
+    assert sel.chosen == "gp" and sel.meets_requirement
+    assert "gp has the highest mean held-out R²" in sel.reason()
+    assert "the SPEC network reaches" in sel.reason()
+    # The model used is refitted on every sample and predicts the function.
+    z = qmc.LatinHypercube(d=6, seed=7).random(200)
+    predicted = np.exp(sel.model.predict(z))
+    residual = np.sum((predicted - smooth(z)) ** 2)
+    assert 1 - residual / np.sum((smooth(z) - smooth(z).mean()) ** 2) > 0.95
+    assert isinstance(sel.spec_model, RBFNetwork) and sel.spec_model.n_centres == 10
+    # Held-out predictions, one per sample, on the objective's scale.
+    assert sel.scores["gp"].predictions.shape == (len(x),)
+
+
+def test_larger_rbf_picks_units_by_leave_one_out() -> None:
+    x = qmc.LatinHypercube(d=6, seed=1).random(120)
+    model = LargerRBF(BOUNDS, seed=0).fit(x, np.log(smooth(x)))
+    assert model.n_centres_ in (10, 15, 20, 30, 40, 60)  # up to half the samples
+    chosen = model.network_.press_
+    for m in (10, 60):
+        other = RBFNetwork(m, bounds=BOUNDS, seed=0).fit(x, np.log(smooth(x)))
+        assert chosen <= other.press_ + 1e-12
+
+
+def test_refuses_failed_samples() -> None:
+    x = np.random.default_rng(0).random((30, 6))
+    y = smooth(x)
+    y[3] = np.nan
+    with pytest.raises(ValueError, match="finite"):
+        select_surrogate(x, y, BOUNDS, n_splits=3)
