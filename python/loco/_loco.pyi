@@ -549,6 +549,7 @@ def run_batch(
     overrides: dict[str, float] = ...,
     threads: int = 0,
     per_sample_track: bool = False,
+    track_streams: list[int] | None = None,
     histories: list[int] = ...,
     progress: Callable[[int, int], object] | None = None,
 ) -> tuple[

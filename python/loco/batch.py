@@ -175,11 +175,6 @@ def run_batch(
     from loco import campaign
 
     if executor is not None or store is not None or campaign.current() is not None:
-        if per_sample_track:
-            raise _loco.ParameterError(
-                "invalid parameter `per_sample_track`: not available in a campaign (an executor "
-                "or a store): each chunk would number its track streams from 0"
-            )
         return campaign.run_campaign(
             params,
             names,
@@ -192,6 +187,7 @@ def run_batch(
             threads=threads,
             progress=progress,
             histories=histories,
+            per_sample_track=per_sample_track,
         )
     vehicle = vehicle or Locomotive.default()
     scenario = scenario or Scenario(scenario="S_high")

@@ -125,7 +125,12 @@ _RAILS = ("y_left", "z_left", "y_right", "z_right")
 
 
 def campaign_inputs(
-    x: FloatArray, names: Sequence[str], vehicle: Locomotive, scenario: Scenario, seed: int
+    x: FloatArray,
+    names: Sequence[str],
+    vehicle: Locomotive,
+    scenario: Scenario,
+    seed: int,
+    per_sample_track: bool = False,
 ) -> dict[str, Any]:
     """Everything a campaign's numbers depend on, as JSON: its key is the hash of this."""
     vehicle_desc = {
@@ -143,6 +148,8 @@ def campaign_inputs(
         "n_samples": len(x),
         "design_sha256": _array_sha(x),
         "seed": int(seed),
+        # Absent when false, so stores written before the option existed keep their keys.
+        **({"per_sample_track": True} if per_sample_track else {}),
         "vehicle": vehicle_desc,
         "vehicle_hash": campaign_key(vehicle_desc),
         "scenario": scenario_desc,
@@ -176,6 +183,7 @@ def run_campaign(
     threads: int | None = None,
     progress: bool = True,
     histories: Sequence[int] = (),
+    per_sample_track: bool = False,
     on_chunk: Callable[[npt.NDArray[np.int64]], object] | None = None,
 ) -> BatchResult:
     """Run the design ``params`` (n, k; columns ``names``) as a campaign.
@@ -185,6 +193,8 @@ def run_campaign(
     the :func:`using` block's, else none: nothing kept), ``chunk_size`` (samples per chunk;
     default: the executor's choice). Samples already in the store are read back, not run (the
     result's ``n_reused`` counts them); samples whose ``histories`` are asked for always run.
+    With ``per_sample_track`` sample ``i`` of the design gets track stream ``i`` whatever chunk
+    runs it, as in one ``loco.run_batch``.
     ``on_chunk(indices)`` is called after each chunk is finished and stored.
     Ctrl-C cancels the running chunks; every chunk finished before stays in the store.
     """
@@ -208,7 +218,7 @@ def run_campaign(
     n = len(x)
     track_seed = int(scenario.seed if seed is None else seed)
     scenario.native(seed=track_seed)  # a bad scenario fails here, before any chunk is sent
-    inputs = campaign_inputs(x, names, vehicle, scenario, track_seed)
+    inputs = campaign_inputs(x, names, vehicle, scenario, track_seed, per_sample_track)
     key = campaign_key(inputs)
     metric_names = list(_loco.run_metric_names())
     metrics = np.full((n, len(metric_names)), np.nan)
@@ -232,7 +242,13 @@ def run_campaign(
     if size < 1:
         raise _loco.ParameterError(f"invalid parameter `chunk_size`: must be >= 1, got {size}")
     chunks = _chunks(todo, x, int(size), keep)
-    job = BatchJob(vehicle=vehicle, scenario=scenario, names=tuple(names), seed=track_seed)
+    job = BatchJob(
+        vehicle=vehicle,
+        scenario=scenario,
+        names=tuple(names),
+        seed=track_seed,
+        per_sample_track=per_sample_track,
+    )
     bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None
     kept: dict[int, Any] = {}
     # Samples read back from the store did not run here: their statistics stay NaN.

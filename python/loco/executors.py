@@ -78,6 +78,8 @@ class BatchJob:
     scenario: Scenario
     names: tuple[str, ...]
     seed: int | None = None
+    #: A track per sample: stream = the sample's index in the campaign's design.
+    per_sample_track: bool = False
 
 
 @dataclass(frozen=True)
@@ -119,6 +121,8 @@ def run_chunk(
             origin=job.vehicle.origin,
             overrides=dict(job.vehicle.overrides),
             threads=threads,
+            per_sample_track=job.per_sample_track,
+            track_streams=[int(i) for i in chunk.indices] if job.per_sample_track else None,
             histories=keep,
             progress=progress,
         )

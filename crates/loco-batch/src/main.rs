@@ -75,6 +75,7 @@ fn run(cli: &Cli) -> loco_core::Result<()> {
         names: samples.names.clone(),
         values: samples.values.clone(),
         per_sample_track: study.per_sample_track,
+        track_streams: None,
         histories: study.histories.clone(),
     };
     let monitor = Arc::new(BatchMonitor::default());

@@ -18,6 +18,7 @@ fn spec(names: &[&str], values: Vec<f64>) -> BatchSpec {
         names: names.iter().map(|s| s.to_string()).collect(),
         values,
         per_sample_track: false,
+        track_streams: None,
         histories: vec![1],
     }
 }
@@ -64,6 +65,29 @@ fn per_sample_tracks_differ_and_stay_deterministic() {
     assert_eq!(bits(&a.metrics), bits(&b.metrics));
     // Same parameters, different tracks (streams 0 and 1): different responses.
     assert_ne!(a.row(0)[1], a.row(1)[1]);
+}
+
+#[test]
+fn given_track_streams_draw_the_whole_batchs_tracks() {
+    // A chunk of a campaign (samples 1 and 0 of the design, in that order) gets the tracks the
+    // whole batch gives those samples.
+    let mut whole = spec(&["C_sx"], vec![8e5, 8e5]);
+    whole.per_sample_track = true;
+    whole.histories.clear();
+    let a = run_batch(&whole, 2, &BatchMonitor::default()).unwrap();
+    let chunk = BatchSpec {
+        track_streams: Some(vec![1, 0]),
+        ..whole.clone()
+    };
+    let b = run_batch(&chunk, 2, &BatchMonitor::default()).unwrap();
+    assert_eq!(bits(b.row(0)), bits(a.row(1)));
+    assert_eq!(bits(b.row(1)), bits(a.row(0)));
+    let wrong = BatchSpec {
+        track_streams: Some(vec![0]),
+        ..whole
+    };
+    let e = run_batch(&wrong, 1, &BatchMonitor::default()).unwrap_err();
+    assert!(e.to_string().contains("track_streams"), "{e}");
 }
 
 #[test]

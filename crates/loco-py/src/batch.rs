@@ -37,8 +37,8 @@ type BatchTuple<'py> = (
 #[pyfunction]
 #[pyo3(signature = (
     scenario, params, names, *, toml_text=None, origin="<vehicle>".to_string(),
-    overrides=BTreeMap::new(), threads=0, per_sample_track=false, histories=Vec::new(),
-    progress=None
+    overrides=BTreeMap::new(), threads=0, per_sample_track=false, track_streams=None,
+    histories=Vec::new(), progress=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn run_batch<'py>(
@@ -51,6 +51,7 @@ fn run_batch<'py>(
     overrides: BTreeMap<String, f64>,
     threads: usize,
     per_sample_track: bool,
+    track_streams: Option<Vec<u64>>,
     histories: Vec<usize>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<BatchTuple<'py>> {
@@ -77,6 +78,7 @@ fn run_batch<'py>(
             names,
             values,
             per_sample_track,
+            track_streams,
             histories,
         };
         core_run_batch(&spec, threads, &worker_monitor)

@@ -41,6 +41,10 @@ pub struct BatchSpec {
     /// Synthesise a different track for every sample (ChaCha stream = sample index) instead of
     /// one track shared by all samples (common random numbers, the default for studies).
     pub per_sample_track: bool,
+    /// With `per_sample_track`, the ChaCha stream of each sample's track (default, `None`: the
+    /// sample's index). A campaign that runs its design in chunks passes each sample's index in
+    /// the whole design, so a chunk draws the same tracks as the whole batch would.
+    pub track_streams: Option<Vec<u64>>,
     /// Indices of the samples whose time histories are returned.
     pub histories: Vec<usize>,
 }
@@ -122,6 +126,19 @@ pub fn run_batch(spec: &BatchSpec, threads: usize, monitor: &BatchMonitor) -> Re
             "histories",
             format!("sample index {i} is out of range for {n} samples"),
         ));
+    }
+    if let Some(streams) = &spec.track_streams {
+        if !spec.per_sample_track || streams.len() != n {
+            return Err(LocoError::input(
+                "track_streams",
+                format!(
+                    "needs per_sample_track and one stream per sample ({n}), got {} with \
+                     per_sample_track = {}",
+                    streams.len(),
+                    spec.per_sample_track
+                ),
+            ));
+        }
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -252,7 +269,7 @@ fn run_sample(
         track: match &spec.scenario.track {
             TrackSpec::Synthetic(p) if spec.per_sample_track => {
                 TrackSpec::Synthetic(crate::track::SynthesisParams {
-                    stream: i as u64,
+                    stream: spec.track_streams.as_ref().map_or(i as u64, |s| s[i]),
                     ..*p
                 })
             }
