@@ -388,3 +388,39 @@ fn rigid_bogie_reproduces_its_wavelength_formula() {
         k.c22_over_c11
     );
 }
+
+/// The recorded yaw-damper stroke is the elongation the damper law sees: for a Maxwell damper
+/// (c in series with k) the recorded force obeys F = c·(ẋ − Ḟ/k), checked with finite
+/// differences of the recorded stroke x and force F; the two dampers of a hunting bogie
+/// stroke in opposition.
+#[test]
+fn yaw_damper_strokes_obey_the_damper_law() {
+    let mut scenario = Scenario::study("S_high", 200.0 / 3.6, 200.0, 0).unwrap();
+    scenario.yaw_damper = Some(loco_core::dampers::Damper::yd1());
+    let out = simulate(ParameterSet::default_vehicle(), &scenario)
+        .unwrap()
+        .output;
+    let x = out.channel("yaw_damper_bogie1_left_stroke").unwrap();
+    let f = out.channel("yaw_damper_bogie1_left_force").unwrap();
+    let right = out.channel("yaw_damper_bogie1_right_stroke").unwrap();
+    let (c, k) = (2.0e5, 22.5e6);
+    let dt = 1.0 / out.sampling_rate;
+    let (mut err, mut norm) = (0.0, 0.0);
+    for i in 1..x.len() - 1 {
+        let xd = (x[i + 1] - x[i - 1]) / (2.0 * dt);
+        let fd = (f[i + 1] - f[i - 1]) / (2.0 * dt);
+        err += (f[i] - c * (xd - fd / k)).powi(2);
+        norm += f[i] * f[i];
+    }
+    assert!(
+        (err / norm).sqrt() < 0.02,
+        "damper law residual {}",
+        (err / norm).sqrt()
+    );
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (ml, mr) = (mean(x), mean(right));
+    let cov: f64 = x.iter().zip(right).map(|(a, b)| (a - ml) * (b - mr)).sum();
+    let var = |v: &[f64], m: f64| v.iter().map(|a| (a - m).powi(2)).sum::<f64>();
+    let corr = cov / (var(x, ml) * var(right, mr)).sqrt();
+    assert!(corr < -0.9, "left/right stroke correlation {corr}");
+}

@@ -79,12 +79,15 @@ enum DamperQuantity {
     Force,
     /// Frequency-valve scale factor, – (channel `<damper>_valve`).
     Valve,
+    /// Stroke (elongation from the static length), m (channel `<damper>_stroke`).
+    Stroke,
 }
 
 /// The damper channels, in order: the force of the yaw and secondary lateral dampers, the valve
 /// of the yaw dampers, then the force of the primary and secondary vertical dampers (added
-/// later, so appended to keep the positions of the older channels).
-const DAMPER_CHANNELS: [(&[DamperRole], DamperQuantity); 3] = [
+/// later, so appended to keep the positions of the older channels), then the strokes of the
+/// yaw and secondary lateral dampers (the frequency response's outputs, issue 11).
+const DAMPER_CHANNELS: [(&[DamperRole], DamperQuantity); 4] = [
     (
         &[DamperRole::Yaw, DamperRole::SecondaryLateral],
         DamperQuantity::Force,
@@ -93,6 +96,10 @@ const DAMPER_CHANNELS: [(&[DamperRole], DamperQuantity); 3] = [
     (
         &[DamperRole::PrimaryVertical, DamperRole::SecondaryVertical],
         DamperQuantity::Force,
+    ),
+    (
+        &[DamperRole::Yaw, DamperRole::SecondaryLateral],
+        DamperQuantity::Stroke,
     ),
 ];
 
@@ -167,6 +174,7 @@ pub(crate) fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<Str
         names.push(match quantity {
             DamperQuantity::Force => format!("{name}_force"),
             DamperQuantity::Valve => format!("{name}_valve"),
+            DamperQuantity::Stroke => format!("{name}_stroke"),
         });
     }
     names
@@ -333,6 +341,7 @@ pub(crate) fn sample(
         push(match quantity {
             DamperQuantity::Force => system.damper_forces[i],
             DamperQuantity::Valve => system.discrete[i].scale_factor,
+            DamperQuantity::Stroke => system.dampers[i].stroke(&system.body_states).0,
         });
     }
 }
