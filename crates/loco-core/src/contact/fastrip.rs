@@ -39,7 +39,7 @@
 use super::fastrip_march::{march, Element, LaneState, Lanes, LANES};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
-use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
+use crate::error::{check_finite, check_non_negative, check_positive, Result};
 use std::f64::consts::PI;
 
 /// Tolerance on φ' = 1, where the slip-length formula is singular (CONTACT's value).
@@ -140,17 +140,12 @@ struct StripSolution {
 impl Fastrip {
     /// Checks the parameters and precomputes the grid.
     pub fn new(params: FastripParams) -> Result<Self> {
-        for (name, n) in [("grid.nx", params.nx), ("grid.ny", params.ny)] {
-            if !(1..=10_000).contains(&n) {
-                return Err(LocoError::param(
-                    name,
-                    format!("must be in 1..=10000, got {n}"),
-                ));
-            }
-        }
-        check_positive("kalker_factor", params.kalker_factor)?;
-        check_positive("shear_modulus", params.shear_modulus)?;
-        let table = KalkerTable::new(params.poisson_ratio)?;
+        let table = super::fastsim::checked_grid_and_material(
+            (params.nx, params.ny),
+            params.kalker_factor,
+            params.shear_modulus,
+            params.poisson_ratio,
+        )?;
         let (nx, ny) = (params.nx, params.ny);
         let strip = |j: usize| {
             let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;

@@ -107,17 +107,12 @@ pub struct Fastsim {
 impl Fastsim {
     /// Checks the parameters and precomputes the grid.
     pub fn new(params: FastsimParams) -> Result<Self> {
-        for (name, n) in [("grid.nx", params.nx), ("grid.ny", params.ny)] {
-            if !(1..=10_000).contains(&n) {
-                return Err(LocoError::param(
-                    name,
-                    format!("must be in 1..=10000, got {n}"),
-                ));
-            }
-        }
-        check_positive("kalker_factor", params.kalker_factor)?;
-        check_positive("shear_modulus", params.shear_modulus)?;
-        let table = KalkerTable::new(params.poisson_ratio)?;
+        let table = checked_grid_and_material(
+            (params.nx, params.ny),
+            params.kalker_factor,
+            params.shear_modulus,
+            params.poisson_ratio,
+        )?;
         let elliptic = params.bound == TractionBound::Elliptic;
         // 1 − x²/a² − y²/b² = s_j² (1 − u_k²) with s_j = a_j/a, u_k = x/a_j: the pressure shape
         // separates into a strip factor and an element factor.
@@ -252,6 +247,27 @@ impl Fastsim {
         }
         CreepForces { fx, fy, mz }
     }
+}
+
+/// Checks a creep solver's grid `(nx, ny)` (1..=10000 each) and material (Kalker factor and
+/// shear modulus G in Pa > 0) and returns the Kalker coefficients for Poisson's ratio ν.
+pub(super) fn checked_grid_and_material(
+    (nx, ny): (usize, usize),
+    kalker_factor: f64,
+    shear_modulus: f64,
+    poisson_ratio: f64,
+) -> Result<KalkerTable> {
+    for (name, n) in [("grid.nx", nx), ("grid.ny", ny)] {
+        if !(1..=10_000).contains(&n) {
+            return Err(LocoError::param(
+                name,
+                format!("must be in 1..=10000, got {n}"),
+            ));
+        }
+    }
+    check_positive("kalker_factor", kalker_factor)?;
+    check_positive("shear_modulus", shear_modulus)?;
+    KalkerTable::new(poisson_ratio)
 }
 
 /// One checked FASTSIM evaluation (builds the solver; for repeated calls keep a [`Fastsim`]).
