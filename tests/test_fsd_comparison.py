@@ -84,9 +84,7 @@ def test_valves(comparison: FsdComparison) -> None:
         # mean over the tracks).
         run = comparison.results[(scenario, damper)]
         assert run is not None
-        assert 1.0 - per_damper["open_fraction"].mean() == pytest.approx(
-            valve_closed_fraction(run)
-        )
+        assert 1.0 - per_damper["open_fraction"].mean() == pytest.approx(valve_closed_fraction(run))
         bogie1 = per_damper[per_damper["bogie"] == "bogie1"]["open_fraction"].mean()
         assert g[g["valve"] == "bogie1"]["open_fraction"].iloc[0] == pytest.approx(bogie1)
     for scenario, _, _ in CASES:
