@@ -152,15 +152,17 @@ def test_damper_bench_command(tmp_path: Path) -> None:
         if row["damper"] != "FSD-H":
             assert measured == pytest.approx(float(row["closed_form_damping_nspm"]), rel=0.01)
             continue
-        # The hydraulic valve opens for part of each stroke below its cut-off (3 mm: about
-        # 2.5 Hz) and stays closed above: between the open and closed modules' closed forms.
+        # The hydraulic valve opens for part of each stroke below its cut-off at the bench's
+        # 3 mm (amplitude dependent: 8.9 Hz for the valve sized on the 0.26 mm sway stroke) and
+        # stays closed above: between the open and closed modules' closed forms, or closed.
         f = float(row["frequency_hz"])
         c1, _ = dampers.maxwell_closed_form(200e3, 15e6, f, 15.0)
         c2, _ = dampers.maxwell_closed_form(800e3, 15e6, f, 15.0)
-        if f > 2.5:
+        _, (cutoff,) = dampers.valve_opening_band(dampers.FSD_HYDRAULIC, [3e-3])
+        if f > cutoff:
             assert measured == pytest.approx(c2, rel=0.01)
         else:
-            assert c1 * 1.05 < measured < c2 * 0.95
+            assert c1 * 0.99 < measured < c2 * 0.95
     with open(tmp_path / "damper_bench_loops.csv") as f:
         loops = list(csv.DictReader(f))
     assert {r["damper"] for r in loops} == {"YD1", "YD2", "FSD", "FSD-H"}
