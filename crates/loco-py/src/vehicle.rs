@@ -15,7 +15,7 @@ use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_P
 use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 use loco_core::vehicle::run_statistics::RunStatistics;
-use loco_core::vehicle::scenario::{linearised, simulate as core_simulate};
+use loco_core::vehicle::scenario::{linearised, simulate_cancellable};
 use loco_core::vehicle::structure::VehicleStructure;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};
@@ -250,10 +250,14 @@ fn simulate<'py>(
     overrides: BTreeMap<String, f64>,
 ) -> PyResult<SimulationTuple<'py>> {
     let scenario = scenario.inner.clone();
-    let result = run_detached(py, move || {
+    // On a worker thread, so that Ctrl-C (checked every 100 ms) stops the run.
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker_cancel = Arc::clone(&cancel);
+    let work = move || {
         let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        core_simulate(set, &scenario)
-    })?;
+        simulate_cancellable(set, &scenario, Some(&worker_cancel))
+    };
+    let result = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     let (time, names, channels) = channels_array(py, result.output)?;
     Ok((
         time,

@@ -376,9 +376,19 @@ pub fn linearised(parameters: ParameterSet, scenario: &Scenario) -> Result<(Vec<
 
 /// Simulates a scenario for a vehicle parameter set: builds the vehicle, contact and track.
 pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<SimulationResult> {
+    simulate_cancellable(parameters, scenario, None)
+}
+
+/// As [`simulate`]; `cancel`, when set from another thread, stops the run with `Interrupted`
+/// within a step (Ctrl-C in the Python front end).
+pub fn simulate_cancellable(
+    parameters: ParameterSet,
+    scenario: &Scenario,
+    cancel: Option<&AtomicBool>,
+) -> Result<SimulationResult> {
     scenario.validate()?;
     let structure = Arc::new(VehicleStructure::new(parameters)?);
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
     let track = Arc::new(build_track(scenario, &structure)?);
-    simulate_prepared(structure, wheel_rail, track, scenario, None)
+    simulate_prepared(structure, wheel_rail, track, scenario, cancel)
 }
