@@ -39,7 +39,7 @@
 use super::fastrip_march::{march, Element, LaneState, Lanes, LANES};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
-use crate::error::{check_finite, check_non_negative, check_positive, Result};
+use crate::error::Result;
 use std::f64::consts::PI;
 
 /// Tolerance on φ' = 1, where the slip-length formula is singular (CONTACT's value).
@@ -383,14 +383,7 @@ pub fn fastrip(
     creepages: &Creepages,
     params: FastripParams,
 ) -> Result<CreepForces> {
-    check_positive("a", a)?;
-    check_positive("b", b)?;
-    // N = 0 (contact lost) and μ = 0 are valid and give zero forces.
-    check_non_negative("normal_force", normal_force)?;
-    check_non_negative("mu", mu)?;
-    check_finite("creepage_long", creepages.longitudinal)?;
-    check_finite("creepage_lat", creepages.lateral)?;
-    check_finite("spin", creepages.spin)?;
+    super::fastsim::check_contact_inputs(a, b, normal_force, mu, creepages)?;
     Ok(Fastrip::new(params)?.creep_forces(a, b, normal_force, mu, creepages))
 }
 

@@ -279,15 +279,27 @@ pub fn fastsim(
     creepages: &Creepages,
     params: FastsimParams,
 ) -> Result<CreepForces> {
+    check_contact_inputs(a, b, normal_force, mu, creepages)?;
+    Ok(Fastsim::new(params)?.creep_forces(a, b, normal_force, mu, creepages))
+}
+
+/// Checks the inputs of a one-shot creep evaluation: semi-axes a, b (m) > 0, normal force (N)
+/// and μ ≥ 0 (zero is a lost contact, zero forces), finite creepages.
+pub(super) fn check_contact_inputs(
+    a: f64,
+    b: f64,
+    normal_force: f64,
+    mu: f64,
+    creepages: &Creepages,
+) -> Result<()> {
     check_positive("a", a)?;
     check_positive("b", b)?;
-    // N = 0 (contact lost) is valid and gives zero forces.
     check_non_negative("normal_force", normal_force)?;
     check_non_negative("mu", mu)?;
     check_finite("creepage_long", creepages.longitudinal)?;
     check_finite("creepage_lat", creepages.lateral)?;
     check_finite("spin", creepages.spin)?;
-    Ok(Fastsim::new(params)?.creep_forces(a, b, normal_force, mu, creepages))
+    Ok(())
 }
 
 #[cfg(test)]
