@@ -170,7 +170,10 @@ def test_status_command(tmp_path: Path, design: np.ndarray, capsys: pytest.Captu
     out = capsys.readouterr().out
     assert "4/4 samples (complete), 0 failed, 2 part files; S_high" in out
     assert "1 campaigns, 4/4 samples stored" in out
-    assert main(["campaign", "status", str(tmp_path / "nothing")]) == 2
+    with pytest.raises(SystemExit) as usage:
+        main(["campaign", "status", str(tmp_path / "nothing")])
+    assert usage.value.code == 2
+    assert "is not a directory" in capsys.readouterr().err
 
 
 def test_atomic_write_replaces_whole_files(tmp_path: Path) -> None:

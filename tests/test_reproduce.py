@@ -22,6 +22,7 @@ from loco.studies import fsd_comparison, speed_sweep
 from loco.studies.parameters import names
 from loco.studies.stages import MARKER, settings_hash
 from loco.studies.surrogate_selection import CANDIDATES
+from loco.studies.verdict import verdict_from_csv
 
 STAGES = {
     "speed_sweep": ["speed_sweep.png", "speed_sweep_psd.png", "speed_sweep_peaks.png",
@@ -73,6 +74,12 @@ def test_report(run: tuple[Path, str]) -> None:
     assert len(figures) >= sum(n.endswith(".png") for f in STAGES.values() for n in f)
     for link in links:
         assert (out / link).is_file(), link
+    # The first section is the verdict, computed from the damper comparison's tracks.
+    sections = [line for line in text.splitlines() if line.startswith("## ")]
+    assert sections[0].startswith("## Verdict: which yaw damper holds which scenario")
+    computed = verdict_from_csv(out / "fsd_comparison" / "fsd_tracks.csv").markdown()
+    assert "\n".join(computed).strip() in text
+    assert "**S_low**, judged by `wy_max`" in text and "**S_high**, judged by `ayb_peak_lp`" in text
     # The damper comparison says whether each ranking is significant; the surrogate section
     # which surrogate the optimisation used, and still the SPEC network's R².
     rankings = re.findall(r"ranking (not |partly )?significant at 0.05 over 2 tracks", text)

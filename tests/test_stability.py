@@ -50,8 +50,15 @@ def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:
     for offset, stable in ((-0.5, True), (0.5, False)):
         at = loco.eigen(vehicle, dataclasses.replace(scenario, speed=speed + offset))
         assert (at.least_damped().damping_ratio > 0.0) == stable, offset
-    assert math.isinf(loco.critical_speed(vehicle, scenario, high=25.0))
-    assert loco.critical_speed(vehicle, scenario, low=100.0, high=110.0) == 100.0
+    assert speed.found and speed.outcome == "found"
+    # Not found below the search limit: said so, not only an `inf`.
+    above = loco.critical_speed(vehicle, scenario, high=25.0)
+    assert math.isinf(above) and not above.found and above.outcome == "stable_at_high"
+    assert above.limit == 25.0
+    assert "no linear critical speed found up to the search limit 25.00 m/s" in above.reason
+    below = loco.critical_speed(vehicle, scenario, low=100.0, high=110.0)
+    assert below == 100.0 and not below.found and below.outcome == "unstable_at_low"
+    assert "already unstable at the lowest searched speed 100.00 m/s" in below.reason
 
 
 def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:

@@ -519,7 +519,7 @@ def linear_critical_speed(
     high: float | None = None,
     tolerance: float | None = None,
     band: tuple[float, float] | None = None,
-) -> float: ...
+) -> tuple[float, str, float, float]: ...
 def ramp_down(
     scenario: RunScenario,
     *,

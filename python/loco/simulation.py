@@ -15,6 +15,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
+from loco import field_types as types
 from loco.dampers import Damper
 from loco.profiles import Profile, builtin
 from loco.track import Track
@@ -107,6 +108,7 @@ class Scenario:
     def profiles(self) -> tuple[Profile, Profile]:
         """The wheel and rail profiles of the run."""
         if self.scenario is not None:
+            types.text("scenario", self.scenario)
             if self.wheel is not None:
                 raise _loco.ParameterError(
                     "invalid parameter `wheel`: give either a scenario or a wheel, not both"
@@ -120,36 +122,60 @@ class Scenario:
             return builtin(wheel_name), builtin(rail_name)
         if self.wheel is None:
             raise _loco.ParameterError("invalid parameter `wheel`: give a wheel or a scenario")
-        wheel = builtin(self.wheel) if isinstance(self.wheel, str) else self.wheel
-        rail = builtin(self.rail) if isinstance(self.rail, str) else self.rail
-        return wheel, rail
+        return _profile("wheel", self.wheel), _profile("rail", self.rail)
 
     def native(self, *, seed: int | None = None) -> _loco.RunScenario:
         """The checked native scenario (``seed`` replaces the track seed when given).
 
-        Raises :class:`loco.ParameterError` naming the field for a non-physical value."""
+        Raises :class:`loco.ParameterError` naming the field for a non-physical value or a
+        value of the wrong type (:mod:`loco.field_types`)."""
         wheel, rail = self.profiles()
-        track_seed = int(self.seed if seed is None else seed)
-        if track_seed < 0:
-            raise _loco.ParameterError(f"invalid parameter `seed`: must be >= 0, got {track_seed}")
+        track_seed = types.whole("seed", self.seed if seed is None else seed)
+        if self.track is not None and not isinstance(self.track, Track):
+            raise types.wrong_type("track", "a loco.Track or None", self.track)
+        if self.yaw_damper is not None and not isinstance(self.yaw_damper, Damper):
+            raise types.wrong_type("yaw_damper", "a loco.dampers.Damper or None", self.yaw_damper)
+        band = types.pair("band", self.band)
+        grid = types.pair("fastsim_grid", self.fastsim_grid)
         return _loco.RunScenario(
             wheel,
             rail,
-            float(self.speed),
-            float(self.distance),
+            types.real("speed", self.speed),
+            types.real("distance", self.distance),
             track=None if self.track is None else self.track.native,
-            track_kind="perfect" if self.perfect_track else "synthetic",
-            spectrum=self.spectrum,
+            track_kind="perfect"
+            if types.flag("perfect_track", self.perfect_track)
+            else "synthetic",
+            spectrum=types.text("spectrum", self.spectrum),
             seed=track_seed,
-            band=(float(self.band[0]), float(self.band[1])),
+            band=(types.real("band", band[0]), types.real("band", band[1])),
             yaw_damper=self.yaw_damper,
-            step=float(self.step),
-            output_rate=float(self.output_rate),
-            fastsim_grid=(int(self.fastsim_grid[0]), int(self.fastsim_grid[1])),
-            creep=str(self.creep),
-            initial_lateral_offset=float(self.initial_lateral_offset),
-            lead_in=float(self.lead_in),
+            step=types.real("step", self.step),
+            output_rate=types.real("output_rate", self.output_rate),
+            fastsim_grid=(
+                types.whole("fastsim_grid", grid[0], 1, GRID_BOUND),
+                types.whole("fastsim_grid", grid[1], 1, GRID_BOUND),
+            ),
+            creep=types.text("creep", self.creep),
+            initial_lateral_offset=types.real(
+                "initial_lateral_offset", self.initial_lateral_offset
+            ),
+            lead_in=types.real("lead_in", self.lead_in),
         )
+
+
+#: Bound of each grid size before it reaches the core (whose bound, on nx·ny, gives the reason):
+#: keeps the conversion to the core's integers from overflowing.
+GRID_BOUND = 2**32
+
+
+def _profile(name: str, value: object) -> Profile:
+    """A wheel or rail: a profile or a built-in name."""
+    if isinstance(value, str):
+        return builtin(value)
+    if not isinstance(value, Profile):
+        raise types.wrong_type(name, "a loco.profiles.Profile or a built-in name", value)
+    return value
 
 
 #: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.

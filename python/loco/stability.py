@@ -22,7 +22,16 @@ from loco.modes import Mode, mode_energies
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
-__all__ = ["Eigen", "Mode", "RampDown", "critical_speed", "eigen", "ramp_down", "with_conicity"]
+__all__ = [
+    "CriticalSpeed",
+    "Eigen",
+    "Mode",
+    "RampDown",
+    "critical_speed",
+    "eigen",
+    "ramp_down",
+    "with_conicity",
+]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -97,6 +106,65 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
         )
     modes.sort(key=lambda m: m.damping_ratio)
     return Eigen(speed=float(scenario.speed), modes=modes)
+
+
+class CriticalSpeed(float):
+    """A critical speed (m/s) that says whether it was found inside the search.
+
+    It is a ``float`` (compare it, print it, do arithmetic with it) with the search's result:
+    ``found`` is true when the loss of stability was located inside the searched speeds.
+    Otherwise the value is a bound, not a critical speed, and ``outcome`` says which:
+
+    - ``"stable_at_high"`` (linear) / ``"stable_at_start"`` (nonlinear): stable up to the search
+      limit ``limit`` (m/s); the value is ``inf`` — the critical speed lies above ``limit``, it
+      was *not* found below it.
+    - ``"unstable_at_low"`` (linear) / ``"hunts_at_end"`` (nonlinear): already unstable at the
+      lowest searched speed ``limit``; the value is ``limit`` — the critical speed is at or below.
+    - ``"found"`` (linear) / ``"died_out"`` (nonlinear): the critical speed itself.
+
+    ``reason`` is the sentence to show a user.
+    """
+
+    outcome: str
+    limit: float
+    method: str
+
+    FOUND = ("found", "died_out")
+
+    def __new__(cls, value: float, outcome: str, limit: float, method: str) -> CriticalSpeed:
+        out = super().__new__(cls, value)
+        out.outcome = outcome
+        out.limit = float(limit)
+        out.method = method
+        return out
+
+    @property
+    def found(self) -> bool:
+        """Whether the critical speed lies inside the searched speeds (else the value is a
+        bound)."""
+        return self.outcome in self.FOUND
+
+    @property
+    def reason(self) -> str:
+        """What the value means, in words."""
+        v = float(self)
+        if self.found:
+            return f"{self.method} critical speed {v:.2f} m/s ({v * 3.6:.0f} km/h)"
+        if self.outcome in ("stable_at_high", "stable_at_start"):
+            return (
+                f"no {self.method} critical speed found up to the search limit {self.limit:.2f} m/s"
+                f" ({self.limit * 3.6:.0f} km/h): stable there, the critical speed is above it"
+            )
+        return (
+            f"already unstable at the lowest searched speed {self.limit:.2f} m/s "
+            f"({self.limit * 3.6:.0f} km/h): the {self.method} critical speed is at or below it"
+        )
+
+    def __repr__(self) -> str:
+        return f"CriticalSpeed({float(self)!r}, {self.outcome!r}: {self.reason})"
+
+    def __reduce__(self) -> tuple[object, ...]:
+        return (CriticalSpeed, (float(self), self.outcome, self.limit, self.method))
 
 
 @dataclass(frozen=True)
@@ -187,19 +255,22 @@ def critical_speed(
     deceleration: float | None = None,
     disturbance: float | None = None,
     conicity: float | None = None,
-) -> float:
-    """Critical speed (m/s) of the vehicle in the scenario's wheel/rail pair and yaw damper.
+) -> CriticalSpeed:
+    """Critical speed (m/s) of the vehicle in the scenario's wheel/rail pair and yaw damper, as a
+    :class:`CriticalSpeed`: a float that also says whether it was found (``.found``,
+    ``.outcome``, ``.reason``) or is only a bound of the search.
 
     ``method="linear"``: where the least damped mode in ``band`` (Hz) loses its damping, by
     bisection between ``low`` and ``high`` (m/s) to ``tolerance`` (m/s), in the core with the
-    vehicle built once. Returns ``inf`` when the vehicle is stable at ``high`` and ``low`` when it
-    is already unstable there.
+    vehicle built once. Returns ``inf`` (outcome ``"stable_at_high"``: no critical speed below
+    the search limit ``high``) when the vehicle is stable at ``high``, and ``low`` (outcome
+    ``"unstable_at_low"``) when it is already unstable there.
 
     ``method="nonlinear"``: the speed at which the hunting limit cycle dies out in a ramp-down
     (:func:`ramp_down`) from ``scenario.speed`` to ``low`` at ``deceleration`` (m/s²) after a
-    ``disturbance`` (m). Returns ``inf`` when the vehicle does not hunt at ``scenario.speed`` and
-    ``low`` when it still hunts there. On worn wheels (subcritical hunting) it lies at or below
-    the linear critical speed.
+    ``disturbance`` (m). Returns ``inf`` (outcome ``"stable_at_start"``) when the vehicle does not
+    hunt at ``scenario.speed`` and the end speed (``"hunts_at_end"``) when it still hunts there.
+    On worn wheels (subcritical hunting) it lies at or below the linear critical speed.
 
     A setting left as None takes the core's default (``LinearSearch`` and ``RampSettings``:
     20–110 m/s to 0.5 m/s in 0.3–20 Hz; a ramp to 20 m/s at 0.5 m/s² after 8 mm).
@@ -213,22 +284,28 @@ def critical_speed(
                 "invalid parameter `conicity`: only with method='linear' (the conical wheel "
                 "has no flange to bound a limit cycle)"
             )
-        return ramp_down(
+        ramp = ramp_down(
             vehicle,
             scenario,
             end_speed=low,
             deceleration=deceleration,
             disturbance=disturbance,
-        ).critical_speed
+        )
+        # Stable at the start speed: it is the bound; hunting at the end: the end speed is.
+        stable = ramp.outcome == "stable_at_start"
+        limit = float(scenario.speed) if stable else ramp.critical_speed
+        return CriticalSpeed(ramp.critical_speed, ramp.outcome, limit, "nonlinear")
     if method != "linear":
         raise _loco.ParameterError(
             f"invalid parameter `method`: expected 'linear' or 'nonlinear', got '{method}'"
         )
     scenario = with_conicity(scenario, conicity)
-    return _loco.linear_critical_speed(
+    speed, outcome, searched_low, searched_high = _loco.linear_critical_speed(
         scenario.native(),
         toml_text=vehicle.toml_text,
         origin=vehicle.origin,
         overrides=dict(vehicle.overrides),
         **_given(low=low, high=high, tolerance=tolerance, band=band),  # type: ignore[arg-type]
     )
+    limit = searched_high if outcome == "stable_at_high" else searched_low
+    return CriticalSpeed(speed, outcome, limit, "linear")

@@ -67,6 +67,38 @@ pub fn read_samples(path: &Path) -> Result<Samples> {
     Ok(Samples { names, values })
 }
 
+/// Checks, before any work, that the metrics file `path` can be written: it is not a directory,
+/// its directory exists, and a file can be created there (a probe file, removed at once). The
+/// history files go to the same directory. An error names the option `--output`.
+pub fn check_output(path: &Path) -> Result<()> {
+    let refuse =
+        |reason: String| LocoError::param("--output", format!("{}: {reason}", path.display()));
+    if path.is_dir() {
+        return Err(refuse(
+            "is a directory; give the metrics file to write".into(),
+        ));
+    }
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        let what = if dir.exists() {
+            "is not a directory"
+        } else {
+            "does not exist"
+        };
+        return Err(refuse(format!(
+            "its directory {} {what} (create it first)",
+            dir.display()
+        )));
+    }
+    let probe = dir.join(format!(".loco-batch-probe-{}", std::process::id()));
+    std::fs::write(&probe, b"")
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| refuse(format!("cannot write into {}: {e}", dir.display())))
+}
+
 fn write(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text).map_err(|e| LocoError::Io {
         path: path.display().to_string(),

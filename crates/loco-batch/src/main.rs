@@ -39,9 +39,9 @@ struct Cli {
     /// Metrics file to write (CSV).
     #[arg(short, long, default_value = "metrics.csv")]
     output: PathBuf,
-    /// Worker threads (0: one per core). The results do not depend on it.
-    #[arg(short, long, default_value_t = 0)]
-    threads: usize,
+    /// Worker threads (0: one per core; at most 1024). The results do not depend on it.
+    #[arg(short, long, default_value_t = 0, value_parser = clap::value_parser!(u16).range(..=1024))]
+    threads: u16,
     /// No progress bar.
     #[arg(short, long)]
     quiet: bool,
@@ -59,6 +59,8 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: &Cli) -> loco_core::Result<()> {
+    // Before any work: a metrics file that cannot be written must fail now, not after the batch.
+    csv_io::check_output(&cli.output)?;
     let study = study::load_study(&cli.study)?;
     let samples = csv_io::read_samples(&cli.samples)?;
     if let Some(wanted) = &study.channels {
@@ -89,7 +91,7 @@ fn run(cli: &Cli) -> loco_core::Result<()> {
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
     let start = Instant::now();
-    let threads = cli.threads;
+    let threads = usize::from(cli.threads);
     let output = std::thread::scope(|scope| {
         let worker = scope.spawn(|| run_batch(&spec, threads, &monitor));
         while !worker.is_finished() {

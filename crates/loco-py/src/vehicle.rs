@@ -297,8 +297,10 @@ fn linearise<'py>(
 }
 
 /// Linear critical speed (m/s) by bisection of the linearisation on perfect track (see
-/// `loco.critical_speed(..., method="linear")`): `inf` when stable at `high`, `low` when already
-/// unstable there. Each setting left as None takes the core's default.
+/// `loco.critical_speed(..., method="linear")`) and how the search ended: `"found"`,
+/// `"stable_at_high"` (speed `inf`: none below the search limit `high`) or `"unstable_at_low"`
+/// (speed `low`: at or below it); and the bracket (low, high) searched, m/s. Each setting left as
+/// None takes the core's default.
 #[pyfunction]
 #[pyo3(signature = (
     scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
@@ -315,7 +317,7 @@ fn linear_critical_speed(
     high: Option<f64>,
     tolerance: Option<f64>,
     band: Option<(f64, f64)>,
-) -> PyResult<f64> {
+) -> PyResult<(f64, &'static str, f64, f64)> {
     let scenario = scenario.inner.clone();
     let default = LinearSearch::default();
     let search = LinearSearch {
@@ -324,10 +326,20 @@ fn linear_critical_speed(
         tolerance: tolerance.unwrap_or(default.tolerance),
         band: band.unwrap_or(default.band),
     };
-    run_detached(py, move || {
+    let speed = run_detached(py, move || {
         let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
         core_linear_critical_speed(set, &scenario, &search)
-    })
+    })?;
+    // The core returns exactly `inf` and `low` for the two ends of the bracket; a bisection
+    // result lies strictly inside it.
+    let outcome = if speed.is_infinite() {
+        "stable_at_high"
+    } else if speed == search.low {
+        "unstable_at_low"
+    } else {
+        "found"
+    };
+    Ok((speed, outcome, search.low, search.high))
 }
 
 /// What `ramp_down` returns: critical speed (m/s), outcome (`"died_out"`, `"stable_at_start"`,

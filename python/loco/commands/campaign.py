@@ -8,9 +8,9 @@ file is checked as a rerun would check it (content hash, rows), without changing
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
+from loco.commands.arguments import UsageError
 from loco.store import find_campaigns
 
 NAME = "campaign"
@@ -35,8 +35,7 @@ def _describe(meta: dict[str, object]) -> str:
 
 def run(args: argparse.Namespace) -> int:
     if not args.dir.is_dir():
-        print(f"loco campaign: {args.dir} is not a directory", file=sys.stderr)
-        return 2
+        raise UsageError(f"argument dir: {args.dir} is not a directory")
     campaigns = find_campaigns(args.dir)
     if not campaigns:
         print(f"no campaign store under {args.dir}")

@@ -22,6 +22,7 @@ import numpy as np
 
 import loco
 from loco import conicity, contact, profiles
+from loco.commands.arguments import output_dir
 
 NAME = "contact-report"
 HELP = "contact report of the JM3 wheel states on CN60 rail (figures and conicity table)"
@@ -74,8 +75,7 @@ def _save(fig: Any, path: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_dir(args.out)
     _plot_profiles(out)
 
     fig_dr, ax_dr = plt.subplots(figsize=(7, 4.5))

@@ -25,6 +25,7 @@ import pandas as pd
 
 import loco
 from loco import dampers
+from loco.commands.arguments import output_dir, positive_float
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.valve_bench import largest_opening_dither, run_valve_bench, save_valve_bench
@@ -56,7 +57,10 @@ LOOP_COLUMNS = (
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("out/damper_bench"), help="output dir")
     parser.add_argument(
-        "--amplitude", type=float, default=AMPLITUDE, help="sine amplitude of the elongation (m)"
+        "--amplitude",
+        type=positive_float,
+        default=AMPLITUDE,
+        help="sine amplitude of the elongation (m)",
     )
 
 
@@ -201,7 +205,7 @@ def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecor
 
 
 def run(args: argparse.Namespace) -> int:
-    out = Path(args.out)
+    out = output_dir(args.out)
     bench_study(out, float(args.amplitude))
     print(f"written to {out}")
     return 0

@@ -17,6 +17,7 @@ import pandas as pd
 
 import loco
 from loco import dampers
+from loco.commands.arguments import UsageError, output_dir, positive_float, positive_int
 from loco.studies.report import save_json, save_table
 from loco.track_response import DEFAULT_OUTPUTS, INPUTS
 
@@ -26,25 +27,26 @@ HELP = "frequency response of the linearised vehicle to track irregularities and
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("out/frf"), help="output directory")
-    parser.add_argument("--scenario", default="S_low", help="S_low, S_norm or S_high")
+    parser.add_argument("--scenario", default="S_low", choices=["S_low", "S_norm", "S_high"])
     parser.add_argument(
         "--damper", default="YD2", choices=sorted(dampers.PRESETS), help="yaw damper preset"
     )
-    parser.add_argument("--speed", type=float, default=200.0, help="running speed (km/h)")
+    parser.add_argument("--speed", type=positive_float, default=200.0, help="running speed (km/h)")
     parser.add_argument("--inputs", nargs="+", default=list(INPUTS), help="irregularity channels")
     parser.add_argument(
         "--outputs", nargs="+", default=list(DEFAULT_OUTPUTS), help="recorded channel names"
     )
-    parser.add_argument("--f-min", type=float, default=0.1, help="lowest frequency (Hz)")
-    parser.add_argument("--f-max", type=float, default=20.0, help="highest frequency (Hz)")
-    parser.add_argument("--n", type=int, default=200, help="number of frequencies")
+    parser.add_argument("--f-min", type=positive_float, default=0.1, help="lowest frequency (Hz)")
+    parser.add_argument("--f-max", type=positive_float, default=20.0, help="highest frequency (Hz)")
+    parser.add_argument("--n", type=positive_int, default=200, help="number of frequencies")
     parser.add_argument("--spectrum", default="cn-hsr", help="track spectrum of the PSDs")
     parser.add_argument("--vehicle", type=Path, default=None, help="vehicle TOML file")
 
 
 def run(args: argparse.Namespace) -> int:
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    if args.f_max <= args.f_min:
+        raise UsageError(f"argument --f-max: must exceed --f-min ({args.f_min:g} Hz)")
+    out = output_dir(args.out)
     vehicle = (
         loco.Locomotive.default()
         if args.vehicle is None

@@ -36,7 +36,6 @@ import argparse
 import contextlib
 import dataclasses
 import shutil
-import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -46,6 +45,7 @@ from typing import Any
 import loco
 from loco import campaign, dampers
 from loco.commands import damper_bench
+from loco.commands.arguments import UsageError, non_negative_int, output_dir, positive_int
 from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import (
     fsd_comparison,
@@ -57,6 +57,7 @@ from loco.studies import (
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import StageRunner
 from loco.studies.surrogate_selection import Selection, selection_settings
+from loco.studies.verdict import verdict_from_csv
 
 NAME = "reproduce"
 HELP = "run the whole SPEC §6 study (every figure and table) and write a Markdown report"
@@ -176,19 +177,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--threads",
-        type=int,
+        type=positive_int,
         default=None,
         help="simulation threads (default: all cores); results do not depend on it",
     )
     parser.add_argument(
         "--seed",
-        type=int,
+        type=non_negative_int,
         default=0,
         help="seed of the track, the sample designs and NSGA-II (default 0)",
     )
     parser.add_argument(
         "--workers",
-        type=int,
+        type=positive_int,
         default=None,
         help="run the simulations on a Dask LocalCluster of this many worker processes "
         "(needs pip install 'loco[distributed]')",
@@ -201,7 +202,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--chunk-size",
-        type=int,
+        type=positive_int,
         default=None,
         help="samples per chunk (one batch on a worker, stored when it finishes)",
     )
@@ -410,17 +411,28 @@ def reproduce(
     return write_report(
         records,
         out_dir / "report.md",
-        title="loco: the study of SPEC §6",
+        title="loco: the reference study (docs/STUDY.md)",
         preamble=PREAMBLE,
         settings=run_settings,
+        first_section=_verdict(records),
     )
+
+
+def _verdict(records: list[StudyRecord]) -> list[str]:
+    """The report's first section, computed from the damper comparison's per-track table."""
+    for record in records:
+        for table in record.tables:
+            if Path(table).name == "fsd_tracks.csv" and Path(table).is_file():
+                return verdict_from_csv(table).markdown()
+    return ["## Verdict", "", "Not available: the damper comparison stage wrote no table.", ""]
 
 
 #: Stages that learn from ``monte_carlo/monte_carlo.csv``.
 READS_MONTE_CARLO = ("surrogate", "sensitivity", "optimisation")
 
 PREAMBLE = (
-    "Every figure and table of the reference study (SPEC §6), produced by `loco reproduce`. "
+    "Every figure and table of the reference study (described in `docs/STUDY.md` of loco; the "
+    "sections cite it as SPEC §n), produced by `loco reproduce`. "
     "W_y is the Sperling lateral ride index (metric `wy_max`), A_yb the 10 Hz low-passed peak "
     "bogie frame lateral acceleration (metric `ayb_peak_lp`, m/s²), A_yc the carbody floor "
     "lateral acceleration. Run times are those of the run that produced each stage."
@@ -436,18 +448,13 @@ def _command_line(args: argparse.Namespace) -> str:
 def run(args: argparse.Namespace) -> int:
     sizes = PRESETS[args.preset]
     start = time.perf_counter()
-    for option in ("threads", "workers", "chunk_size"):
-        value = getattr(args, option)
-        if value is not None and value < 1:
-            print(f"loco reproduce: --{option.replace('_', '-')} must be >= 1", file=sys.stderr)
-            return 2
+    output_dir(args.out)
     try:
         executor = executor_from_options(
             workers=args.workers, scheduler=args.scheduler, threads=args.threads
         )
     except (ImportError, OSError, loco.LocoError) as e:
-        print(f"loco reproduce: {e}", file=sys.stderr)
-        return 2
+        raise UsageError(str(e)) from None
     with contextlib.closing(executor):
         report = reproduce(
             sizes,

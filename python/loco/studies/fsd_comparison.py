@@ -59,7 +59,9 @@ JUDGED_BY: dict[str, str] = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
 VALVE_FRACTION = "valve_closed_fraction"
 #: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
 #: core's run metrics of the case's quantity (:data:`RMS_METRICS`, :data:`PEAK_METRICS`), then two
-#: run metrics under their own names and the valve fraction (:meth:`FsdComparison.values`).
+#: run metrics under their own names, the valve fraction (:meth:`FsdComparison.values`) and the
+#: two bogie instability flags (0/1 per track, their mean the fraction of tracks flagged; the
+#: report's verdict, :mod:`loco.studies.verdict`, reads them).
 SUMMARY_COLUMNS: tuple[str, ...] = (
     "rms",
     "dominant_hz",
@@ -67,6 +69,8 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     "wy_max",
     "ayb_peak_lp",
     VALVE_FRACTION,
+    "ayb_en_unstable",
+    "ayb_gbt_unstable",
 )
 
 

@@ -176,11 +176,13 @@ def write_report(
     title: str = "loco study report",
     preamble: str = "",
     settings: Mapping[str, Any] | None = None,
+    first_section: Sequence[str] = (),
 ) -> Path:
     """Write the Markdown report of ``records`` to ``path`` and return it.
 
     The header gives the loco version, Python and platform, the date, the total run time and
-    ``settings`` (e.g. the command line, thread count, master seed); each record becomes a
+    ``settings`` (e.g. the command line, thread count, master seed); ``first_section`` (Markdown
+    lines, e.g. the study's verdict, :mod:`loco.studies.verdict`) comes next; each record becomes a
     section with its settings, figures (embedded with links relative to the report) and tables
     (linked; a CSV of at most :data:`MAX_SHOWN_TABLE_ROWS` rows and
     :data:`MAX_SHOWN_TABLE_COLUMNS` columns is also shown inline, up to
@@ -203,6 +205,7 @@ def write_report(
     for key, value in (settings or {}).items():
         lines.append(f"- {key}: `{json.dumps(jsonable(value))}`")
     lines.append("")
+    lines += first_section
     for record in records:
         resolved = StudyRecord(
             name=record.name,

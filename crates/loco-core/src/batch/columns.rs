@@ -7,6 +7,7 @@
 
 use crate::error::{LocoError, Result};
 use crate::vehicle::parameters::{resolve_name, ParameterSet};
+use crate::vehicle::run_limits::MIN_SPEED;
 use crate::vehicle::scenario::MAX_SPEED;
 use crate::vehicle::structure::VehicleStructure;
 use rayon::prelude::*;
@@ -143,11 +144,11 @@ fn check_row(
     row: &[f64],
 ) -> Result<()> {
     for (j, column) in columns.iter().enumerate() {
-        if *column == Column::Speed && !(row[j] > 0.0 && row[j] <= MAX_SPEED) {
+        if *column == Column::Speed && !(row[j] >= MIN_SPEED && row[j] <= MAX_SPEED) {
             return Err(LocoError::param(
                 cell(i, j, &names[j]),
                 format!(
-                    "speed must be in (0, {MAX_SPEED:.2}] m/s (400 km/h), got {}",
+                    "speed must be in [{MIN_SPEED}, {MAX_SPEED:.2}] m/s (3.6-400 km/h; below,                      a run's cost per metre grows as 1/speed), got {}",
                     row[j]
                 ),
             ));

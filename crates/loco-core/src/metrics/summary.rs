@@ -48,7 +48,9 @@ impl Default for RunMetricsParams {
 }
 
 /// All metrics of one run. Units: m/s² for accelerations, Hz, (m/s²)²/Hz for PSD values;
-/// flags are 0 or 1 in [`Self::values`]; NaN where a record was not given.
+/// flags are 0 or 1 in [`Self::values`]; NaN where a record was not given, and every value NaN,
+/// the flags too (`None`), when the metrics are undefined (a run too short to evaluate): an
+/// undefined flag must not read as "stable".
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RunMetrics {
     /// Sperling W_y, mean of the 5 s segments.
@@ -79,8 +81,8 @@ pub struct RunMetrics {
     pub ayb_peak_lp: f64,
     /// Longest run of cycles ≥ 8 m/s² (GB/T).
     pub ayb_gbt_cycles: f64,
-    /// GB/T instability flag.
-    pub ayb_gbt_unstable: bool,
+    /// GB/T instability flag (`None`: undefined).
+    pub ayb_gbt_unstable: Option<bool>,
     /// Instability (dominant) frequency of A_yb, Hz.
     pub ayb_f0_hz: f64,
     /// Welch PSD of A_yb at f0, (m/s²)²/Hz.
@@ -89,8 +91,8 @@ pub struct RunMetrics {
     pub ayb_en_rms: f64,
     /// EN 14363 limit, m/s².
     pub ayb_en_limit: f64,
-    /// EN 14363 instability flag.
-    pub ayb_en_unstable: bool,
+    /// EN 14363 instability flag (`None`: undefined).
+    pub ayb_en_unstable: Option<bool>,
 }
 
 /// Names of [`RunMetrics::values`], in order.
@@ -160,12 +162,12 @@ impl RunMetrics {
             ayb_rms: rms(ayb),
             ayb_peak_lp: stability.peak_lowpassed,
             ayb_gbt_cycles: stability.max_consecutive_cycles as f64,
-            ayb_gbt_unstable: stability.gbt_unstable,
+            ayb_gbt_unstable: Some(stability.gbt_unstable),
             ayb_f0_hz: stability.f0,
             ayb_psd_peak: stability.f0_psd_peak,
             ayb_en_rms: stability.sliding_rms_max,
             ayb_en_limit: stability.limit,
-            ayb_en_unstable: stability.en_unstable,
+            ayb_en_unstable: Some(stability.en_unstable),
         })
     }
 
@@ -174,9 +176,14 @@ impl RunMetrics {
         &NAMES
     }
 
-    /// The metrics as numbers (flags as 0/1), in the order of [`Self::names`].
+    /// The metrics as numbers (flags as 0/1, NaN when undefined), in the order of
+    /// [`Self::names`].
     pub fn values(&self) -> Vec<f64> {
-        let flag = |b: bool| if b { 1.0 } else { 0.0 };
+        let flag = |b: Option<bool>| match b {
+            Some(true) => 1.0,
+            Some(false) => 0.0,
+            None => f64::NAN,
+        };
         vec![
             self.wy_mean,
             self.wy_max,

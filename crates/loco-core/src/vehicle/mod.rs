@@ -20,7 +20,8 @@
 //! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once;
 //!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
 //! - [`statics`]: the static equilibrium every run starts from; [`run_statistics`]: what a run
-//!   cost (evaluations, steps, Newton iterations, wall time).
+//!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
+//!   scenario must keep (lowest speed, most steps and samples, largest creep grid).
 
 pub mod bodies;
 pub mod creep_model;
@@ -38,6 +39,7 @@ pub mod parameters;
 pub mod rail_plane;
 pub mod response_psd;
 pub mod run;
+pub mod run_limits;
 pub mod run_metrics;
 pub mod run_statistics;
 pub mod scenario;

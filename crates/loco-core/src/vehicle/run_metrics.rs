@@ -32,7 +32,8 @@ pub fn run_metrics(output: &RunOutput, speed: f64, bogie_mass: f64) -> Result<Ru
     )
 }
 
-/// Metrics of a run too short to evaluate (under one 5 s Sperling segment): NaN, flags false.
+/// Metrics of a run too short to evaluate (under one 5 s Sperling segment): every value NaN,
+/// the instability flags undefined (`None`, NaN in [`RunMetrics::values`]), not "stable".
 pub fn undefined_metrics() -> RunMetrics {
     RunMetrics {
         wy_mean: f64::NAN,
@@ -49,12 +50,12 @@ pub fn undefined_metrics() -> RunMetrics {
         ayb_rms: f64::NAN,
         ayb_peak_lp: f64::NAN,
         ayb_gbt_cycles: f64::NAN,
-        ayb_gbt_unstable: false,
+        ayb_gbt_unstable: None,
         ayb_f0_hz: f64::NAN,
         ayb_psd_peak: f64::NAN,
         ayb_en_rms: f64::NAN,
         ayb_en_limit: f64::NAN,
-        ayb_en_unstable: false,
+        ayb_en_unstable: None,
     }
 }
 
@@ -69,4 +70,33 @@ pub fn run_metrics_or_undefined(
         return Ok(undefined_metrics());
     }
     run_metrics(output, speed, bogie_mass)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vehicle::run::RunOutput;
+
+    #[test]
+    fn a_run_too_short_has_every_metric_undefined_flags_included() {
+        // 4 s at 500 Hz: under one 5 s Sperling segment.
+        let n = 2000;
+        let output = RunOutput {
+            sampling_rate: 500.0,
+            time: (0..n).map(|i| i as f64 / 500.0).collect(),
+            names: vec![
+                CARBODY_LATERAL.into(),
+                CARBODY_VERTICAL.into(),
+                BOGIE_LATERAL.into(),
+            ],
+            channels: vec![vec![0.1; n]; 3],
+        };
+        let m = run_metrics_or_undefined(&output, 55.0, 3441.0).unwrap();
+        let values = m.values();
+        assert_eq!(values.len(), RunMetrics::names().len());
+        for (name, v) in RunMetrics::names().iter().zip(&values) {
+            assert!(v.is_nan(), "{name} = {v}: an undefined metric must be NaN");
+        }
+        assert_eq!(m.ayb_gbt_unstable, None);
+    }
 }

@@ -112,7 +112,8 @@ impl Scenario {
         })
     }
 
-    /// Checks speed, distance and settings; errors name the field.
+    /// Checks speed, distance and settings, and the cost bounds of
+    /// [`super::run_limits`]; errors name the field.
     pub fn validate(&self) -> Result<()> {
         check_positive("speed", self.speed)?;
         if self.speed > MAX_SPEED {
@@ -147,14 +148,18 @@ impl Scenario {
             ));
         }
         // One output sample per step at most: a faster rate would silently shorten the step.
+        // Blame the setting moved from its default (a long step, else a fast rate).
         if self.run.output_rate * self.run.step > 1.0 + 1e-9 {
-            return Err(LocoError::param(
-                "output_rate",
-                format!(
-                    "{} Hz is faster than one sample per integration step ({} s)",
-                    self.run.output_rate, self.run.step
-                ),
-            ));
+            let reason = format!(
+                "{} Hz is faster than one sample per integration step ({} s)",
+                self.run.output_rate, self.run.step
+            );
+            let field = if self.run.step > RunSettings::default().step {
+                "step"
+            } else {
+                "output_rate"
+            };
+            return Err(LocoError::param(field, reason));
         }
         if !self.initial_lateral_offset.is_finite() || self.initial_lateral_offset.abs() > 0.01 {
             return Err(LocoError::param(
@@ -165,7 +170,7 @@ impl Scenario {
                 ),
             ));
         }
-        Ok(())
+        super::run_limits::check_cost(self)
     }
 
     /// Track length a run needs, m.

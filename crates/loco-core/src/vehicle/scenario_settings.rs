@@ -306,13 +306,28 @@ impl ScenarioSettings {
                 let band = self
                     .band
                     .unwrap_or([defaults.wavelength_min, defaults.wavelength_max]);
-                Ok(TrackSpec::Synthetic(SynthesisParams {
+                let params = SynthesisParams {
                     spectrum,
                     seed: self.seed.unwrap_or(defaults.seed),
                     wavelength_min: band[0],
                     wavelength_max: band[1],
                     ..defaults
-                }))
+                };
+                // The band is checked now and under its own name, not at the run as the
+                // synthesis' internal fields.
+                params.validate().map_err(|e| match e {
+                    LocoError::InvalidParameter { name, reason }
+                        if ["wavelength_min", "wavelength_max", "step", "length"]
+                            .contains(&name.as_str()) =>
+                    {
+                        conflict(
+                            "band",
+                            format!("[{}, {}] m: {name} {reason}", band[0], band[1]),
+                        )
+                    }
+                    other => other,
+                })?;
+                Ok(TrackSpec::Synthetic(params))
             }
             "perfect" => {
                 self.no_synthesis_settings("perfect")?;
@@ -571,5 +586,25 @@ mod tests {
         let err = resolve(&format!("{base}creep_table = true\n")).unwrap_err();
         assert!(err.to_string().contains("creep = \"table\""), "{err}");
         assert_eq!(field_of(err), "creep_table");
+    }
+
+    #[test]
+    fn a_bad_band_is_refused_as_band_at_once() {
+        for band in [
+            [f64::NAN, 200.0],
+            [0.0, 200.0],
+            [2.0, 1.0],
+            [1e-30, 200.0],
+            [2.0, 1e30],
+        ] {
+            let s = ScenarioSettings {
+                band: Some(band),
+                ..settings("S_norm")
+            };
+            let err = s
+                .resolve(GivenObjects::default(), Path::new("."))
+                .unwrap_err();
+            assert_eq!(field_of(err), "band", "{band:?}");
+        }
     }
 }

@@ -1,0 +1,98 @@
+"""Checked command-line values of the ``loco`` subcommands: a bad value is a usage error.
+
+The ``type=`` functions below make argparse refuse a value the way it refuses an unknown option
+(``loco reproduce: error: argument --threads: ...``, exit code 2, no traceback). Output
+directories are checked by :func:`output_dir` before a command does any work: a path on a file,
+under a file or where nothing can be written is refused at once, not after the run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import tempfile
+from pathlib import Path
+
+__all__ = [
+    "UsageError",
+    "finite_float",
+    "non_negative_int",
+    "output_dir",
+    "positive_float",
+    "positive_int",
+]
+
+
+class UsageError(Exception):
+    """A command-line value refused after parsing (an output path); ``loco`` prints it as a usage
+    error of the subcommand and exits with code 2."""
+
+
+def _integer(text: str) -> int:
+    try:
+        return int(text, 10)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+
+
+def positive_int(text: str) -> int:
+    """A whole number >= 1 (thread, worker and chunk counts)."""
+    n = _integer(text)
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be >= 1, got {n}")
+    return n
+
+
+def non_negative_int(text: str) -> int:
+    """A whole number >= 0 (seeds)."""
+    n = _integer(text)
+    if n < 0:
+        raise argparse.ArgumentTypeError(f"must be >= 0, got {n}")
+    if n >= 2**64:
+        raise argparse.ArgumentTypeError(f"must be < 2**64, got {n}")
+    return n
+
+
+def finite_float(text: str) -> float:
+    """A finite real number."""
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(x):
+        raise argparse.ArgumentTypeError(f"must be finite, got {text!r}")
+    return x
+
+
+def positive_float(text: str) -> float:
+    """A finite real number > 0 (speeds, amplitudes, frequencies)."""
+    x = finite_float(text)
+    if x <= 0.0:
+        raise argparse.ArgumentTypeError(f"must be > 0, got {text!r}")
+    return x
+
+
+def output_dir(path: str | Path, option: str = "--out") -> Path:
+    """``path`` as an output directory that exists and takes files, created if missing.
+
+    Raises :class:`UsageError` naming ``option`` when it is a file, lies under a file, or cannot
+    be created or written (read-only place, no permission). The check writes and removes a probe
+    file, so it holds for any user (root included) and any file system (read-only mounts)."""
+    out = Path(path)
+    for parent in (out, *out.parents):
+        if parent.exists() and not parent.is_dir():
+            where = "is a file" if parent == out else f"is under the file {parent}"
+            raise UsageError(f"argument {option}: {out} {where}, not a directory")
+        if parent.exists():
+            break
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=out):
+            pass
+    except OSError as e:
+        reason = e.strerror or str(e)
+        raise UsageError(f"argument {option}: cannot write into {out}: {reason}") from None
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise UsageError(f"argument {option}: cannot write into {out}: permission denied")
+    return out

@@ -1,0 +1,179 @@
+"""The study's verdict: which yaw damper holds which scenario, and how sure that is.
+
+Computed from the per-track table of the damper comparison (``fsd_tracks.csv``, written by
+:func:`loco.studies.fsd_comparison.save_fsd_comparison`), never typed in, so the first section of
+the report (docs/STUDY.md, "How loco answers it") always says what the numbers below it say.
+
+Per scenario (:data:`loco.studies.fsd_comparison.JUDGED_BY`: W_y on S_low, A_yb on S_high):
+
+- the ranking of the dampers by the judging metric, lower is better, with the paired t test on
+  the per-track log ratios and Holm's correction (:func:`loco.studies.statistics.rank`, the same
+  test as the comparison stage's ``fsd_rankings.csv``);
+- which dampers *hold* it, on every track that finished: on S_low an excellent ride
+  (W_y below 2.75, the locomotive band of GB/T 5599-2019, ``loco.metrics``); on S_high no
+  instability flag of the bogie frame (EN 14363 sliding rms over its limit, or the GB/T 8 m/s²
+  peaks in 6 cycles; metrics ``ayb_en_unstable``, ``ayb_gbt_unstable``). A table without those
+  flags (written by an older loco) leaves the S_high criterion unjudged, and says so.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from loco import _loco
+from loco.studies.fsd_comparison import JUDGED_BY
+from loco.studies.statistics import ALPHA, Ranking, rank
+
+__all__ = ["HOLD_CRITERIA", "ScenarioVerdict", "Verdict", "verdict", "verdict_from_csv"]
+
+#: Instability flags (0/1 per track) whose raising means a damper does not hold S_high.
+STABILITY_FLAGS = ("ayb_en_unstable", "ayb_gbt_unstable")
+#: The criterion each scenario is held by, in words.
+HOLD_CRITERIA: dict[str, str] = {
+    "S_low": "an excellent ride, W_y < 2.75 (GB/T 5599-2019, locomotive), on every track",
+    "S_high": "no bogie instability flag (EN 14363 sliding rms, GB/T peaks) on any track",
+}
+
+
+@dataclass(frozen=True)
+class ScenarioVerdict:
+    """One scenario: the ranking by its judging metric and which dampers hold it (``None``: the
+    table cannot tell)."""
+
+    scenario: str
+    metric: str
+    ranking: Ranking
+    holds: dict[str, bool | None]
+    failed: dict[str, int]
+
+    @property
+    def best(self) -> str:
+        """The damper with the lowest mean (best), whether or not significantly."""
+        return self.ranking.order[0]
+
+    def significant_best(self) -> bool:
+        """Whether the best damper is significantly better than the second (Holm, ALPHA)."""
+        order = self.ranking.order
+        return len(order) > 1 and self.ranking.test(order[0], order[1]).significant
+
+    def lines(self) -> list[str]:
+        """Markdown bullet of this scenario."""
+        held = [d for d, h in self.holds.items() if h]
+        not_held = [d for d, h in self.holds.items() if h is False]
+        if any(h is None for h in self.holds.values()):
+            holding = (
+                f"Holding ({HOLD_CRITERIA.get(self.scenario, '')}) is not judged: the table has "
+                "no instability flags (rerun the damper comparison stage with --force)."
+            )
+        else:
+            holding = (
+                f"Held ({HOLD_CRITERIA.get(self.scenario, '')}) by "
+                f"{', '.join(held) or 'no damper'}"
+                + (f"; not by {', '.join(not_held)}" if not_held else "")
+                + "."
+            )
+        strength = (
+            f"significantly better than {self.ranking.order[1]}"
+            if self.significant_best()
+            else "not significantly better than the next"
+        )
+        failed = {d: n for d, n in self.failed.items() if n}
+        failures = (
+            " Failed runs, left out: " + ", ".join(f"{d} {n}" for d, n in failed.items()) + "."
+            if failed
+            else ""
+        )
+        return [
+            f"- **{self.scenario}**, judged by `{self.metric}` (lower is better): best "
+            f"**{self.best}**, {strength} (paired t on log ratios over the tracks, Holm, "
+            f"α = {ALPHA:g}). {holding}{failures}",
+            f"  - {self.ranking.statement()}.",
+        ]
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The verdict of every judged scenario."""
+
+    scenarios: tuple[ScenarioVerdict, ...]
+
+    def holding_all(self) -> list[str]:
+        """Dampers that hold every scenario (empty when one is not judged)."""
+        if not self.scenarios:
+            return []
+        dampers = list(self.scenarios[0].holds)
+        return [d for d in dampers if all(s.holds.get(d) is True for s in self.scenarios)]
+
+    def markdown(self) -> list[str]:
+        """The report's first section."""
+        lines = [
+            "## Verdict: which yaw damper holds which scenario",
+            "",
+            "Computed from the damper comparison below (its per-track table `fsd_tracks.csv`): "
+            "every damper on the same synthesised tracks, the rankings by paired tests "
+            "(docs/STUDY.md of loco says what the study asks).",
+            "",
+        ]
+        for s in self.scenarios:
+            lines += s.lines()
+        if self.scenarios and all(h is not None for s in self.scenarios for h in s.holds.values()):
+            both = self.holding_all()
+            lines += [
+                "",
+                "Every scenario is held by: " + (", ".join(both) if both else "no damper") + ".",
+            ]
+        return [*lines, ""]
+
+
+def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
+    """Whether the finished tracks of one (scenario, damper) meet the scenario's criterion."""
+    done = frame[frame["status"] == 0]
+    if done.empty:
+        return False
+    if scenario == "S_low":
+        ratings = [_loco.locomotive_ride_rating(float(w)) for w in done["wy_max"]]
+        return all(r == "excellent" for r in ratings)
+    if scenario == "S_high":
+        if not all(f in done.columns for f in STABILITY_FLAGS):
+            return None
+        flags = done[list(STABILITY_FLAGS)].to_numpy(dtype=np.float64)
+        if not np.isfinite(flags).all():
+            return None
+        return bool((flags == 0.0).all())
+    return None
+
+
+def verdict(tracks: pd.DataFrame, judged_by: Mapping[str, str] = JUDGED_BY) -> Verdict:
+    """The verdict from a per-track table (columns ``scenario``, ``damper``, ``track``,
+    ``status``, and the judging metrics; a failed run has a nonzero status and NaN metrics)."""
+    out = []
+    for scenario, metric in judged_by.items():
+        rows = tracks[tracks["scenario"] == scenario]
+        if rows.empty:
+            continue
+        dampers = list(dict.fromkeys(rows["damper"]))
+        per = {d: rows[rows["damper"] == d].sort_values("track") for d in dampers}
+        values = {
+            d: np.where(f["status"] == 0, f[metric], np.nan).astype(np.float64)
+            for d, f in per.items()
+        }
+        out.append(
+            ScenarioVerdict(
+                scenario=scenario,
+                metric=metric,
+                ranking=rank(values, label=scenario, metric=metric),
+                holds={d: _holds(scenario, f) for d, f in per.items()},
+                failed={d: int((f["status"] != 0).sum()) for d, f in per.items()},
+            )
+        )
+    return Verdict(tuple(out))
+
+
+def verdict_from_csv(path: str | Path) -> Verdict:
+    """The verdict from a ``fsd_tracks.csv``."""
+    return verdict(pd.read_csv(path))
