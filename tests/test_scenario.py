@@ -66,6 +66,8 @@ def test_settings_are_checked_by_the_core_naming_the_field() -> None:
         loco.Scenario(scenario="S_high", yaw_damper="YD1", fsd_trigger="hydraulic").native()
     with pytest.raises(loco.ParameterError, match="yaw_damper"):
         loco.Scenario(scenario="S_high", yaw_damper="fsd").native()
+    with pytest.raises(loco.ParameterError, match="`speed`"):
+        loco.Scenario(scenario="S_high", speed="fast").native()  # type: ignore[arg-type]
     with pytest.raises(loco.ParameterError, match="gauge"):
         loco.Scenario(scenario="S_high", gauge=-1.0).native()
     with pytest.raises(loco.ParameterError, match="name"):

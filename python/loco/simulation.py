@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -200,6 +201,8 @@ class Scenario:
                 objects[name] = value
             elif isinstance(value, Track):
                 objects[name] = value.native
+            elif isinstance(value, os.PathLike):
+                settings[name] = os.fspath(value)
             else:
                 settings[_CORE_NAMES.get(name, name)] = value
         if "seed" in settings and int(settings["seed"]) < 0:

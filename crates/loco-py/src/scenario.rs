@@ -78,9 +78,15 @@ fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSetting
             table.insert(key, v);
         }
     }
-    toml::Value::Table(table)
-        .try_into::<ScenarioSettings>()
-        .map_err(|e| to_py_err(LocoError::param("scenario", e.message().to_string())))
+    let read = |table: toml::Table| toml::Value::Table(table).try_into::<ScenarioSettings>();
+    read(table.clone()).map_err(|e| {
+        // Name the setting: the first one refused on its own (serde's message names the type).
+        let key = table
+            .iter()
+            .find(|(k, v)| read(toml::Table::from_iter([((*k).clone(), (*v).clone())])).is_err())
+            .map_or("scenario", |(k, _)| k.as_str());
+        to_py_err(LocoError::param(key, e.message().to_string()))
+    })
 }
 
 #[pymethods]
