@@ -22,7 +22,6 @@ study (population and generations in the hundreds) is far larger.
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import json
 import os
 import time
@@ -119,7 +118,7 @@ class FsdDesign(Problem):
 
 
 def _with(s: loco.Scenario, law: dampers.Damper) -> loco.Scenario:
-    return dataclasses.replace(s, yaw_damper=law)
+    return s.replace(yaw_damper=law)
 
 
 def main() -> int:

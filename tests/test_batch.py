@@ -91,11 +91,21 @@ def test_bad_input_raises_parameter_error_naming_it(
 
 def test_bad_options_raise() -> None:
     with pytest.raises(loco.ParameterError, match="threads"):
-        loco.run_batch(np.ones((1, 1)) * 8e5, ["C_sx"], threads=0, progress=False)
+        loco.run_batch(np.ones((1, 1)) * 8e5, ["C_sx"], threads=-1, progress=False)
     with pytest.raises(loco.ParameterError, match="seed"):
         loco.run_batch(np.ones((1, 1)) * 8e5, ["C_sx"], seed=-1, progress=False)
     with pytest.raises(loco.ParameterError, match="histories"):
         loco.run_batch(np.ones((1, 1)) * 8e5, ["C_sx"], histories=[4], progress=False)
+
+
+def test_threads_zero_is_one_per_core_as_in_the_binary() -> None:
+    # `loco-batch --threads 0` and `run_batch(threads=0)`: one thread per core, same numbers.
+    scenario = loco.Scenario(scenario="S_high", distance=20.0)
+    x = np.array([[8e5], [2e5]])
+    per_core = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=0, progress=False)
+    one = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=1, progress=False)
+    assert per_core.n_failed == 0
+    assert np.array_equal(per_core.metrics, one.metrics, equal_nan=True)
 
 
 def test_ctrl_c_stops_the_batch_promptly() -> None:
@@ -117,6 +127,7 @@ def test_ctrl_c_stops_the_batch_promptly() -> None:
 def test_progress_callback_sees_every_sample() -> None:
     seen: list[tuple[int, int]] = []
     loco._loco.run_batch(
+        loco.Locomotive.default().native,
         SCENARIO.native(),
         np.array([[8e5], [2e5]]),
         ["C_sx"],

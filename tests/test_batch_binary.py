@@ -178,3 +178,49 @@ def test_study_file_selects_the_hydraulic_valve(tmp_path: Path) -> None:
         check=False,
     )
     assert done.returncode != 0 and "fsd_trigger" in done.stderr
+
+
+def test_the_same_scenario_keys_mean_the_same_run_in_both_front_ends(tmp_path: Path) -> None:
+    """One spelling per setting: the study file's ``[scenario]`` keys are ``loco.Scenario``'s
+    keywords (a preset damper by name, the track set-up), and ``threads = 0`` is one per core in
+    both."""
+    settings = {
+        "speed": 50.0,
+        "distance": 260.0,  # m: the 5 s the metrics need at 50 m/s
+        "track": "perfect",
+        "initial_lateral_offset": 0.003,
+        "yaw_damper": "FSD",
+        "gauge": 1.44,
+        "gauge_height": 0.014,
+        "rail_inclination": 0.03,
+    }
+    lines = [f"{k} = {v!r}".replace("'", '"') for k, v in settings.items()]
+    study = tmp_path / "study.toml"
+    study.write_text("[scenario]\nname = 'S_high'\n" + "\n".join(lines) + "\n", encoding="utf-8")
+    samples = tmp_path / "samples.csv"
+    samples.write_text("C_sx\n800000.0\n200000.0\n", encoding="utf-8")
+    out = tmp_path / "metrics.csv"
+    done = subprocess.run(
+        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "0", "--quiet"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    with out.open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    scenario = loco.Scenario(scenario="S_high", **settings)  # type: ignore[arg-type]
+    x = np.array([[8e5], [2e5]])
+    expected = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=0, progress=False)
+    assert expected.n_failed == 0 and np.isfinite(expected.metric("wy_max")).all()
+    for i, row in enumerate(rows):
+        got = np.array([float(row[m]) for m in expected.metric_names])
+        assert np.array_equal(got, expected.metrics[i], equal_nan=True), (i, row["message"])
+    # The settings are used: the study's gauge and rail give another run.
+    default = loco.run_batch(
+        x,
+        ["C_sx"],
+        scenario=scenario.replace(gauge=None, gauge_height=None, rail_inclination=None),
+        progress=False,
+    )
+    assert not np.array_equal(default.metrics, expected.metrics, equal_nan=True)

@@ -50,11 +50,14 @@ REAL_FIELDS = [
     "output_rate",
     "initial_lateral_offset",
     "lead_in",
+    "gauge",
+    "gauge_height",
+    "rail_inclination",
 ]
 WHOLE_FIELDS = ["seed"]
 PAIR_FIELDS = {"band": (2.0, 200.0), "fastsim_grid": (10, 10)}
-TEXT_FIELDS = ["spectrum", "creep", "scenario", "rail"]
-FLAG_FIELDS = ["perfect_track"]
+TEXT_FIELDS = ["spectrum", "creep", "scenario", "rail", "fsd_trigger"]
+FLAG_FIELDS: list[str] = []
 OBJECT_FIELDS = ["track", "yaw_damper"]
 
 #: The base run: short, every field else at its default.

@@ -14,7 +14,7 @@ import loco
 print("started", flush=True)
 try:
     loco.simulate(loco.Locomotive.default(),
-                  loco.Scenario(scenario="S_high", distance=50_000.0, perfect_track=True))
+                  loco.Scenario(scenario="S_high", distance=50_000.0, track="perfect"))
 except KeyboardInterrupt:
     print("interrupted", flush=True)
 """

@@ -11,7 +11,7 @@ BOGIE = ("frames", "wheelsets", "motors", "hollow_shafts", "rotary_arms")
 
 def test_mass_matrix_carries_the_vehicle_mass() -> None:
     vehicle = loco.Locomotive.default()
-    m = _loco.mass_matrix(vehicle.toml_text, vehicle.origin, dict(vehicle.overrides))
+    m = vehicle.mass_matrix()
     assert np.allclose(m, m.T)
     assert np.linalg.eigvalsh(m).min() > 0.0
     # A rigid lateral shift of the whole vehicle (every free body's y, no relative motion)

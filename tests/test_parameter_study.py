@@ -60,7 +60,7 @@ def test_setup_scenarios() -> None:
     setup = StudySetup(speed_kmh=180.0, distance=400.0, track_seed=4)
     scenario = setup.scenario("S_low")
     assert scenario.speed == pytest.approx(50.0) and scenario.distance == 400.0
-    assert scenario.seed == 4 and scenario.yaw_damper is None  # C_sx, K_ncsx act
+    assert scenario.seed == 4 and scenario.yaw_damper == "file"  # C_sx, K_ncsx act
     assert setup.settings()["objectives"] == {
         "W_y": "wy_max on S_low",
         "A_yb": "ayb_peak_lp on S_high",

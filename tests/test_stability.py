@@ -1,7 +1,6 @@
 """Eigenvalues about equilibrium agree with the time-domain behaviour of the same model; the
 nonlinear critical speed of a ramp-down against the linear one."""
 
-import dataclasses
 import math
 
 import numpy as np
@@ -48,7 +47,7 @@ def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:
     speed = loco.critical_speed(vehicle, scenario, tolerance=0.5)
     assert 20.0 < speed < 110.0
     for offset, stable in ((-0.5, True), (0.5, False)):
-        at = loco.eigen(vehicle, dataclasses.replace(scenario, speed=speed + offset))
+        at = loco.eigen(vehicle, scenario.replace(speed=speed + offset))
         assert (at.least_damped().damping_ratio > 0.0) == stable, offset
     assert speed.found and speed.outcome == "found"
     # Not found below the search limit: said so, not only an `inf`.
@@ -68,14 +67,14 @@ def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
     scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
     linear = loco.critical_speed(vehicle, scenario, tolerance=2.0)
     assert 20.0 < linear < 100.0
-    start = dataclasses.replace(scenario, speed=1.3 * linear)
+    start = scenario.replace(speed=1.3 * linear)
     nonlinear = loco.critical_speed(
         vehicle, start, low=0.4 * linear, method="nonlinear", deceleration=1.0
     )
     assert 0.4 * linear < nonlinear <= linear + 2.0
     if nonlinear < linear - 2.0:
         # Where the cycle dies the equilibrium is linearly stable.
-        at = loco.eigen(vehicle, dataclasses.replace(scenario, speed=nonlinear))
+        at = loco.eigen(vehicle, scenario.replace(speed=nonlinear))
         assert at.least_damped().damping_ratio > 0.0
 
 

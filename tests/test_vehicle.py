@@ -1,6 +1,7 @@
 """The vehicle API: parameters with sources, overrides, input checks, one simulated run."""
 
 import math
+import pickle
 from pathlib import Path
 
 import numpy as np
@@ -54,7 +55,7 @@ def test_bad_scenarios_raise_typed_errors() -> None:
 
 
 def test_short_run_on_perfect_track_returns_channels() -> None:
-    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=40.0, perfect_track=True)
+    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=40.0, track="perfect")
     result = loco.simulate(loco.Locomotive.default(), scenario)
     assert result.channels.shape == (len(result.channel_names), result.time.size)
     assert result.time[1] - result.time[0] == pytest.approx(1 / 500)
@@ -117,3 +118,30 @@ def test_lead_in_is_run_but_not_recorded() -> None:
         assert np.array_equal(tail.channel(name), whole.channel(name)[1000:]), name
     with pytest.raises(loco.ParameterError, match="lead_in"):
         loco.simulate(vehicle, loco.Scenario(distance=50.0, lead_in=-1.0, **common))
+
+
+def test_the_native_handle_is_built_once_and_travels_by_its_file(tmp_path: Path) -> None:
+    path = tmp_path / "loco.toml"
+    path.write_text(loco.Locomotive.default().default_toml(), encoding="utf-8")
+    base = loco.Locomotive.from_toml(path)
+    soft = base.replace(C_sx=2e5).replace({"secondary.yaw_damper_damping": 3e5}, K_py=5e6)
+    # Overrides merge as in one constructor call (later ones win) and keep the file.
+    same = loco.Locomotive(
+        base.toml_text, str(path), {"C_sx": 2e5, "K_py": 5e6, "secondary.yaw_damper_damping": 3e5}
+    )
+    assert soft == same and soft.parameters() == same.parameters()
+    assert soft.native["secondary.yaw_damper_damping"] == soft["C_sx"] == 3e5
+    assert soft.native.origin == str(path) and soft.native.toml_text == base.toml_text
+    for obj in (soft, soft.native):
+        back = pickle.loads(pickle.dumps(obj))
+        assert repr(back) == repr(obj)
+    back = pickle.loads(pickle.dumps(soft))
+    assert back.native.parameters_table() == soft.native.parameters_table()
+    assert np.array_equal(back.mass_matrix(), soft.mass_matrix())
+    with pytest.raises(loco.ParameterError, match="C_sxx"):
+        soft["C_sxx"]
+    # The handle's run is the run of a vehicle built again from its file and overrides.
+    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=10.0, track="perfect")
+    a = loco.simulate(soft, scenario)
+    b = loco.simulate(back, scenario)
+    assert np.array_equal(a.channels, b.channels)

@@ -312,6 +312,7 @@ __all__ += [
     "damper_hydraulic_defaults",
     "damper_maxwell",
     "damper_preset",
+    "damper_preset_names",
     "fsd_reference_stroke_amplitude",
     "fsd_trigger_names",
     "fsd_valve_opening_band",
@@ -379,7 +380,8 @@ def damper_hydraulic(
     start_closed: bool,
 ) -> Damper: ...
 def damper_hydraulic_defaults() -> dict[str, float | bool | str | None]: ...
-def damper_preset(name: str) -> Damper: ...
+def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
+def damper_preset_names() -> list[str]: ...
 def damper_bench_sine(
     damper: Damper,
     frequency: float,
@@ -402,9 +404,13 @@ def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _Be
 
 # --- scenario (scenario.rs) -----------------------------------------------------------------------
 
-__all__ += ["RunScenario", "creep_model_names"]
+__all__ += ["RunScenario", "creep_model_names", "scenario_defaults", "scenario_presets"]
 
 def creep_model_names() -> list[str]: ...
+def scenario_defaults() -> dict[
+    str, bool | int | float | str | tuple[float, float] | tuple[int, int]
+]: ...
+def scenario_presets() -> list[tuple[str, str, str]]: ...
 
 @final
 class RunScenario:
@@ -412,26 +418,13 @@ class RunScenario:
 
     def __new__(
         cls,
-        wheel: Profile,
-        rail: Profile,
-        speed: float,
-        distance: float,
+        settings: dict[str, bool | int | float | str | tuple[float, float] | tuple[int, int]]
+        | None = None,
         *,
+        wheel: Profile | None = None,
+        rail: Profile | None = None,
         track: Track | None = None,
-        track_kind: str = ...,
-        spectrum: str = ...,
-        seed: int = 0,
-        band: tuple[float, float] = ...,
         yaw_damper: Damper | None = None,
-        step: float = 1e-3,
-        output_rate: float = 500.0,
-        fastsim_grid: tuple[int, int] = ...,
-        creep: str = ...,
-        initial_lateral_offset: float = 0.0,
-        lead_in: float = 0.0,
-        gauge: float = 1.435,
-        gauge_height: float = 0.016,
-        rail_inclination: float | None = None,
     ) -> RunScenario: ...
     @property
     def speed(self) -> float: ...
@@ -443,57 +436,57 @@ class RunScenario:
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
+    "Vehicle",
     "body_motion_names",
     "body_names",
     "default_vehicle_toml",
     "dof_names",
     "linear_critical_speed",
     "linearise",
-    "mass_matrix",
     "metric_channels",
     "mode_energies",
     "ramp_down",
     "simulate",
     "study_parameters",
-    "vehicle_parameters",
-    "vehicle_total_mass",
 ]
 
+@final
+class Vehicle:
+    """A built vehicle: parameter file, overrides and the model built from them."""
+
+    def __new__(
+        cls,
+        toml_text: str | None = None,
+        origin: str = ...,
+        overrides: dict[str, float] = ...,
+    ) -> Vehicle: ...
+    def replace(self, overrides: dict[str, float]) -> Vehicle: ...
+    @property
+    def toml_text(self) -> str | None: ...
+    @property
+    def origin(self) -> str: ...
+    @property
+    def overrides(self) -> dict[str, float]: ...
+    def parameters_table(self) -> list[tuple[str, float, str, str]]: ...
+    def __getitem__(self, key: str, /) -> float: ...
+    def total_mass(self) -> float: ...
+    def mass_matrix(self) -> NDArray[np.float64]: ...
+    def __reduce__(self) -> tuple[type[Vehicle], tuple[str | None, str, dict[str, float]]]: ...
+
 def default_vehicle_toml() -> str: ...
-def vehicle_parameters(
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
-) -> list[tuple[str, float, str, str]]: ...
-def vehicle_total_mass(
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
-) -> float: ...
 def study_parameters() -> list[tuple[str, str]]: ...
 def dof_names() -> list[str]: ...
 def body_names() -> list[str]: ...
 def metric_channels() -> dict[str, str]: ...
-def mass_matrix(
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
-) -> NDArray[np.float64]: ...
 def body_motion_names() -> list[str]: ...
 def mode_energies(
+    vehicle: Vehicle,
     real: NDArray[np.float64],
     imag: NDArray[np.float64],
-    *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
 ) -> tuple[list[str], list[str], NDArray[np.float64], NDArray[np.float64]]: ...
 def simulate(
+    vehicle: Vehicle,
     scenario: RunScenario,
-    *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
 ) -> tuple[
     NDArray[np.float64],
     list[str],
@@ -503,29 +496,22 @@ def simulate(
     list[tuple[str, float]],
 ]: ...
 def linearise(
+    vehicle: Vehicle,
     scenario: RunScenario,
-    *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
 ) -> NDArray[np.float64]: ...
 def linear_critical_speed(
+    vehicle: Vehicle,
     scenario: RunScenario,
     *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
     low: float | None = None,
     high: float | None = None,
     tolerance: float | None = None,
     band: tuple[float, float] | None = None,
 ) -> tuple[float, str, float, float]: ...
 def ramp_down(
+    vehicle: Vehicle,
     scenario: RunScenario,
     *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
     end_speed: float | None = None,
     deceleration: float | None = None,
     hold: float | None = None,
@@ -540,13 +526,11 @@ def ramp_down(
 __all__ += ["batch_status_names", "run_batch", "run_statistics_names"]
 
 def run_batch(
+    vehicle: Vehicle,
     scenario: RunScenario,
     params: NDArray[np.float64],
     names: list[str],
     *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
     threads: int = 0,
     per_sample_track: bool = False,
     track_streams: list[int] | None = None,
@@ -569,16 +553,14 @@ __all__ += ["frequency_response", "irregularity_channels", "response_psd"]
 
 def irregularity_channels() -> list[str]: ...
 def frequency_response(
+    vehicle: Vehicle,
     scenario: RunScenario,
     inputs: list[str],
     outputs: list[str],
     frequencies: NDArray[np.float64],
-    *,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
 ) -> tuple[NDArray[np.complex128], float, list[float]]: ...
 def response_psd(
+    vehicle: Vehicle,
     scenario: RunScenario,
     outputs: list[str],
     frequencies: NDArray[np.float64],
@@ -586,7 +568,4 @@ def response_psd(
     spectrum: str = ...,
     band: tuple[float, float] = ...,
     amplitude_scale: float = 1.0,
-    toml_text: str | None = None,
-    origin: str = ...,
-    overrides: dict[str, float] = ...,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float]: ...

@@ -147,7 +147,8 @@ def run_batch(
         Wheel and rail, speed, distance, track, yaw damper
         (default: ``Scenario(scenario="S_high")``).
     threads : int, optional
-        Worker threads (default: one per core). Results do not depend on it.
+        Worker threads (default or 0: one per core, as ``loco-batch --threads 0``). Results do
+        not depend on it.
     seed : int, optional
         Track seed (default: the scenario's).
     progress : bool
@@ -197,8 +198,8 @@ def run_batch(
             f"invalid input `params`: must be a 2-D (samples x parameters) array, got shape "
             f"{x.shape}"
         )
-    if threads is not None and threads < 1:
-        raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
+    if threads is not None and threads < 0:
+        raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 0, got {threads}")
     keep = [int(i) for i in histories]
     if any(i < 0 for i in keep):
         raise _loco.ParameterError(f"invalid input `histories`: negative index in {keep}")
@@ -206,12 +207,10 @@ def run_batch(
     start = time.perf_counter()
     try:
         metric_names, metrics, status, messages, kept, statistics = _loco.run_batch(
+            vehicle.native,
             scenario.native(seed=seed),
             np.ascontiguousarray(x),
             [str(n) for n in names],
-            toml_text=vehicle.toml_text,
-            origin=vehicle.origin,
-            overrides=dict(vehicle.overrides),
             threads=threads or 0,
             per_sample_track=per_sample_track,
             histories=keep,

@@ -22,7 +22,6 @@ executor and one store per stage without each study taking the arguments.
 from __future__ import annotations
 
 import contextlib
-import dataclasses
 import functools
 import hashlib
 import json
@@ -40,7 +39,7 @@ import pandas as pd
 from loco import _loco
 from loco.batch import STATUS_NAMES, BatchResult, history_results
 from loco.executors import BatchJob, Chunk, Executor, LocalExecutor
-from loco.simulation import RUN_STATISTICS, Scenario
+from loco.simulation import RUN_STATISTICS, SETTINGS, Scenario
 from loco.store import CampaignStore, campaign_key, file_sha256
 from loco.vehicle import Locomotive
 
@@ -139,9 +138,8 @@ def campaign_inputs(
         else hashlib.sha256(vehicle.toml_text.encode("utf-8")).hexdigest(),
         "overrides": {k: repr(v) for k, v in sorted(vehicle.overrides.items())},
     }
-    scenario_desc = {
-        f.name: _describe(getattr(scenario, f.name)) for f in dataclasses.fields(scenario)
-    }
+    # Every setting, given or default: a default the core changes changes the key.
+    scenario_desc = {name: _describe(getattr(scenario, name)) for name in SETTINGS}
     return {
         "kind": "loco.run_batch",
         "names": list(names),
@@ -217,7 +215,7 @@ def run_campaign(
     store = store if store is not None else context.store
     n = len(x)
     track_seed = int(scenario.seed if seed is None else seed)
-    scenario.native(seed=track_seed)  # a bad scenario fails here, before any chunk is sent
+    scenario.native(seed=seed)  # a bad scenario fails here, before any chunk is sent
     inputs = campaign_inputs(x, names, vehicle, scenario, track_seed, per_sample_track)
     key = campaign_key(inputs)
     metric_names = list(_loco.run_metric_names())
@@ -246,7 +244,7 @@ def run_campaign(
         vehicle=vehicle,
         scenario=scenario,
         names=tuple(names),
-        seed=track_seed,
+        seed=seed,
         per_sample_track=per_sample_track,
     )
     bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None

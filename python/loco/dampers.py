@@ -47,15 +47,16 @@ __all__ = [
     "valve_opening_band",
 ]
 
-YD1: Damper = _loco.damper_preset("yd1")
+YD1: Damper = _loco.damper_preset("YD1")
 """Conventional yaw damper YD1: 200 kN·s/m in series with 22.5 kN/mm."""
-YD2: Damper = _loco.damper_preset("yd2")
+YD2: Damper = _loco.damper_preset("YD2")
 """Conventional yaw damper YD2: 800 kN·s/m in series with 22.5 kN/mm."""
-FSD: Damper = _loco.damper_preset("fsd")
+FSD: Damper = _loco.damper_preset("FSD")
 """The spec's frequency-selective yaw damper."""
-PRESETS: dict[str, Damper] = {"YD1": YD1, "YD2": YD2, "FSD": FSD}
-"""The spec's yaw dampers by name (SPEC §4), in the order the studies compare them."""
-FSD_HYDRAULIC: Damper = _loco.damper_preset("fsd-hydraulic")
+PRESETS: dict[str, Damper] = {n: _loco.damper_preset(n) for n in _loco.damper_preset_names()}
+"""The spec's yaw dampers by name (SPEC §4), in the order the studies compare them; the same
+names a scenario takes (``Scenario(yaw_damper="FSD")``, the study file's ``yaw_damper``)."""
+FSD_HYDRAULIC: Damper = _loco.damper_preset("FSD", "hydraulic")
 """The spec's FSD with the hydraulic frequency valve (trigger ``"hydraulic"``)."""
 TRIGGERS: tuple[str, ...] = tuple(_loco.fsd_trigger_names())
 """FSD trigger names, the default first: ``"rms-frequency"``, ``"hydraulic"``."""

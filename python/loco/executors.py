@@ -33,6 +33,7 @@ import numpy.typing as npt
 
 from loco import _loco
 from loco.simulation import Scenario
+from loco.track import Track
 from loco.vehicle import Locomotive
 
 __all__ = [
@@ -114,12 +115,10 @@ def run_chunk(
     keep = sorted(local[i] for i in chunk.histories if i in local)
     try:
         metric_names, metrics, status, messages, kept, statistics = _loco.run_batch(
+            job.vehicle.native,
             job.scenario.native(seed=job.seed),
             np.ascontiguousarray(chunk.rows, dtype=np.float64),
             list(job.names),
-            toml_text=job.vehicle.toml_text,
-            origin=job.vehicle.origin,
-            overrides=dict(job.vehicle.overrides),
             threads=threads,
             per_sample_track=job.per_sample_track,
             track_streams=[int(i) for i in chunk.indices] if job.per_sample_track else None,
@@ -318,7 +317,7 @@ class DaskExecutor(Executor):
     ) -> Iterator[ChunkResult]:
         if not chunks:
             return
-        if job.scenario.track is not None:
+        if isinstance(job.scenario.track, Track):
             raise _loco.ParameterError(
                 "invalid parameter `scenario.track`: a loaded track cannot be sent to Dask "
                 "workers; run it with local threads"

@@ -50,22 +50,14 @@ class ModeEnergies:
         }
 
 
-def mode_energies(
-    shapes: npt.NDArray[np.complex128],
-    toml_text: str | None,
-    origin: str,
-    overrides: dict[str, float],
-) -> ModeEnergies:
+def mode_energies(shapes: npt.NDArray[np.complex128], vehicle: _loco.Vehicle) -> ModeEnergies:
     """Energy shares of the mode shapes ``shapes`` (n_modes × n, first 90 columns: the
-    coordinates) of a vehicle file with overrides (see :class:`loco.Locomotive`), computed by the
-    core with the vehicle built once."""
+    coordinates) of a built vehicle (``Locomotive.native``), computed by the core."""
     shapes = np.atleast_2d(shapes)
     names, kinds, shares, motions = _loco.mode_energies(
+        vehicle,
         np.ascontiguousarray(shapes.real, dtype=np.float64),
         np.ascontiguousarray(shapes.imag, dtype=np.float64),
-        toml_text=toml_text,
-        origin=origin,
-        overrides=overrides,
     )
     return ModeEnergies(names=list(names), kinds=list(kinds), shares=shares, motions=motions)
 

@@ -8,7 +8,8 @@
 
 from __future__ import annotations
 
-from dataclasses import InitVar, dataclass, field, fields
+import os
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -17,7 +18,7 @@ import numpy.typing as npt
 from loco import _loco
 from loco import field_types as types
 from loco.dampers import Damper
-from loco.profiles import Profile, builtin
+from loco.profiles import Profile
 from loco.track import Track
 from loco.vehicle import Locomotive
 
@@ -28,6 +29,7 @@ __all__ = [
     "CREEP_MODELS",
     "RUN_STATISTICS",
     "SCENARIOS",
+    "SETTINGS",
     "Scenario",
     "SimulationResult",
     "simulate",
@@ -35,133 +37,183 @@ __all__ = [
 
 FloatArray = npt.NDArray[np.float64]
 
-#: The study's scenarios (SPEC §2): name -> (wheel, rail) built-in profiles.
-SCENARIOS: dict[str, tuple[str, str]] = {
-    "S_low": ("jm3-thin-flange", "cn60"),
-    "S_norm": ("jm3-new", "cn60"),
-    "S_high": ("jm3-worn", "cn60"),
-}
+#: The study's scenarios (SPEC §2): name -> (wheel, rail) built-in profiles (the core's presets).
+SCENARIOS: dict[str, tuple[str, str]] = {n: (w, r) for n, w, r in _loco.scenario_presets()}
 
 
 #: The creep models a scenario accepts (``Scenario(creep=...)``), from the core.
 CREEP_MODELS: tuple[str, ...] = tuple(_loco.creep_model_names())
 
+#: Python spellings that differ from the core's (the study file's ``[scenario]`` keys).
+_CORE_NAMES = {"scenario": "name"}
 
-@dataclass(frozen=True)
+#: Every setting with a default, at its default, from the core (``ScenarioSettings::defaults``).
+_DEFAULTS: dict[str, Any] = {
+    {v: k for k, v in _CORE_NAMES.items()}.get(k, k): v
+    for k, v in _loco.scenario_defaults().items()
+    if k not in ("per_sample_track", "speed_kmh")
+}
+
+#: Spellings that were replaced, with what to write instead.
+_REPLACED = {
+    "perfect_track": 'replaced by `track`; write track="perfect"',
+    "track_kind": 'replaced by `track`; write track="perfect" or track="synthetic"',
+    "creep_table": 'replaced by `creep`; write creep="table" (or "fastsim", "fastrip")',
+}
+
+
+class _Setting:
+    """A scenario setting: the value the user gave (kept in the instance), else the core's
+    default (this class attribute)."""
+
+    def __init__(self, default: Any = None) -> None:
+        self.default = default
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.default = _DEFAULTS.get(name)
+
+    def __get__(self, obj: object, objtype: type | None = None) -> Any:
+        return self.default
+
+
 class Scenario:
     """What a run is: wheel and rail, speed (m/s), distance (m), track, yaw damper, settings.
 
-    Give either ``scenario`` (``"S_low"``, ``"S_norm"``, ``"S_high"``) or ``wheel`` (a
-    :class:`loco.profiles.Profile` or a built-in name) with an optional ``rail`` (default
-    ``cn60``). The track is ``track`` when given, perfect when ``perfect_track`` is true, and
-    otherwise synthesised from ``spectrum`` (``"cn-hsr"``, ``"german-low"``, ``"german-high"``),
-    ``seed`` and the wavelength ``band`` (m). ``creep`` is the creep model (:data:`CREEP_MODELS`):
-    ``"fastsim"``, FASTSIM at every evaluation (the study's method, default); ``"fastrip"``,
-    FaStrip (strip theory with spin, closer to Kalker's exact theory in the spin moment); or
-    ``"table"``, FASTSIM tabulated once per run or batch: about 2 % of μN force error for a
-    faster time loop, worth it for large batches (the table takes ~0.5 s). ``fastsim_grid`` is
-    the grid of any of them. (``creep_table`` was replaced by ``creep="table"``.)
-    ``lead_in`` (m) is run before the recorded ``distance`` and not recorded, so that start
-    transients (an FSD valve leaving its defined start state) settle first; 0 as in the study.
+    Every setting is optional; the ones given are kept and forwarded to the core, which supplies
+    the others (:meth:`defaults`, the same defaults and checks as the study file's ``[scenario]``
+    section of ``loco-batch``). Reading a setting gives its value, given or default.
+
+    Give either ``scenario`` (``"S_low"``, ``"S_norm"``, ``"S_high"``: :data:`SCENARIOS`) or
+    ``wheel`` (a :class:`loco.profiles.Profile`, a built-in name or a profile file) with an
+    optional ``rail`` (default ``cn60``). ``track`` is ``"synthetic"`` (default: synthesised from
+    ``spectrum`` — ``"cn-hsr"``, ``"german-low"``, ``"german-high"`` —, ``seed`` and the
+    wavelength ``band``, m), ``"perfect"``, a :class:`loco.track.Track` or the path of a measured
+    track CSV; ``spectrum``, ``seed`` and ``band`` are refused with any but a synthesised track.
+    ``yaw_damper`` is ``"file"`` (the parameter file's Maxwell damper, default), a preset name of
+    :data:`loco.dampers.PRESETS` (``"YD1"``, ``"YD2"``, ``"FSD"``, with ``fsd_trigger``
+    ``"rms-frequency"`` or ``"hydraulic"``) or a :class:`loco.dampers.Damper`. ``creep`` is the
+    creep model (:data:`CREEP_MODELS`): ``"fastsim"``, FASTSIM at every evaluation (the study's
+    method, default); ``"fastrip"``, FaStrip (strip theory with spin, closer to Kalker's exact
+    theory in the spin moment); or ``"table"``, FASTSIM tabulated once per run or batch: about
+    2 % of μN force error for a faster time loop, worth it for large batches (the table takes
+    ~0.5 s). ``fastsim_grid`` is the grid of any of them. ``lead_in`` (m) is run before the
+    recorded ``distance`` and not recorded, so that start transients (an FSD valve leaving its
+    defined start state) settle first; 0 as in the study. ``gauge`` (m), ``gauge_height`` (m below
+    the rail top) and ``rail_inclination`` (rad) set the track. ``perfect_track`` and
+    ``creep_table`` were replaced (``track="perfect"``, ``creep="table"``): refused with
+    :class:`loco.ParameterError` saying so.
     """
 
-    scenario: str | None = None
-    wheel: Profile | str | None = None
-    rail: Profile | str = "cn60"
-    speed: float = 200.0 / 3.6
-    distance: float = 500.0
-    track: Track | None = None
-    perfect_track: bool = False
-    spectrum: str = "cn-hsr"
-    seed: int = 0
-    band: tuple[float, float] = (2.0, 200.0)
-    yaw_damper: Damper | None = None
-    step: float = 1e-3
-    output_rate: float = 500.0
-    fastsim_grid: tuple[int, int] = (10, 10)
-    creep: str = "fastsim"
-    initial_lateral_offset: float = 0.0
-    lead_in: float = 0.0
-    creep_table: InitVar[object] = None
-    """Removed: refused with :class:`loco.ParameterError` naming ``creep``."""
+    scenario: str | None = _Setting()  # type: ignore[assignment]
+    wheel: Profile | str | None = _Setting()  # type: ignore[assignment]
+    rail: Profile | str = _Setting()  # type: ignore[assignment]
+    speed: float = _Setting()  # type: ignore[assignment]
+    distance: float = _Setting()  # type: ignore[assignment]
+    lead_in: float = _Setting()  # type: ignore[assignment]
+    track: Track | str = _Setting()  # type: ignore[assignment]
+    spectrum: str = _Setting()  # type: ignore[assignment]
+    seed: int = _Setting()  # type: ignore[assignment]
+    band: tuple[float, float] = _Setting()  # type: ignore[assignment]
+    yaw_damper: Damper | str = _Setting()  # type: ignore[assignment]
+    fsd_trigger: str = _Setting()  # type: ignore[assignment]
+    step: float = _Setting()  # type: ignore[assignment]
+    output_rate: float = _Setting()  # type: ignore[assignment]
+    fastsim_grid: tuple[int, int] = _Setting()  # type: ignore[assignment]
+    creep: str = _Setting()  # type: ignore[assignment]
+    initial_lateral_offset: float = _Setting()  # type: ignore[assignment]
+    gauge: float = _Setting()  # type: ignore[assignment]
+    gauge_height: float = _Setting()  # type: ignore[assignment]
+    rail_inclination: float = _Setting()  # type: ignore[assignment]
 
-    def __post_init__(self, creep_table: object) -> None:
-        if creep_table is not None:
-            raise _loco.ParameterError(
-                "invalid parameter `creep_table`: replaced by `creep`; "
-                'write creep="table" (or "fastsim", "fastrip")'
-            )
+    def __init__(
+        self,
+        scenario: str | None = None,
+        *,
+        wheel: Profile | str | None = None,
+        rail: Profile | str | None = None,
+        speed: float | None = None,
+        distance: float | None = None,
+        lead_in: float | None = None,
+        track: Track | str | None = None,
+        spectrum: str | None = None,
+        seed: int | None = None,
+        band: tuple[float, float] | None = None,
+        yaw_damper: Damper | str | None = None,
+        fsd_trigger: str | None = None,
+        step: float | None = None,
+        output_rate: float | None = None,
+        fastsim_grid: tuple[int, int] | None = None,
+        creep: str | None = None,
+        initial_lateral_offset: float | None = None,
+        gauge: float | None = None,
+        gauge_height: float | None = None,
+        rail_inclination: float | None = None,
+        **replaced: object,
+    ) -> None:
+        for name in replaced:
+            if name not in _REPLACED:
+                raise TypeError(f"Scenario() got an unexpected keyword argument '{name}'")
+            raise _loco.ParameterError(f"invalid parameter `{name}`: {_REPLACED[name]}")
+        given = {k: v for k, v in locals().items() if k in SETTINGS and v is not None}
+        for name, value in given.items():
+            if isinstance(value, list):
+                value = tuple(value)
+            object.__setattr__(self, name, value)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"Scenario is immutable; use replace({name}=...)")
+
+    def given(self) -> dict[str, Any]:
+        """The settings the user gave, by name (the others take :meth:`defaults`)."""
+        return dict(self.__dict__)
+
+    @staticmethod
+    def defaults() -> dict[str, Any]:
+        """Every setting that has a default, at its default, from the core (the same as the
+        study file's ``[scenario]`` section)."""
+        return dict(_DEFAULTS)
+
+    def replace(self, **changes: Any) -> Scenario:
+        """A copy with settings changed (None: back to the default)."""
+        return Scenario(**{**self.given(), **changes})
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Scenario):
+            return NotImplemented
+        return self.given() == other.given()
+
+    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
-        """The fields that differ from their defaults (speed in m/s, distance in m)."""
-        changed = []
-        for f in fields(self):
-            value = getattr(self, f.name)
-            try:
-                same = bool(value == f.default)
-            except (TypeError, ValueError):
-                same = False
-            if not same:
-                changed.append(f"{f.name}={value!r}")
-        return f"Scenario({', '.join(changed)})"
-
-    def profiles(self) -> tuple[Profile, Profile]:
-        """The wheel and rail profiles of the run."""
-        if self.scenario is not None:
-            types.text("scenario", self.scenario)
-            if self.wheel is not None:
-                raise _loco.ParameterError(
-                    "invalid parameter `wheel`: give either a scenario or a wheel, not both"
-                )
-            if self.scenario not in SCENARIOS:
-                raise _loco.ParameterError(
-                    f"invalid parameter `scenario`: unknown '{self.scenario}', "
-                    f"expected one of {sorted(SCENARIOS)}"
-                )
-            wheel_name, rail_name = SCENARIOS[self.scenario]
-            return builtin(wheel_name), builtin(rail_name)
-        if self.wheel is None:
-            raise _loco.ParameterError("invalid parameter `wheel`: give a wheel or a scenario")
-        return _profile("wheel", self.wheel), _profile("rail", self.rail)
+        """The settings given (speed in m/s, distance in m)."""
+        return f"Scenario({', '.join(f'{k}={v!r}' for k, v in self.given().items())})"
 
     def native(self, *, seed: int | None = None) -> _loco.RunScenario:
-        """The checked native scenario (``seed`` replaces the track seed when given).
+        """The checked native scenario (``seed``, when given, replaces the track seed as if the
+        user had given it). Raises :class:`loco.ParameterError` naming the field for a
+        non-physical or contradictory value."""
+        settings: dict[str, Any] = {}
+        objects: dict[str, Any] = {}
+        given = self.given()
+        if seed is not None:
+            given["seed"] = seed
+        for name, value in given.items():
+            if isinstance(value, (Profile, Damper)):
+                objects[name] = value
+            elif isinstance(value, Track):
+                objects[name] = value.native
+            elif isinstance(value, os.PathLike):
+                settings[name] = os.fspath(value)
+            else:
+                check = _CHECKS.get(name)
+                settings[_CORE_NAMES.get(name, name)] = (
+                    value if check is None else check(name, value)
+                )
+        return _loco.RunScenario(settings, **objects)
 
-        Raises :class:`loco.ParameterError` naming the field for a non-physical value or a
-        value of the wrong type (:mod:`loco.field_types`)."""
-        wheel, rail = self.profiles()
-        track_seed = types.whole("seed", self.seed if seed is None else seed)
-        if self.track is not None and not isinstance(self.track, Track):
-            raise types.wrong_type("track", "a loco.Track or None", self.track)
-        if self.yaw_damper is not None and not isinstance(self.yaw_damper, Damper):
-            raise types.wrong_type("yaw_damper", "a loco.dampers.Damper or None", self.yaw_damper)
-        band = types.pair("band", self.band)
-        grid = types.pair("fastsim_grid", self.fastsim_grid)
-        return _loco.RunScenario(
-            wheel,
-            rail,
-            types.real("speed", self.speed),
-            types.real("distance", self.distance),
-            track=None if self.track is None else self.track.native,
-            track_kind="perfect"
-            if types.flag("perfect_track", self.perfect_track)
-            else "synthetic",
-            spectrum=types.text("spectrum", self.spectrum),
-            seed=track_seed,
-            band=(types.real("band", band[0]), types.real("band", band[1])),
-            yaw_damper=self.yaw_damper,
-            step=types.real("step", self.step),
-            output_rate=types.real("output_rate", self.output_rate),
-            fastsim_grid=(
-                types.whole("fastsim_grid", grid[0], 1, GRID_BOUND),
-                types.whole("fastsim_grid", grid[1], 1, GRID_BOUND),
-            ),
-            creep=types.text("creep", self.creep),
-            initial_lateral_offset=types.real(
-                "initial_lateral_offset", self.initial_lateral_offset
-            ),
-            lead_in=types.real("lead_in", self.lead_in),
-        )
+
+#: The settings of a :class:`Scenario`, in the order of its signature.
+SETTINGS: tuple[str, ...] = tuple(n for n, v in vars(Scenario).items() if isinstance(v, _Setting))
 
 
 #: Bound of each grid size before it reaches the core (whose bound, on nx·ny, gives the reason):
@@ -169,13 +221,49 @@ class Scenario:
 GRID_BOUND = 2**32
 
 
-def _profile(name: str, value: object) -> Profile:
-    """A wheel or rail: a profile or a built-in name."""
-    if isinstance(value, str):
-        return builtin(value)
-    if not isinstance(value, Profile):
-        raise types.wrong_type(name, "a loco.profiles.Profile or a built-in name", value)
-    return value
+def _reals(name: str, value: Any) -> tuple[float, float]:
+    a, b = types.pair(name, value)
+    return types.real(name, a), types.real(name, b)
+
+
+def _grid(name: str, value: Any) -> tuple[int, int]:
+    a, b = types.pair(name, value)
+    return types.whole(name, a, 1, GRID_BOUND), types.whole(name, b, 1, GRID_BOUND)
+
+
+def _name_or_path(name: str, value: Any) -> str:
+    """A name (a built-in profile, a preset, ``"synthetic"``/``"perfect"``) or a file path; the
+    objects (profiles, dampers, tracks) are passed apart."""
+    return types.text(name, value)
+
+
+#: The Python type check of each plain setting (:mod:`loco.field_types`), before the core checks
+#: its value: a wrong type is a :class:`loco.ParameterError` naming the field, never a silent
+#: conversion (``True`` as 1, ``1.5`` as 1, a complex number's real part).
+_CHECKS: dict[str, Any] = {
+    **{
+        n: types.real
+        for n in (
+            "speed",
+            "distance",
+            "lead_in",
+            "step",
+            "output_rate",
+            "initial_lateral_offset",
+            "gauge",
+            "gauge_height",
+            "rail_inclination",
+        )
+    },
+    "seed": types.whole,
+    "band": _reals,
+    "fastsim_grid": _grid,
+    **{
+        n: _name_or_path
+        for n in ("scenario", "spectrum", "creep", "fsd_trigger", "wheel", "rail", "track")
+    },
+    "yaw_damper": _name_or_path,
+}
 
 
 #: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.
@@ -241,10 +329,8 @@ def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
     :class:`loco.EquilibriumError` when its static equilibrium is not found.
     """
     time, names, channels, metric_names, metric_values, statistics = _loco.simulate(
+        vehicle.native,
         scenario.native(),
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
     )
     return SimulationResult(
         time=time,

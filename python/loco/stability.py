@@ -11,7 +11,6 @@ lateral disturbance (`loco._loco.ramp_down`): the speed at which the hunting lim
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -66,7 +65,7 @@ def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:
     if conicity is None:
         return scenario
     wheel, rail = _loco.conical_profiles(float(conicity))
-    return dataclasses.replace(scenario, scenario=None, wheel=wheel, rail=rail)
+    return scenario.replace(scenario=None, wheel=wheel, rail=rail)
 
 
 def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = None) -> Eigen:
@@ -78,18 +77,11 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
     classical stability map. Each mode says which bodies move by their shares of its kinetic
     energy (:mod:`loco.modes`)."""
     scenario = with_conicity(scenario, conicity)
-    a = _loco.linearise(
-        scenario.native(),
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
-    )
+    a = _loco.linearise(vehicle.native, scenario.native())
     values, vectors = np.linalg.eig(a)
     # One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
     keep = np.flatnonzero(values.imag > 1e-6)
-    energies = mode_energies(
-        vectors[:, keep].T, vehicle.toml_text, vehicle.origin, dict(vehicle.overrides)
-    )
+    energies = mode_energies(vectors[:, keep].T, vehicle.native)
     kinds = dict(zip(energies.names, energies.kinds, strict=True))
     modes = []
     for i, k in enumerate(keep):
@@ -226,10 +218,8 @@ def ramp_down(
     34.1 and 33.8 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
     check it. Start well above the linear critical speed. Ctrl-C stops the run."""
     speed, outcome, speeds, amplitudes = _loco.ramp_down(
+        vehicle.native,
         scenario.native(),
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
         **_given(
             end_speed=end_speed,
             deceleration=deceleration,
@@ -301,10 +291,8 @@ def critical_speed(
         )
     scenario = with_conicity(scenario, conicity)
     speed, outcome, searched_low, searched_high = _loco.linear_critical_speed(
+        vehicle.native,
         scenario.native(),
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
         **_given(low=low, high=high, tolerance=tolerance, band=band),  # type: ignore[arg-type]
     )
     limit = searched_high if outcome == "stable_at_high" else searched_low

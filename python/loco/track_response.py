@@ -143,13 +143,11 @@ def frequency_response(
     outs = list(DEFAULT_OUTPUTS if outputs is None else outputs)
     f = _frequencies(frequencies)
     h, speed, wheelset_x = _loco.frequency_response(
+        vehicle.native,
         scenario.native(),
         ins,
         outs,
         f,
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
     )
     return FrequencyResponse(
         frequencies=f,
@@ -249,15 +247,13 @@ def response_psd(
     name = scenario.spectrum if spectrum is None else spectrum
     lo, hi = scenario.band if band is None else band
     psd, rms, wy, zeta = _loco.response_psd(
+        vehicle.native,
         scenario.native(),
         outs,
         f,
         spectrum=name,
         band=(float(lo), float(hi)),
         amplitude_scale=float(amplitude_scale),
-        toml_text=vehicle.toml_text,
-        origin=vehicle.origin,
-        overrides=dict(vehicle.overrides),
     )
     return ResponsePsd(
         frequencies=f,

@@ -11,6 +11,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
+import numpy.typing as npt
+
 from loco import _loco
 
 __all__ = ["STUDY_PARAMETERS", "Locomotive", "Parameter", "body_names", "dof_names"]
@@ -33,18 +36,35 @@ class Parameter:
 class Locomotive:
     """A vehicle: a parameter file (None: the embedded default) and overrides by name.
 
-    Instances are immutable; :meth:`replace` returns a new one. The parameters are checked
-    (the vehicle is built) when the object is created, so a non-physical value raises
-    :class:`loco.ParameterError` naming it.
+    Instances are immutable; :meth:`replace` returns a new one. The file is parsed and the
+    vehicle built once, when the object is created (a non-physical value raises
+    :class:`loco.ParameterError` naming it): :attr:`native`, the built vehicle every simulation,
+    linearisation and batch of it uses. Pickled as the file text and the overrides.
     """
 
     toml_text: str | None = None
     origin: str = "<default vehicle>"
     overrides: Mapping[str, float] = field(default_factory=dict)
+    #: The built vehicle (``loco._loco.Vehicle``), shared by every call that takes this one.
+    native: _loco.Vehicle = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "overrides", {k: float(v) for k, v in self.overrides.items()})
-        _loco.vehicle_parameters(self.toml_text, self.origin, dict(self.overrides))
+        overrides = {k: float(v) for k, v in self.overrides.items()}
+        object.__setattr__(self, "overrides", overrides)
+        object.__setattr__(self, "native", _loco.Vehicle(self.toml_text, self.origin, overrides))
+
+    @classmethod
+    def _wrap(cls, native: _loco.Vehicle) -> Locomotive:
+        """A Locomotive around an already built vehicle (no parsing, no build)."""
+        self = object.__new__(cls)
+        object.__setattr__(self, "toml_text", native.toml_text)
+        object.__setattr__(self, "origin", native.origin)
+        object.__setattr__(self, "overrides", dict(native.overrides))
+        object.__setattr__(self, "native", native)
+        return self
+
+    def __reduce__(self) -> tuple[type[Locomotive], tuple[str | None, str, dict[str, float]]]:
+        return (Locomotive, (self.toml_text, self.origin, dict(self.overrides)))
 
     def __repr__(self) -> str:
         source = "default vehicle" if self.toml_text is None else repr(self.origin)
@@ -68,25 +88,26 @@ class Locomotive:
 
     def replace(self, overrides: Mapping[str, float] | None = None, /, **kw: float) -> Locomotive:
         """A copy with parameters overridden, by key (``{"secondary.yaw_damper_damping": 2e5}``)
-        or as keywords for names without dots (study aliases: ``replace(C_sx=2e5)``)."""
-        merged = {**self.overrides, **(overrides or {}), **kw}
-        return Locomotive(self.toml_text, self.origin, merged)
+        or as keywords for names without dots (study aliases: ``replace(C_sx=2e5)``). The file
+        is not parsed again; the new vehicle is built once."""
+        given = {k: float(v) for k, v in {**(overrides or {}), **kw}.items()}
+        return Locomotive._wrap(self.native.replace(given))
 
     def parameters(self) -> dict[str, Parameter]:
         """All parameters after overrides, by key."""
-        rows = _loco.vehicle_parameters(self.toml_text, self.origin, dict(self.overrides))
-        return {k: Parameter(k, v, u, s) for k, v, u, s in rows}
+        return {k: Parameter(k, v, u, s) for k, v, u, s in self.native.parameters_table()}
 
     def __getitem__(self, name: str) -> float:
-        key = STUDY_PARAMETERS.get(name, name)
-        params = self.parameters()
-        if key not in params:
-            raise _loco.ParameterError(f"invalid parameter `{name}`: unknown vehicle parameter")
-        return params[key].value
+        """The value (SI) of a parameter by key or study alias, read from the built vehicle."""
+        return self.native[name]
 
     def total_mass(self) -> float:
         """Mass of the 25 bodies, kg."""
-        return _loco.vehicle_total_mass(self.toml_text, self.origin, dict(self.overrides))
+        return self.native.total_mass()
+
+    def mass_matrix(self) -> npt.NDArray[np.float64]:
+        """The 90 × 90 mass matrix (kg, kg·m, kg·m²) in coordinate order (:func:`dof_names`)."""
+        return self.native.mass_matrix()
 
     def default_toml(self) -> str:
         """The embedded default parameter file (a template for one's own)."""

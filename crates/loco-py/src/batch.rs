@@ -2,13 +2,13 @@
 
 use crate::errors::{run_detached_monitored, InternalError};
 use crate::scenario::PyRunScenario;
-use crate::vehicle::{channels_array, parameter_set};
+use crate::vehicle::channels_array;
+use crate::vehicle_handle::PyVehicle;
 use loco_core::batch::{run_batch as core_run_batch, BatchMonitor, BatchSpec};
 use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::LocoError;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
-use std::collections::BTreeMap;
 use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
@@ -31,24 +31,21 @@ type BatchTuple<'py> = (
     Bound<'py, PyArray2<f64>>,
 );
 
-/// Runs one simulation per row of `params` (n × k, SI; columns `names`) on `threads` threads
+/// Runs one simulation of `vehicle` per row of `params` (n × k, SI; columns `names`) on `threads` threads
 /// (0: one per core), see `loco.run_batch`. `progress(done, failed)` is called about every
 /// 100 ms while the batch runs; Ctrl-C (or an exception from `progress`) cancels it.
 #[pyfunction]
 #[pyo3(signature = (
-    scenario, params, names, *, toml_text=None, origin="<vehicle>".to_string(),
-    overrides=BTreeMap::new(), threads=0, per_sample_track=false, track_streams=None,
+    vehicle, scenario, params, names, *, threads=0, per_sample_track=false, track_streams=None,
     histories=Vec::new(), progress=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn run_batch<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
     params: PyReadonlyArray2<'py, f64>,
     names: Vec<String>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
     threads: usize,
     per_sample_track: bool,
     track_streams: Option<Vec<u64>>,
@@ -69,11 +66,12 @@ fn run_batch<'py>(
     // Logical (row-major) order whatever the array's memory layout.
     let values: Vec<f64> = params.as_array().iter().copied().collect();
     let scenario = scenario.inner.clone();
+    let base = vehicle.parameters().clone();
     let monitor = Arc::new(BatchMonitor::default());
     let worker_monitor = Arc::clone(&monitor);
     let work = move || {
         let spec = BatchSpec {
-            base: parameter_set(toml_text.as_deref(), &origin, &overrides)?,
+            base,
             scenario,
             names,
             values,

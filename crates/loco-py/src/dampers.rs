@@ -8,6 +8,7 @@ use loco_core::dampers::{
     HydraulicFrequencyValve, HydraulicParams, HydraulicValve, HydraulicValveParams, MaxwellDamper,
     MaxwellParams, REFERENCE_STROKE_AMPLITUDE_M,
 };
+use loco_core::vehicle::presets;
 use loco_core::LocoError as CoreError;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -377,22 +378,19 @@ fn damper_hydraulic_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     .parameters(py)
 }
 
-/// Preset: "yd1", "yd2", "fsd" or "fsd-hydraulic".
+/// A yaw damper preset by name (`presets::DAMPER_PRESETS`: "YD1", "YD2", "FSD"), the FSD with
+/// its `trigger` (`"rms-frequency"`, the default, or `"hydraulic"`).
 #[pyfunction]
-fn damper_preset(name: &str) -> PyResult<PyDamper> {
-    let inner = match name {
-        "yd1" => Damper::yd1(),
-        "yd2" => Damper::yd2(),
-        "fsd" => Damper::fsd(),
-        "fsd-hydraulic" => Damper::fsd_hydraulic(),
-        _ => {
-            return Err(crate::errors::to_py_err(CoreError::param(
-                "name",
-                format!("unknown preset `{name}` (yd1, yd2, fsd, fsd-hydraulic)"),
-            )))
-        }
-    };
+#[pyo3(signature = (name, trigger=None))]
+fn damper_preset(name: &str, trigger: Option<&str>) -> PyResult<PyDamper> {
+    let inner = presets::damper_preset(name, trigger).map_err(crate::errors::to_py_err)?;
     Ok(PyDamper { inner })
+}
+
+/// The names of the yaw damper presets, in the order the studies compare them.
+#[pyfunction]
+fn damper_preset_names() -> Vec<&'static str> {
+    presets::DAMPER_PRESETS.to_vec()
 }
 
 type Arr<'py> = Bound<'py, PyArray1<f64>>;
@@ -514,6 +512,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damper_hydraulic, m)?)?;
     m.add_function(wrap_pyfunction!(damper_hydraulic_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(damper_preset, m)?)?;
+    m.add_function(wrap_pyfunction!(damper_preset_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_trigger_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_reference_stroke_amplitude, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_valve_opening_band, m)?)?;

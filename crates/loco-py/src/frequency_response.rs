@@ -4,7 +4,7 @@
 
 use crate::errors::run_detached;
 use crate::scenario::PyRunScenario;
-use crate::vehicle::parameter_set;
+use crate::vehicle_handle::PyVehicle;
 use loco_core::track::{Channel, TrackSpectrum};
 use loco_core::vehicle::frequency_response::{check_frequencies, ResponseSolver};
 use loco_core::vehicle::response_psd::{response_psd as core_response_psd, PsdSettings};
@@ -13,7 +13,6 @@ use loco_core::LocoError;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{Complex64, IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1};
 use pyo3::prelude::*;
-use std::collections::BTreeMap;
 
 /// Input channel names parsed, errors naming the field `inputs`.
 fn channels(inputs: &[String]) -> loco_core::Result<Vec<Channel>> {
@@ -41,27 +40,24 @@ fn channels(inputs: &[String]) -> loco_core::Result<Vec<Channel>> {
 /// wheelsets' positions ahead of the origin (m).
 #[pyfunction]
 #[pyo3(signature = (
-    scenario, inputs, outputs, frequencies, *, toml_text=None, origin="<vehicle>".to_string(),
-    overrides=BTreeMap::new()
+    vehicle, scenario, inputs, outputs, frequencies
 ))]
 #[allow(clippy::too_many_arguments)]
 fn frequency_response<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
     inputs: Vec<String>,
     outputs: Vec<String>,
     frequencies: PyReadonlyArray1<'py, f64>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
 ) -> PyResult<(Bound<'py, PyArray3<Complex64>>, f64, Vec<f64>)> {
     let scenario = scenario.inner.clone();
+    let structure = std::sync::Arc::clone(&vehicle.structure);
     let frequencies = frequencies.as_array().to_vec();
     let (h, speed, wheelset_x, shape) = run_detached(py, move || {
         let inputs = channels(&inputs)?;
         check_frequencies(&frequencies)?;
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        let model = scenario_track_model(set, &scenario)?;
+        let model = scenario_track_model(structure, &scenario)?;
         let h = ResponseSolver::new(&model, &outputs)?.response(&inputs, &frequencies)?;
         let shape = (outputs.len(), inputs.len(), frequencies.len());
         Ok((h.h, h.speed, h.wheelset_x.to_vec(), shape))
@@ -77,23 +73,22 @@ fn frequency_response<'py>(
 /// damped mode in 0.3–20 Hz (–, NaN when none: the spectra hold only when it is positive).
 #[pyfunction]
 #[pyo3(signature = (
-    scenario, outputs, frequencies, *, spectrum="cn-hsr".to_string(), band=(2.0, 200.0),
-    amplitude_scale=1.0, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()
+    vehicle, scenario, outputs, frequencies, *, spectrum="cn-hsr".to_string(), band=(2.0, 200.0),
+    amplitude_scale=1.0
 ))]
 #[allow(clippy::too_many_arguments)]
 fn response_psd<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
     outputs: Vec<String>,
     frequencies: PyReadonlyArray1<'py, f64>,
     spectrum: String,
     band: (f64, f64),
     amplitude_scale: f64,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
 ) -> PyResult<PsdTuple<'py>> {
     let scenario = scenario.inner.clone();
+    let structure = std::sync::Arc::clone(&vehicle.structure);
     let frequencies = frequencies.as_array().to_vec();
     let n_out = outputs.len();
     let result = run_detached(py, move || {
@@ -106,8 +101,7 @@ fn response_psd<'py>(
         };
         settings.validate()?;
         check_frequencies(&frequencies)?;
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        let model = scenario_track_model(set, &scenario)?;
+        let model = scenario_track_model(structure, &scenario)?;
         core_response_psd(&model, &outputs, &frequencies, &settings)
     })?;
     let nf = result.frequencies.len();

@@ -15,6 +15,7 @@ mod metrics;
 mod scenario;
 mod track;
 mod vehicle;
+mod vehicle_handle;
 
 use pyo3::prelude::*;
 
@@ -30,6 +31,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     metrics::register(m)?;
     dampers::register(m)?;
     scenario::register(m)?;
+    vehicle_handle::register(m)?;
     vehicle::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;

@@ -6,83 +6,110 @@ use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
 use loco_core::vehicle::creep_model::CreepModel;
+use loco_core::vehicle::presets::SCENARIOS;
 use loco_core::vehicle::scenario::Scenario;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
+use loco_core::LocoError;
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyList, PyString, PyTuple};
 use std::path::Path;
 use std::sync::Arc;
 
-/// A checked run scenario (SI units). The track is `track` when given, perfect when
-/// `track_kind == "perfect"`, else synthesised from `spectrum`, `seed` and `band` (m);
-/// `creep` names the creep model (`fastsim`, `fastrip`, `table`: `CreepModel::NAMES`);
-/// `lead_in` (m) is run before the recorded `distance` and not recorded.
+/// A checked run scenario (SI units), from the settings of `loco_core`'s `ScenarioSettings`
+/// (the study file's `[scenario]` keys, same names, types and checks: `name`, `wheel`, `rail`,
+/// `speed`, `distance`, `lead_in`, `track`, `spectrum`, `seed`, `band`, `yaw_damper`,
+/// `fsd_trigger`, `step`, `output_rate`, `fastsim_grid`, `creep`, `initial_lateral_offset`,
+/// `gauge`, `gauge_height`, `rail_inclination`), every one optional (`scenario_defaults()`), and
+/// the objects a caller holds instead of names (wheel and rail profiles, a track, a damper).
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
 pub struct PyRunScenario {
     pub inner: Scenario,
 }
 
+/// A Python setting value as TOML (bool, int, float, str, or a list/tuple of them), so that the
+/// settings are read by the same deserialiser as the study file.
+fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    let bad = || {
+        to_py_err(LocoError::param(
+            key,
+            format!(
+                "expected a number, a string, a bool or a list of them, got {}",
+                value
+                    .get_type()
+                    .name()
+                    .map(|n| n.to_string())
+                    .unwrap_or_default()
+            ),
+        ))
+    };
+    if let Ok(b) = value.cast::<PyBool>() {
+        return Ok(toml::Value::Boolean(b.is_true()));
+    }
+    if let Ok(text) = value.cast::<PyString>() {
+        return Ok(toml::Value::String(text.to_str()?.to_string()));
+    }
+    if value.cast::<PyFloat>().is_ok() {
+        return Ok(toml::Value::Float(value.extract::<f64>()?));
+    }
+    if let Ok(i) = value.extract::<i64>() {
+        return Ok(toml::Value::Integer(i));
+    }
+    if let Ok(x) = value.extract::<f64>() {
+        return Ok(toml::Value::Float(x));
+    }
+    if value.cast::<PyList>().is_ok() || value.cast::<PyTuple>().is_ok() {
+        let items: PyResult<Vec<toml::Value>> =
+            value.try_iter()?.map(|v| toml_value(key, &v?)).collect();
+        return Ok(toml::Value::Array(items?));
+    }
+    Err(bad())
+}
+
+/// The settings of a Python dict, checked as the study file's `[scenario]` section is.
+fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSettings> {
+    let mut table = toml::Table::new();
+    if let Some(settings) = settings {
+        for (key, value) in settings.iter() {
+            let key: String = key.extract()?;
+            if value.is_none() {
+                continue;
+            }
+            let v = toml_value(&key, &value)?;
+            table.insert(key, v);
+        }
+    }
+    let read = |table: toml::Table| toml::Value::Table(table).try_into::<ScenarioSettings>();
+    read(table.clone()).map_err(|e| {
+        // Name the setting: the first one refused on its own (serde's message names the type).
+        let key = table
+            .iter()
+            .find(|(k, v)| read(toml::Table::from_iter([((*k).clone(), (*v).clone())])).is_err())
+            .map_or("scenario", |(k, _)| k.as_str());
+        to_py_err(LocoError::param(key, e.message().to_string()))
+    })
+}
+
 #[pymethods]
 impl PyRunScenario {
     #[new]
-    #[pyo3(signature = (
-        wheel, rail, speed, distance, *, track=None, track_kind="synthetic".to_string(),
-        spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
-        output_rate=500.0, fastsim_grid=(10, 10), creep="fastsim".to_string(), initial_lateral_offset=0.0,
-        lead_in=0.0,
-        gauge=1.435, gauge_height=0.016, rail_inclination=None
-    ))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (settings=None, *, wheel=None, rail=None, track=None, yaw_damper=None))]
     fn new(
-        wheel: PyRef<'_, PyProfile>,
-        rail: PyRef<'_, PyProfile>,
-        speed: f64,
-        distance: f64,
+        settings: Option<Bound<'_, PyDict>>,
+        wheel: Option<PyRef<'_, PyProfile>>,
+        rail: Option<PyRef<'_, PyProfile>>,
         track: Option<PyRef<'_, PyTrack>>,
-        track_kind: String,
-        spectrum: String,
-        seed: u64,
-        band: (f64, f64),
         yaw_damper: Option<PyRef<'_, PyDamper>>,
-        step: f64,
-        output_rate: f64,
-        fastsim_grid: (usize, usize),
-        creep: String,
-        initial_lateral_offset: f64,
-        lead_in: f64,
-        gauge: f64,
-        gauge_height: f64,
-        rail_inclination: Option<f64>,
     ) -> PyResult<Self> {
-        // A given track takes the place of `track_kind`; the synthesis settings only reach a
-        // synthesised track (the Python layer always passes them).
-        let synthetic = track.is_none() && track_kind == "synthetic";
-        if track.is_none() && !synthetic && track_kind != "perfect" {
-            return Err(to_py_err(loco_core::LocoError::param(
-                "track_kind",
-                format!("expected 'synthetic' or 'perfect', got '{track_kind}'"),
+        let settings = settings_of(settings.as_ref())?;
+        if settings.per_sample_track.is_some() {
+            return Err(to_py_err(LocoError::param(
+                "per_sample_track",
+                "a batch setting: give it to loco.run_batch",
             )));
         }
-        let settings = ScenarioSettings {
-            speed: Some(speed),
-            distance: Some(distance),
-            lead_in: Some(lead_in),
-            track: track.is_none().then_some(track_kind),
-            spectrum: synthetic.then_some(spectrum),
-            seed: synthetic.then_some(seed),
-            band: synthetic.then_some([band.0, band.1]),
-            step: Some(step),
-            output_rate: Some(output_rate),
-            fastsim_grid: Some([fastsim_grid.0, fastsim_grid.1]),
-            creep: Some(creep),
-            initial_lateral_offset: Some(initial_lateral_offset),
-            gauge: Some(gauge),
-            gauge_height: Some(gauge_height),
-            rail_inclination,
-            ..ScenarioSettings::default()
-        };
         let given = GivenObjects {
-            wheel: Some(wheel.inner.clone()),
-            rail: Some(rail.inner.clone()),
+            wheel: wheel.map(|p| p.inner.clone()),
+            rail: rail.map(|p| p.inner.clone()),
             track: track.map(|t| Arc::new(t.inner.clone())),
             yaw_damper: yaw_damper.map(|d| d.inner),
         };
@@ -119,6 +146,44 @@ impl PyRunScenario {
     }
 }
 
+/// Every scenario setting that has a default, at its default (`ScenarioSettings::defaults`, the
+/// only defaults): `{setting: value}` with the study file's names.
+#[pyfunction]
+fn scenario_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let table = toml::Table::try_from(ScenarioSettings::defaults())
+        .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
+    let out = PyDict::new(py);
+    for (key, value) in table {
+        out.set_item(key, py_value(py, &value)?)?;
+    }
+    Ok(out)
+}
+
+fn py_value<'py>(py: Python<'py>, value: &toml::Value) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match value {
+        toml::Value::Boolean(b) => b.into_pyobject(py)?.to_owned().into_any(),
+        toml::Value::Integer(i) => i.into_pyobject(py)?.into_any(),
+        toml::Value::Float(x) => x.into_pyobject(py)?.into_any(),
+        toml::Value::String(s) => s.into_pyobject(py)?.into_any(),
+        toml::Value::Array(items) => {
+            let items: PyResult<Vec<Bound<'py, PyAny>>> =
+                items.iter().map(|v| py_value(py, v)).collect();
+            PyTuple::new(py, items?)?.into_any()
+        }
+        other => {
+            return Err(crate::errors::InternalError::new_err(format!(
+                "unexpected default {other}"
+            )))
+        }
+    })
+}
+
+/// The study's scenarios as `(name, wheel, rail)` built-in profile names (`presets::SCENARIOS`).
+#[pyfunction]
+fn scenario_presets() -> Vec<(&'static str, &'static str, &'static str)> {
+    SCENARIOS.to_vec()
+}
+
 /// The names of the creep models a scenario accepts (`CreepModel::NAMES`).
 #[pyfunction]
 fn creep_model_names() -> Vec<&'static str> {
@@ -129,5 +194,7 @@ fn creep_model_names() -> Vec<&'static str> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRunScenario>()?;
     m.add_function(wrap_pyfunction!(creep_model_names, m)?)?;
+    m.add_function(wrap_pyfunction!(scenario_defaults, m)?)?;
+    m.add_function(wrap_pyfunction!(scenario_presets, m)?)?;
     Ok(())
 }

@@ -1,22 +1,22 @@
 //! Bindings of `loco_core::vehicle`: the parameter file, names of bodies and coordinates, runs,
-//! the mass matrix and modes' kinetic energy, the linearisation and the critical speeds.
+//! modes' kinetic energy, the linearisation and the critical speeds, each of a built vehicle
+//! (`vehicle_handle::PyVehicle`).
 
 use crate::errors::{run_detached, run_detached_monitored};
 use crate::scenario::PyRunScenario;
+use crate::vehicle_handle::PyVehicle;
 use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
-use loco_core::vehicle::layout::N_DOF;
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
 use loco_core::vehicle::linearise::{
     linear_critical_speed as core_linear_critical_speed, LinearSearch,
 };
 use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, MOTIONS};
-use loco_core::vehicle::parameters::{ParameterSet, DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
+use loco_core::vehicle::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::vehicle::scenario::{linearised, simulate_cancellable};
-use loco_core::vehicle::structure::VehicleStructure;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -24,62 +24,10 @@ use std::collections::BTreeMap;
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
-/// Parameters of a vehicle file (or the embedded default when `toml_text` is None) with the
-/// overrides applied, each checked by building the vehicle.
-pub fn parameter_set(
-    toml_text: Option<&str>,
-    origin: &str,
-    overrides: &BTreeMap<String, f64>,
-) -> loco_core::Result<ParameterSet> {
-    let mut set = match toml_text {
-        Some(text) => ParameterSet::from_toml_str(text, origin)?,
-        None => ParameterSet::default_vehicle(),
-    };
-    for (name, value) in overrides {
-        set.set(name, *value)?;
-    }
-    Ok(set)
-}
-
 /// The embedded default vehicle file (TOML text).
 #[pyfunction]
 fn default_vehicle_toml() -> &'static str {
     DEFAULT_VEHICLE_TOML
-}
-
-/// Parameters as `(key, value, unit, source)` rows after applying `overrides`; the vehicle is
-/// built to check that the set is physical (errors name the parameter).
-#[pyfunction]
-#[pyo3(signature = (toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()))]
-fn vehicle_parameters(
-    py: Python<'_>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
-) -> PyResult<Vec<(String, f64, String, String)>> {
-    run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        VehicleStructure::new(set.clone())?;
-        Ok(set
-            .iter()
-            .map(|(k, p)| (k.to_string(), p.value, p.unit.clone(), p.source.clone()))
-            .collect())
-    })
-}
-
-/// Total mass of the 25 bodies, kg.
-#[pyfunction]
-#[pyo3(signature = (toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()))]
-fn vehicle_total_mass(
-    py: Python<'_>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
-) -> PyResult<f64> {
-    run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        Ok(VehicleStructure::new(set)?.total_mass())
-    })
 }
 
 /// The six study parameters (SPEC §6) as `(alias, file key)` pairs.
@@ -111,24 +59,6 @@ fn body_names() -> Vec<String> {
     core_body_names()
 }
 
-/// The 90 × 90 mass matrix `Σ Tᵀ diag(m, m, m, Ixx, Iyy, Izz) T` of the vehicle (kg, kg·m,
-/// kg·m²), in coordinate order.
-#[pyfunction]
-#[pyo3(signature = (toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()))]
-fn mass_matrix<'py>(
-    py: Python<'py>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let structure = run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        VehicleStructure::new(set)
-    })?;
-    let m = Array2::from_shape_fn((N_DOF, N_DOF), |(i, j)| structure.mass.get(i, j));
-    Ok(m.into_pyarray(py))
-}
-
 /// The six motions of a body (`longitudinal`, `lateral`, `vertical`, `roll`, `pitch`, `yaw`), in
 /// the order of `mode_energies`' last axis.
 #[pyfunction]
@@ -147,18 +77,13 @@ type ModeEnergiesTuple<'py> = (
 
 /// Kinetic-energy shares of complex mode shapes `real + i·imag` (n_modes × n, the first 90
 /// columns the coordinates): each body's share of each mode's energy and, per body, the share
-/// of its energy in each motion (see `loco.modes`). The vehicle is built once for all modes.
+/// of its energy in each motion (see `loco.modes`), of the built `vehicle`.
 #[pyfunction]
-#[pyo3(signature = (
-    real, imag, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()
-))]
 fn mode_energies<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     real: PyReadonlyArray2<'py, f64>,
     imag: PyReadonlyArray2<'py, f64>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
 ) -> PyResult<ModeEnergiesTuple<'py>> {
     let (real, imag) = (real.as_array(), imag.as_array());
     if real.dim() != imag.dim() {
@@ -172,9 +97,8 @@ fn mode_energies<'py>(
         a.rows().into_iter().map(|r| r.to_vec()).collect()
     };
     let (real, imag) = (rows(real), rows(imag));
+    let structure = Arc::clone(&vehicle.structure);
     let (structure, energies) = run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        let structure = VehicleStructure::new(set)?;
         let shapes: Vec<(&[f64], &[f64])> = real
             .iter()
             .zip(&imag)
@@ -239,24 +163,17 @@ pub fn channels_array<'py>(py: Python<'py>, output: RunOutput) -> PyResult<Chann
 
 /// Simulates one run of the locomotive (see `loco.simulate`) through `scenario`.
 #[pyfunction]
-#[pyo3(signature = (
-    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()
-))]
 fn simulate<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
 ) -> PyResult<SimulationTuple<'py>> {
     let scenario = scenario.inner.clone();
+    let structure = Arc::clone(&vehicle.structure);
     // On a worker thread, so that Ctrl-C (checked every 100 ms) stops the run.
     let cancel = Arc::new(AtomicBool::new(false));
     let worker_cancel = Arc::clone(&cancel);
-    let work = move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        simulate_cancellable(set, &scenario, Some(&worker_cancel))
-    };
+    let work = move || simulate_cancellable(structure, &scenario, Some(&worker_cancel));
     let result = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     let (time, names, channels) = channels_array(py, result.output)?;
     Ok((
@@ -276,21 +193,14 @@ fn simulate<'py>(
 /// speed (m/s) on perfect track (see `loco.eigen`): a square numpy array over (coordinates,
 /// velocities, damper internal states).
 #[pyfunction]
-#[pyo3(signature = (
-    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new()
-))]
 fn linearise<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let scenario = scenario.inner.clone();
-    let (a, n) = run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        linearised(set, &scenario)
-    })?;
+    let structure = Arc::clone(&vehicle.structure);
+    let (a, n) = run_detached(py, move || linearised(structure, &scenario))?;
     let matrix = numpy::ndarray::Array2::from_shape_vec((n, n), a)
         .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
     Ok(matrix.into_pyarray(py))
@@ -303,22 +213,20 @@ fn linearise<'py>(
 /// None takes the core's default.
 #[pyfunction]
 #[pyo3(signature = (
-    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
-    low=None, high=None, tolerance=None, band=None
+    vehicle, scenario, *, low=None, high=None, tolerance=None, band=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn linear_critical_speed(
     py: Python<'_>,
+    vehicle: PyRef<'_, PyVehicle>,
     scenario: PyRef<'_, PyRunScenario>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
     low: Option<f64>,
     high: Option<f64>,
     tolerance: Option<f64>,
     band: Option<(f64, f64)>,
 ) -> PyResult<(f64, &'static str, f64, f64)> {
     let scenario = scenario.inner.clone();
+    let structure = Arc::clone(&vehicle.structure);
     let default = LinearSearch::default();
     let search = LinearSearch {
         low: low.unwrap_or(default.low),
@@ -327,8 +235,7 @@ fn linear_critical_speed(
         band: band.unwrap_or(default.band),
     };
     let speed = run_detached(py, move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        core_linear_critical_speed(set, &scenario, &search)
+        core_linear_critical_speed(structure, &scenario, &search)
     })?;
     // The core returns exactly `inf` and `low` for the two ends of the bracket; a bisection
     // result lies strictly inside it.
@@ -357,17 +264,14 @@ type RampTuple<'py> = (
 /// takes the core's default (`RampSettings::default`).
 #[pyfunction]
 #[pyo3(signature = (
-    scenario, *, toml_text=None, origin="<vehicle>".to_string(), overrides=BTreeMap::new(),
-    end_speed=None, deceleration=None, hold=None, max_hold=None, disturbance=None, window=None,
+    vehicle, scenario, *, end_speed=None, deceleration=None, hold=None, max_hold=None, disturbance=None, window=None,
     threshold=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn ramp_down<'py>(
     py: Python<'py>,
+    vehicle: PyRef<'py, PyVehicle>,
     scenario: PyRef<'py, PyRunScenario>,
-    toml_text: Option<String>,
-    origin: String,
-    overrides: BTreeMap<String, f64>,
     end_speed: Option<f64>,
     deceleration: Option<f64>,
     hold: Option<f64>,
@@ -377,6 +281,7 @@ fn ramp_down<'py>(
     threshold: Option<f64>,
 ) -> PyResult<RampTuple<'py>> {
     let scenario = scenario.inner.clone();
+    let structure = Arc::clone(&vehicle.structure);
     let default = RampSettings::default();
     let settings = RampSettings {
         end_speed: end_speed.unwrap_or(default.end_speed),
@@ -389,10 +294,8 @@ fn ramp_down<'py>(
     };
     let cancel = Arc::new(AtomicBool::new(false));
     let worker_cancel = Arc::clone(&cancel);
-    let work = move || {
-        let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
-        nonlinear_critical_speed(set, &scenario, &settings, Some(&worker_cancel))
-    };
+    let work =
+        move || nonlinear_critical_speed(structure, &scenario, &settings, Some(&worker_cancel));
     let result = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     let outcome = match result.outcome {
         RampOutcome::DiedOut => "died_out",
@@ -410,13 +313,10 @@ fn ramp_down<'py>(
 /// Adds this file's functions to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(default_vehicle_toml, m)?)?;
-    m.add_function(wrap_pyfunction!(vehicle_parameters, m)?)?;
-    m.add_function(wrap_pyfunction!(vehicle_total_mass, m)?)?;
     m.add_function(wrap_pyfunction!(study_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(dof_names, m)?)?;
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
     m.add_function(wrap_pyfunction!(metric_channels, m)?)?;
-    m.add_function(wrap_pyfunction!(mass_matrix, m)?)?;
     m.add_function(wrap_pyfunction!(body_motion_names, m)?)?;
     m.add_function(wrap_pyfunction!(mode_energies, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;

@@ -25,6 +25,11 @@ pub enum Column {
 }
 
 impl Column {
+    /// True when the column sets a vehicle parameter (the sample's structure must be built).
+    pub fn is_vehicle(&self) -> bool {
+        matches!(self, Column::Vehicle(_))
+    }
+
     /// True when the column changes what the wheel-rail contact is built from (wheel radius,
     /// contact half distance, elastic constants, friction, contact damping): the contact
     /// tables can then not be shared across samples.
@@ -136,13 +141,16 @@ pub fn check_rows(
     }
 }
 
-fn check_row(
-    base: &ParameterSet,
-    names: &[String],
-    columns: &[Column],
-    i: usize,
-    row: &[f64],
-) -> Result<()> {
+/// Checks the speed column of every row (the first bad row is reported): all a batch whose
+/// columns set no vehicle parameter needs, its vehicle being the base one.
+pub fn check_speeds(names: &[String], columns: &[Column], values: &[f64]) -> Result<()> {
+    values
+        .chunks(columns.len())
+        .enumerate()
+        .try_for_each(|(i, row)| check_row_speed(names, columns, i, row))
+}
+
+fn check_row_speed(names: &[String], columns: &[Column], i: usize, row: &[f64]) -> Result<()> {
     for (j, column) in columns.iter().enumerate() {
         if *column == Column::Speed && !(row[j] >= MIN_SPEED && row[j] <= MAX_SPEED) {
             return Err(LocoError::param(
@@ -154,6 +162,17 @@ fn check_row(
             ));
         }
     }
+    Ok(())
+}
+
+fn check_row(
+    base: &ParameterSet,
+    names: &[String],
+    columns: &[Column],
+    i: usize,
+    row: &[f64],
+) -> Result<()> {
+    check_row_speed(names, columns, i, row)?;
     let name_error = |e: LocoError| -> LocoError {
         let LocoError::InvalidParameter { name, reason } = &e else {
             return e;

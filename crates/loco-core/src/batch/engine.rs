@@ -8,7 +8,7 @@
 //! same numbers bit for bit on any thread count and in any scheduling order.
 
 use super::columns::{
-    check_matrix, check_rows, resolve_columns, row_parameters, row_speed, Column,
+    check_matrix, check_rows, check_speeds, resolve_columns, row_parameters, row_speed, Column,
 };
 use super::status::SampleStatus;
 use crate::error::{LocoError, Result};
@@ -108,6 +108,11 @@ impl BatchOutput {
 /// What every sample shares, built once.
 struct Shared {
     columns: Vec<Column>,
+    /// The base vehicle, built once: the structure of every sample when no column sets a
+    /// vehicle parameter (a speed-only batch builds no vehicle per sample).
+    base: Arc<VehicleStructure>,
+    /// True when some column sets a vehicle parameter: each sample builds its own structure.
+    per_sample_vehicle: bool,
     /// Contact of the base vehicle, or None when a column changes the contact.
     wheel_rail: Option<Arc<WheelRail>>,
     /// The shared track, or None when every sample gets its own.
@@ -145,8 +150,15 @@ pub fn run_batch(spec: &BatchSpec, threads: usize, monitor: &BatchMonitor) -> Re
         .build()
         .map_err(|e| LocoError::param("threads", e.to_string()))?;
     pool.install(|| {
-        check_rows(&spec.base, &spec.names, &columns, &spec.values)?;
-        let shared = prepare(spec, columns)?;
+        // The base vehicle first, so that a non-physical base is reported as itself, not as row 0.
+        let base = Arc::new(VehicleStructure::new(spec.base.clone())?);
+        if columns.iter().any(Column::is_vehicle) {
+            check_rows(&spec.base, &spec.names, &columns, &spec.values)?;
+        } else {
+            // No row changes the vehicle: only the speeds need checking, the base is built.
+            check_speeds(&spec.names, &columns, &spec.values)?;
+        }
+        let shared = prepare(spec, columns, base)?;
         let k = spec.names.len();
         let results: Vec<SampleResult> = spec
             .values
@@ -168,8 +180,7 @@ pub fn run_batch(spec: &BatchSpec, threads: usize, monitor: &BatchMonitor) -> Re
     })
 }
 
-fn prepare(spec: &BatchSpec, columns: Vec<Column>) -> Result<Shared> {
-    let base = Arc::new(VehicleStructure::new(spec.base.clone())?);
+fn prepare(spec: &BatchSpec, columns: Vec<Column>, base: Arc<VehicleStructure>) -> Result<Shared> {
     let wheel_rail = if columns.iter().any(Column::changes_contact) {
         None
     } else {
@@ -183,7 +194,9 @@ fn prepare(spec: &BatchSpec, columns: Vec<Column>) -> Result<Shared> {
         _ => Some(Arc::new(build_track(&spec.scenario, &base)?)),
     };
     Ok(Shared {
+        per_sample_vehicle: columns.iter().any(Column::is_vehicle),
         columns,
+        base,
         wheel_rail,
         track,
     })
@@ -263,7 +276,6 @@ fn run_sample(
     row: &[f64],
     monitor: &BatchMonitor,
 ) -> Result<(RunMetrics, RunOutput, RunStatistics)> {
-    let parameters = row_parameters(&spec.base, &shared.columns, row)?;
     let scenario = Scenario {
         speed: row_speed(&shared.columns, row, spec.scenario.speed),
         track: match &spec.scenario.track {
@@ -277,7 +289,12 @@ fn run_sample(
         },
         ..spec.scenario.clone()
     };
-    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let structure = if shared.per_sample_vehicle {
+        let parameters = row_parameters(&spec.base, &shared.columns, row)?;
+        Arc::new(VehicleStructure::new(parameters)?)
+    } else {
+        Arc::clone(&shared.base)
+    };
     let wheel_rail = match &shared.wheel_rail {
         Some(w) => Arc::clone(w),
         None => Arc::new(build_wheel_rail(&structure.parameters, &scenario)?),

@@ -31,11 +31,11 @@
 //! methods of bogie stability assessment using computer simulations", Proc. IMechE Part F, 2006).
 
 use super::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
-use super::parameters::ParameterSet;
 use super::run::{integrate, Flow};
 use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use super::simulation::{SpeedProfile, VehicleSystem};
 use super::statics::{static_equilibrium, StaticsSettings};
+use super::structure::IntoVehicle;
 use crate::error::{check_positive, LocoError, Result};
 use std::collections::VecDeque;
 use std::sync::atomic::AtomicBool;
@@ -153,7 +153,7 @@ impl RampSettings {
 /// start speed is `scenario.speed`, the track is perfect). `cancel`, when set from another
 /// thread, stops the run with `Interrupted`.
 pub fn nonlinear_critical_speed(
-    parameters: ParameterSet,
+    vehicle: impl IntoVehicle,
     scenario: &Scenario,
     settings: &RampSettings,
     cancel: Option<&AtomicBool>,
@@ -168,7 +168,7 @@ pub fn nonlinear_critical_speed(
         ..scenario.clone()
     };
     let dt = scenario.run.step;
-    let mut system = PerfectTrackVehicle::new(parameters, &perfect)?.system(start_speed)?;
+    let mut system = PerfectTrackVehicle::new(vehicle, &perfect)?.system(start_speed)?;
     // The ramp starts when the hunting has settled (below); until then V stays V0.
     system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
     let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;

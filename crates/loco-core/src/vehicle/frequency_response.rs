@@ -222,10 +222,10 @@ impl ResponseSolver {
     }
 }
 
-/// Transfer functions of a vehicle parameter set in a scenario from `inputs` to `outputs`
+/// Transfer functions of a vehicle (parameter set or built structure) in a scenario from `inputs` to `outputs`
 /// (recorded channel names) at `frequencies` (Hz): linearisation, reduction and solves.
 pub fn frequency_response(
-    parameters: super::parameters::ParameterSet,
+    vehicle: impl super::structure::IntoVehicle,
     scenario: &super::scenario::Scenario,
     inputs: &[Channel],
     outputs: &[String],
@@ -235,6 +235,6 @@ pub fn frequency_response(
     if inputs.is_empty() {
         return Err(LocoError::param("inputs", "must not be empty"));
     }
-    let model = super::track_input::scenario_track_model(parameters, scenario)?;
+    let model = super::track_input::scenario_track_model(vehicle, scenario)?;
     ResponseSolver::new(&model, outputs)?.response(inputs, frequencies)
 }

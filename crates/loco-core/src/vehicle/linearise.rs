@@ -9,10 +9,10 @@
 //! numpy/LAPACK.
 
 use super::integrator::OdeSystem;
-use super::parameters::ParameterSet;
 use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
+use super::structure::IntoVehicle;
 use crate::error::{check_positive, LocoError, Result};
 use nalgebra::linalg::balancing::balance_parlett_reinsch;
 use nalgebra::{Complex, DMatrix, Schur};
@@ -130,7 +130,7 @@ impl Default for LinearSearch {
 /// bisection of the linearisation about equilibrium on perfect track. `+∞` when the vehicle is
 /// stable at `high`, `low` when it is already unstable there.
 pub fn linear_critical_speed(
-    parameters: ParameterSet,
+    vehicle: impl IntoVehicle,
     scenario: &Scenario,
     search: &LinearSearch,
 ) -> Result<f64> {
@@ -144,7 +144,7 @@ pub fn linear_critical_speed(
             format!("must exceed low ({low} m/s), got {high} m/s"),
         ));
     }
-    let vehicle = PerfectTrackVehicle::new(parameters, scenario)?;
+    let vehicle = PerfectTrackVehicle::new(vehicle, scenario)?;
     let zeta = |speed: f64| -> Result<f64> {
         let mut system = vehicle.system(speed)?;
         let (a, _) = linearise(&mut system)?;

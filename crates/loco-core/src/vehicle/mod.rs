@@ -17,7 +17,9 @@
 //!   output spectra on a random track.
 //! - [`rail_plane`]: the rails' plane at a wheelset, in which the contact table is read (cross
 //!   level rolls it); [`track_limits`]: which irregularities the contact can follow.
-//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once;
+//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once,
+//!   with the only defaults ([`scenario_settings::ScenarioSettings::defaults`]); [`presets`]: the
+//!   study's scenarios and yaw dampers by name;
 //!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
 //! - [`statics`]: the static equilibrium every run starts from; [`run_statistics`]: what a run
 //!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
@@ -36,6 +38,7 @@ pub mod linearise;
 pub mod mass;
 pub mod modes;
 pub mod parameters;
+pub mod presets;
 pub mod rail_plane;
 pub mod response_psd;
 pub mod run;

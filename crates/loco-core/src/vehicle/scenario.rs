@@ -1,16 +1,13 @@
 //! A run of the locomotive as an engineer states it: which wheel and rail, how fast, how far, on
 //! which track, with which yaw damper; and the function that simulates it.
-//!
-//! The study's scenarios (SPEC §2) are JM3 treads in three wear states on CN60 rail inclined 1:40:
-//! `S_low` thin flange (equivalent conicity 0.04), `S_norm` new wheel (0.10), `S_high` worn wheel
-//! (0.70).
+//! The study's scenarios (SPEC §2) by name are in [`super::presets`].
 
 use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
-use super::structure::VehicleStructure;
+use super::structure::{IntoVehicle, VehicleStructure};
 use super::track_limits::TrackLimits;
 use super::wheel_rail::{WheelRail, WheelRailSettings};
 use crate::contact::builtin::builtin_profile;
@@ -35,18 +32,7 @@ pub const MAX_DISTANCE: f64 = 100_000.0;
 /// Half range of the contact tables, m.
 pub const TABLE_HALF_RANGE: f64 = 0.025;
 
-/// The wheel and rail of a study scenario (SPEC §2): (wheel, rail) built-in profile names.
-pub fn scenario_profiles(name: &str) -> Result<(&'static str, &'static str)> {
-    match name {
-        "S_low" => Ok(("jm3-thin-flange", "cn60")),
-        "S_norm" => Ok(("jm3-new", "cn60")),
-        "S_high" => Ok(("jm3-worn", "cn60")),
-        other => Err(LocoError::param(
-            "scenario",
-            format!("unknown scenario '{other}'; expected S_low, S_norm or S_high"),
-        )),
-    }
-}
+pub use super::presets::scenario_profiles;
 
 /// The track a run uses.
 #[derive(Debug, Clone)]
@@ -337,10 +323,11 @@ pub struct PerfectTrackVehicle {
 }
 
 impl PerfectTrackVehicle {
-    /// Builds the vehicle, the scenario's contact and a perfect track of the scenario's length.
-    pub fn new(parameters: ParameterSet, scenario: &Scenario) -> Result<Self> {
+    /// Builds the vehicle (unless given built), the scenario's contact and a perfect track of
+    /// the scenario's length.
+    pub fn new(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<Self> {
         scenario.validate()?;
-        let structure = Arc::new(VehicleStructure::new(parameters)?);
+        let structure = vehicle.into_vehicle()?;
         let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
         let perfect = Scenario {
             track: TrackSpec::Perfect,
@@ -372,27 +359,28 @@ impl PerfectTrackVehicle {
 
 /// The state matrix of the vehicle linearised about its static equilibrium at the scenario's
 /// speed on perfect track (row-major n×n), with n (coordinates, velocities, damper states).
-pub fn linearised(parameters: ParameterSet, scenario: &Scenario) -> Result<(Vec<f64>, usize)> {
-    let mut system = PerfectTrackVehicle::new(parameters, scenario)?.system(scenario.speed)?;
+pub fn linearised(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<(Vec<f64>, usize)> {
+    let mut system = PerfectTrackVehicle::new(vehicle, scenario)?.system(scenario.speed)?;
     let (a, _) = super::linearise::linearise(&mut system)?;
     let n = system.len_states();
     Ok((a, n))
 }
 
-/// Simulates a scenario for a vehicle parameter set: builds the vehicle, contact and track.
-pub fn simulate(parameters: ParameterSet, scenario: &Scenario) -> Result<SimulationResult> {
-    simulate_cancellable(parameters, scenario, None)
+/// Simulates a scenario for a vehicle (a parameter set or a built structure): builds the
+/// vehicle when needed, the contact and the track.
+pub fn simulate(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<SimulationResult> {
+    simulate_cancellable(vehicle, scenario, None)
 }
 
 /// As [`simulate`]; `cancel`, when set from another thread, stops the run with `Interrupted`
 /// within a step (Ctrl-C in the Python front end).
 pub fn simulate_cancellable(
-    parameters: ParameterSet,
+    vehicle: impl IntoVehicle,
     scenario: &Scenario,
     cancel: Option<&AtomicBool>,
 ) -> Result<SimulationResult> {
     scenario.validate()?;
-    let structure = Arc::new(VehicleStructure::new(parameters)?);
+    let structure = vehicle.into_vehicle()?;
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
     let track = Arc::new(build_track(scenario, &structure)?);
     simulate_prepared(structure, wheel_rail, track, scenario, cancel)

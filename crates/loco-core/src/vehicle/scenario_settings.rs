@@ -2,14 +2,16 @@
 //! mapping from a front end's settings (the batch binary's `[scenario]` TOML section, the Python
 //! `RunScenario(...)` keyword arguments) to a core [`Scenario`].
 //!
-//! Settings left out take the core defaults ([`SynthesisParams::default`],
-//! [`RunSettings::default`], [`TrackSetup::default`], [`FastsimParams::default`]); settings that
+//! Settings left out take the core defaults, all listed by [`ScenarioSettings::defaults`] (which
+//! front ends export: Python's `loco.Scenario.defaults()`); presets by name come from
+//! [`super::presets`]. Settings that
 //! contradict each other (a spectrum with a perfect track, a scenario name with a wheel, a speed in
 //! both units) are refused with an error naming the field.
 
 use super::creep_model::CreepModel;
+use super::presets::{scenario_profiles, yaw_damper_preset, FILE_DAMPER, STUDY_RAIL};
 use super::run::RunSettings;
-use super::scenario::{scenario_profiles, Scenario, TrackSpec};
+use super::scenario::{Scenario, TrackSpec};
 use crate::contact::builtin::{builtin_names, builtin_profile};
 use crate::contact::fastsim::FastsimParams;
 use crate::contact::profile::{Profile, ProfileKind};
@@ -18,13 +20,13 @@ use crate::contact::setup::TrackSetup;
 use crate::dampers::{Damper, FsdTrigger};
 use crate::error::{LocoError, Result};
 use crate::track::{load_csv, MeasuredParams, SynthesisParams, TrackIrregularity, TrackSpectrum};
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use std::path::Path;
 use std::sync::Arc;
 
 /// The settings of a run scenario (SI units unless the name says otherwise). See the module
 /// documentation; the batch binary reads them from the `[scenario]` section of a study file.
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct ScenarioSettings {
     /// Study scenario `S_low`, `S_norm` or `S_high` (its wheel and rail); or give `wheel`.
@@ -33,11 +35,11 @@ pub struct ScenarioSettings {
     pub wheel: Option<String>,
     /// Rail profile: a built-in name or a profile file (default: the study's rail, CN60).
     pub rail: Option<String>,
-    /// Running speed, m/s (or `speed_kmh`).
+    /// Running speed, m/s (or `speed_kmh`; default [`DEFAULT_SPEED`]).
     pub speed: Option<f64>,
     /// Running speed, km/h (or `speed`).
     pub speed_kmh: Option<f64>,
-    /// Distance run and recorded, m (required).
+    /// Distance run and recorded, m (default [`DEFAULT_DISTANCE`]).
     pub distance: Option<f64>,
     /// Distance run before `distance` and not recorded, m (default 0).
     pub lead_in: Option<f64>,
@@ -79,6 +81,12 @@ pub struct ScenarioSettings {
     pub per_sample_track: Option<bool>,
 }
 
+/// The `track` setting of a synthesised track (the default).
+pub const SYNTHETIC: &str = "synthetic";
+
+/// The `track` setting of a perfect (irregularity-free) track.
+pub const PERFECT: &str = "perfect";
+
 /// Profiles, track and yaw damper a front end already holds as objects. Each takes the place of
 /// the setting of the same name; giving both is refused.
 #[derive(Debug, Clone, Default)]
@@ -87,21 +95,6 @@ pub struct GivenObjects {
     pub rail: Option<Profile>,
     pub track: Option<Arc<TrackIrregularity>>,
     pub yaw_damper: Option<Damper>,
-}
-
-/// The yaw damper of a preset name: `file` (`None`: the parameter file's Maxwell yaw damper),
-/// `YD1`, `YD2` or `FSD`.
-pub fn yaw_damper_preset(name: &str) -> Result<Option<Damper>> {
-    match name {
-        "file" => Ok(None),
-        "YD1" => Ok(Some(Damper::yd1())),
-        "YD2" => Ok(Some(Damper::yd2())),
-        "FSD" => Ok(Some(Damper::fsd())),
-        other => Err(LocoError::param(
-            "yaw_damper",
-            format!("expected file, YD1, YD2 or FSD, got '{other}'"),
-        )),
-    }
 }
 
 /// A profile by name: built-in, else a file relative to `dir`.
@@ -117,10 +110,53 @@ fn conflict(field: &str, reason: impl Into<String>) -> LocoError {
     LocoError::param(field, reason)
 }
 
+/// Running speed of a scenario that gives none, m/s: the study's 200 km/h (SPEC §6).
+pub const DEFAULT_SPEED: f64 = 200.0 / 3.6;
+
+/// Distance of a scenario that gives none, m: the study's 500 m of track (SPEC §6).
+pub const DEFAULT_DISTANCE: f64 = 500.0;
+
 impl ScenarioSettings {
+    /// Every setting that has a default, at its default (`name`, `wheel`, `speed_kmh` and
+    /// `creep_table` have none): the one place the front ends' defaults come from. Collected from
+    /// the core's parameter structs ([`SynthesisParams`], [`RunSettings`], [`TrackSetup`],
+    /// [`FastsimParams`], [`CreepModel`]) so that each is still defined once.
+    pub fn defaults() -> Self {
+        let synthesis = SynthesisParams::default();
+        let run = RunSettings::default();
+        let track = TrackSetup::default();
+        let fastsim = FastsimParams::default();
+        Self {
+            name: None,
+            wheel: None,
+            rail: Some(STUDY_RAIL.to_string()),
+            speed: Some(DEFAULT_SPEED),
+            speed_kmh: None,
+            distance: Some(DEFAULT_DISTANCE),
+            lead_in: Some(0.0),
+            track: Some(SYNTHETIC.to_string()),
+            spectrum: Some(synthesis.spectrum.name().to_string()),
+            seed: Some(synthesis.seed),
+            band: Some([synthesis.wavelength_min, synthesis.wavelength_max]),
+            yaw_damper: Some(FILE_DAMPER.to_string()),
+            fsd_trigger: Some(FsdTrigger::DEFAULT.to_string()),
+            step: Some(run.step),
+            output_rate: Some(run.output_rate),
+            fastsim_grid: Some([fastsim.nx, fastsim.ny]),
+            creep: Some(CreepModel::default().name().to_string()),
+            creep_table: None,
+            initial_lateral_offset: Some(0.0),
+            gauge: Some(track.gauge),
+            gauge_height: Some(track.gauge_height),
+            rail_inclination: Some(track.rail_inclination),
+            per_sample_track: Some(false),
+        }
+    }
+
     /// The scenario these settings describe, checked. `given` holds the objects a front end
     /// passes instead of names; profile and track files are relative to `dir`.
     pub fn resolve(&self, given: GivenObjects, dir: &Path) -> Result<Scenario> {
+        let defaults = Self::defaults();
         let speed = match (self.speed, self.speed_kmh) {
             (Some(v), None) => v,
             (None, Some(kmh)) => kmh / 3.6,
@@ -130,16 +166,9 @@ impl ScenarioSettings {
                     "give `speed` (m/s) or `speed_kmh`, not both",
                 ))
             }
-            (None, None) => {
-                return Err(conflict(
-                    "speed",
-                    "missing: give `speed` (m/s) or `speed_kmh`",
-                ))
-            }
+            (None, None) => DEFAULT_SPEED,
         };
-        let distance = self
-            .distance
-            .ok_or_else(|| conflict("distance", "missing: give the distance run, m"))?;
+        let distance = self.distance.unwrap_or(DEFAULT_DISTANCE);
         let (wheel, rail) = self.profiles(given.wheel, given.rail, dir)?;
         let track = self.track(given.track, dir)?;
         let yaw_damper = match (&self.yaw_damper, given.yaw_damper) {
@@ -149,7 +178,13 @@ impl ScenarioSettings {
                     "given both as a preset name and as a damper",
                 ))
             }
-            (Some(name), None) => yaw_damper_preset(name)?,
+            (Some(name), None) => yaw_damper_preset(name, self.fsd_trigger.as_deref())?,
+            (None, _) if self.fsd_trigger.is_some() => {
+                return Err(conflict(
+                    "fsd_trigger",
+                    "only with the preset yaw_damper = \"FSD\"",
+                ))
+            }
             (None, damper) => damper,
         };
         if self.creep_table.is_some() {
@@ -162,62 +197,40 @@ impl ScenarioSettings {
             Some(name) => CreepModel::from_name(name)?,
             None => CreepModel::default(),
         };
-        let yaw_damper = match (&self.fsd_trigger, yaw_damper) {
-            (None, law) => law,
-            (Some(name), Some(Damper::Fsd(_))) if self.yaw_damper.as_deref() == Some("FSD") => {
-                match FsdTrigger::check_name(name).map_err(|_| {
-                    conflict(
-                        "fsd_trigger",
-                        format!(
-                            "expected one of {}, got '{name}'",
-                            FsdTrigger::NAMES.join(", ")
-                        ),
-                    )
-                })? {
-                    FsdTrigger::HYDRAULIC => Some(Damper::fsd_hydraulic()),
-                    _ => Some(Damper::fsd()),
-                }
-            }
-            (Some(_), _) => {
-                return Err(conflict(
-                    "fsd_trigger",
-                    "only with the preset yaw_damper = \"FSD\"",
-                ))
-            }
-        };
-        let track_defaults = TrackSetup::default();
-        let run_defaults = RunSettings::default();
         let fastsim_defaults = FastsimParams::default();
+        let [nx, ny] = self
+            .fastsim_grid
+            .or(defaults.fastsim_grid)
+            .unwrap_or_default();
+        let or = |given: Option<f64>, default: Option<f64>| given.or(default).unwrap_or_default();
         let scenario = Scenario {
             wheel,
             rail,
             track_setup: TrackSetup {
-                gauge: self.gauge.unwrap_or(track_defaults.gauge),
-                gauge_height: self.gauge_height.unwrap_or(track_defaults.gauge_height),
-                rail_inclination: self
-                    .rail_inclination
-                    .unwrap_or(track_defaults.rail_inclination),
+                gauge: or(self.gauge, defaults.gauge),
+                gauge_height: or(self.gauge_height, defaults.gauge_height),
+                rail_inclination: or(self.rail_inclination, defaults.rail_inclination),
             },
             speed,
             distance,
-            lead_in: self.lead_in.unwrap_or(0.0),
+            lead_in: or(self.lead_in, defaults.lead_in),
             track,
             yaw_damper,
             run: RunSettings {
-                step: self.step.unwrap_or(run_defaults.step),
-                output_rate: self.output_rate.unwrap_or(run_defaults.output_rate),
-                ..run_defaults
+                step: or(self.step, defaults.step),
+                output_rate: or(self.output_rate, defaults.output_rate),
+                ..RunSettings::default()
             },
-            fastsim: match self.fastsim_grid {
-                Some([nx, ny]) => FastsimParams {
-                    nx,
-                    ny,
-                    ..fastsim_defaults
-                },
-                None => fastsim_defaults,
+            fastsim: FastsimParams {
+                nx,
+                ny,
+                ..fastsim_defaults
             },
             creep,
-            initial_lateral_offset: self.initial_lateral_offset.unwrap_or(0.0),
+            initial_lateral_offset: or(
+                self.initial_lateral_offset,
+                defaults.initial_lateral_offset,
+            ),
         };
         scenario.track_setup.validate()?;
         scenario.validate()?;
@@ -267,7 +280,7 @@ impl ScenarioSettings {
             (Some(name), None) => lookup_profile(name, ProfileKind::Rail, dir)?,
             (None, Some(profile)) => profile,
             // The study's rail (the same for every study scenario).
-            (None, None) => builtin_profile(scenario_profiles("S_norm")?.1)?,
+            (None, None) => builtin_profile(STUDY_RAIL)?,
         };
         Ok((wheel, rail))
     }
@@ -296,8 +309,8 @@ impl ScenarioSettings {
             self.no_synthesis_settings("a given one")?;
             return Ok(TrackSpec::Given(track));
         }
-        match self.track.as_deref().unwrap_or("synthetic") {
-            "synthetic" => {
+        match self.track.as_deref().unwrap_or(SYNTHETIC) {
+            SYNTHETIC => {
                 let defaults = SynthesisParams::default();
                 let spectrum = match &self.spectrum {
                     Some(name) => TrackSpectrum::from_name(name)?,
@@ -329,7 +342,7 @@ impl ScenarioSettings {
                 })?;
                 Ok(TrackSpec::Synthetic(params))
             }
-            "perfect" => {
+            PERFECT => {
                 self.no_synthesis_settings("perfect")?;
                 Ok(TrackSpec::Perfect)
             }
@@ -346,265 +359,5 @@ impl ScenarioSettings {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn settings(name: &str) -> ScenarioSettings {
-        ScenarioSettings {
-            name: Some(name.into()),
-            speed: Some(50.0),
-            distance: Some(100.0),
-            ..ScenarioSettings::default()
-        }
-    }
-
-    fn field_of(e: LocoError) -> String {
-        match e {
-            LocoError::InvalidParameter { name, .. } => name,
-            other => panic!("expected an invalid parameter, got {other}"),
-        }
-    }
-
-    #[test]
-    fn defaults_are_the_core_defaults() {
-        let s = settings("S_norm")
-            .resolve(GivenObjects::default(), Path::new("."))
-            .unwrap();
-        let study = Scenario::study("S_norm", 50.0, 100.0, 0).unwrap();
-        assert_eq!(s.wheel.name(), study.wheel.name());
-        assert_eq!(s.rail.name(), study.rail.name());
-        assert_eq!(s.track_setup, TrackSetup::default());
-        assert_eq!(s.track_setup, study.track_setup);
-        assert_eq!(s.run.step, RunSettings::default().step);
-        assert_eq!(s.run.output_rate, RunSettings::default().output_rate);
-        assert_eq!(s.fastsim, FastsimParams::default());
-        assert_eq!(s.lead_in, study.lead_in);
-        assert_eq!(s.initial_lateral_offset, study.initial_lateral_offset);
-        assert!(s.creep == CreepModel::Fastsim && s.yaw_damper.is_none());
-        assert_eq!(s.creep, study.creep);
-        match (&s.track, &study.track) {
-            (TrackSpec::Synthetic(a), TrackSpec::Synthetic(b)) => {
-                assert_eq!(a, b);
-                assert_eq!(*a, SynthesisParams::default());
-            }
-            other => panic!("expected synthetic tracks, got {other:?}"),
-        }
-    }
-
-    #[test]
-    fn settings_are_applied() {
-        let s = ScenarioSettings {
-            speed: None,
-            speed_kmh: Some(180.0),
-            wheel: Some("jm3-worn".into()),
-            name: None,
-            seed: Some(7),
-            band: Some([3.0, 100.0]),
-            spectrum: Some("german-low".into()),
-            step: Some(5e-4),
-            output_rate: Some(200.0),
-            fastsim_grid: Some([8, 12]),
-            creep: Some("table".into()),
-            initial_lateral_offset: Some(0.002),
-            lead_in: Some(20.0),
-            gauge: Some(1.44),
-            gauge_height: Some(0.014),
-            rail_inclination: Some(0.05),
-            yaw_damper: Some("YD2".into()),
-            ..settings("S_norm")
-        }
-        .resolve(GivenObjects::default(), Path::new("."))
-        .unwrap();
-        assert!((s.speed - 50.0).abs() < 1e-12);
-        assert_eq!(s.wheel.name(), "jm3-worn");
-        assert_eq!(s.rail.name(), "cn60");
-        assert_eq!((s.fastsim.nx, s.fastsim.ny), (8, 12));
-        assert_eq!(s.run.step, 5e-4);
-        assert_eq!(s.run.output_rate, 200.0);
-        assert_eq!(s.creep, CreepModel::from_name("table").unwrap());
-        assert_eq!(s.initial_lateral_offset, 0.002);
-        assert_eq!(s.lead_in, 20.0);
-        assert_eq!(
-            s.track_setup,
-            TrackSetup {
-                gauge: 1.44,
-                gauge_height: 0.014,
-                rail_inclination: 0.05
-            }
-        );
-        assert_eq!(s.yaw_damper, Some(Damper::yd2()));
-        match s.track {
-            TrackSpec::Synthetic(p) => {
-                assert_eq!(p.seed, 7);
-                assert_eq!((p.wavelength_min, p.wavelength_max), (3.0, 100.0));
-                assert_eq!(p.spectrum, TrackSpectrum::GermanLow);
-            }
-            other => panic!("expected a synthetic track, got {other:?}"),
-        }
-    }
-
-    #[test]
-    fn presets() {
-        assert_eq!(yaw_damper_preset("file").unwrap(), None);
-        assert_eq!(yaw_damper_preset("YD1").unwrap(), Some(Damper::yd1()));
-        assert_eq!(yaw_damper_preset("YD2").unwrap(), Some(Damper::yd2()));
-        assert_eq!(yaw_damper_preset("FSD").unwrap(), Some(Damper::fsd()));
-        let base = ScenarioSettings {
-            name: Some("S_low".into()),
-            speed: Some(50.0),
-            distance: Some(10.0),
-            track: Some("perfect".into()),
-            yaw_damper: Some("FSD".into()),
-            fsd_trigger: Some("hydraulic".into()),
-            ..ScenarioSettings::default()
-        };
-        let dir = Path::new(".");
-        let hydraulic = base.resolve(GivenObjects::default(), dir).unwrap();
-        assert_eq!(hydraulic.yaw_damper, Some(Damper::fsd_hydraulic()));
-        let bad = ScenarioSettings {
-            fsd_trigger: Some("zero-crossing".into()),
-            ..base.clone()
-        };
-        assert_eq!(
-            field_of(bad.resolve(GivenObjects::default(), dir).unwrap_err()),
-            "fsd_trigger"
-        );
-        let not_fsd = ScenarioSettings {
-            yaw_damper: Some("YD1".into()),
-            ..base
-        };
-        assert_eq!(
-            field_of(not_fsd.resolve(GivenObjects::default(), dir).unwrap_err()),
-            "fsd_trigger"
-        );
-        assert_eq!(
-            field_of(yaw_damper_preset("fsd").unwrap_err()),
-            "yaw_damper"
-        );
-    }
-
-    #[test]
-    fn conflicts_are_refused_naming_the_field() {
-        let dir = Path::new(".");
-        let err = |s: ScenarioSettings, g: GivenObjects| field_of(s.resolve(g, dir).unwrap_err());
-        let both_speeds = ScenarioSettings {
-            speed_kmh: Some(100.0),
-            ..settings("S_low")
-        };
-        assert_eq!(err(both_speeds, GivenObjects::default()), "speed");
-        let name_and_wheel = ScenarioSettings {
-            wheel: Some("jm3-new".into()),
-            ..settings("S_low")
-        };
-        assert_eq!(err(name_and_wheel, GivenObjects::default()), "name");
-        for (field, s) in [
-            (
-                "spectrum",
-                ScenarioSettings {
-                    spectrum: Some("cn-hsr".into()),
-                    ..settings("S_low")
-                },
-            ),
-            (
-                "seed",
-                ScenarioSettings {
-                    seed: Some(1),
-                    ..settings("S_low")
-                },
-            ),
-            (
-                "band",
-                ScenarioSettings {
-                    band: Some([2.0, 100.0]),
-                    ..settings("S_low")
-                },
-            ),
-        ] {
-            let perfect = ScenarioSettings {
-                track: Some("perfect".into()),
-                ..s.clone()
-            };
-            assert_eq!(err(perfect, GivenObjects::default()), field);
-            let given = GivenObjects {
-                track: Some(Arc::new(
-                    TrackIrregularity::from_channels(
-                        0.5,
-                        &[vec![0.0; 4], vec![0.0; 4], vec![0.0; 4], vec![0.0; 4]],
-                        &[vec![0.0; 4], vec![0.0; 4], vec![0.0; 4], vec![0.0; 4]],
-                        0.0,
-                        None,
-                    )
-                    .unwrap(),
-                )),
-                ..GivenObjects::default()
-            };
-            assert_eq!(err(s, given), field);
-        }
-        let damper_twice = GivenObjects {
-            yaw_damper: Some(Damper::fsd()),
-            ..GivenObjects::default()
-        };
-        let preset = ScenarioSettings {
-            yaw_damper: Some("YD1".into()),
-            ..settings("S_low")
-        };
-        assert_eq!(err(preset, damper_twice), "yaw_damper");
-        let missing = ScenarioSettings {
-            distance: None,
-            ..settings("S_low")
-        };
-        assert_eq!(err(missing, GivenObjects::default()), "distance");
-        let nothing = ScenarioSettings {
-            name: None,
-            ..settings("S_low")
-        };
-        assert_eq!(err(nothing, GivenObjects::default()), "name");
-    }
-
-    #[test]
-    fn toml_keys_are_checked() {
-        let s: ScenarioSettings = toml::from_str(
-            "name = 'S_high'\nspeed_kmh = 200.0\ndistance = 10.0\nfastsim_grid = [6, 6]\n",
-        )
-        .unwrap();
-        assert_eq!(s.fastsim_grid, Some([6, 6]));
-        assert!(toml::from_str::<ScenarioSettings>("name = 'S_high'\ndistanse = 10.0\n").is_err());
-    }
-
-    #[test]
-    fn creep_model_by_name_and_the_removed_key() {
-        let resolve = |text: &str| {
-            toml::from_str::<ScenarioSettings>(text)
-                .unwrap()
-                .resolve(GivenObjects::default(), Path::new("."))
-        };
-        let base = "name = 'S_norm'\nspeed = 50.0\ndistance = 10.0\ntrack = 'perfect'\n";
-        let s = resolve(&format!("{base}creep = 'fastrip'\n")).unwrap();
-        assert_eq!(s.creep, CreepModel::Fastrip);
-        let err = resolve(&format!("{base}creep = 'kalker'\n")).unwrap_err();
-        assert_eq!(field_of(err), "creep");
-        let err = resolve(&format!("{base}creep_table = true\n")).unwrap_err();
-        assert!(err.to_string().contains("creep = \"table\""), "{err}");
-        assert_eq!(field_of(err), "creep_table");
-    }
-
-    #[test]
-    fn a_bad_band_is_refused_as_band_at_once() {
-        for band in [
-            [f64::NAN, 200.0],
-            [0.0, 200.0],
-            [2.0, 1.0],
-            [1e-30, 200.0],
-            [2.0, 1e30],
-        ] {
-            let s = ScenarioSettings {
-                band: Some(band),
-                ..settings("S_norm")
-            };
-            let err = s
-                .resolve(GivenObjects::default(), Path::new("."))
-                .unwrap_err();
-            assert_eq!(field_of(err), "band", "{band:?}");
-        }
-    }
-}
+#[path = "scenario_settings_tests.rs"]
+mod tests;

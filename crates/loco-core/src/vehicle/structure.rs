@@ -9,6 +9,7 @@ use super::mass::MassMatrix;
 use super::parameters::ParameterSet;
 use super::suspension::{build_suspension, Suspension};
 use crate::error::{check_positive, Result};
+use std::sync::Arc;
 
 /// Everything about the vehicle that does not change during a run.
 #[derive(Debug, Clone)]
@@ -21,6 +22,26 @@ pub struct VehicleStructure {
     pub suspension: Suspension,
     /// Gravitational acceleration, m/s².
     pub gravity: f64,
+}
+
+/// A vehicle as the model's entry points take it: a parameter set, built on the way in, or a
+/// structure already built and shared (the Python `Vehicle` handle, a batch's checked rows), which
+/// is used as it is and not rebuilt.
+pub trait IntoVehicle {
+    /// The built vehicle; a non-physical parameter is refused by name.
+    fn into_vehicle(self) -> Result<Arc<VehicleStructure>>;
+}
+
+impl IntoVehicle for ParameterSet {
+    fn into_vehicle(self) -> Result<Arc<VehicleStructure>> {
+        Ok(Arc::new(VehicleStructure::new(self)?))
+    }
+}
+
+impl IntoVehicle for Arc<VehicleStructure> {
+    fn into_vehicle(self) -> Result<Arc<VehicleStructure>> {
+        Ok(self)
+    }
 }
 
 impl VehicleStructure {

@@ -145,13 +145,13 @@ pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> 
     })
 }
 
-/// The track-input model of a vehicle parameter set in a scenario (wheel, rail, speed, yaw
+/// The track-input model of a vehicle (parameter set or built structure) in a scenario (wheel, rail, speed, yaw
 /// damper; the scenario's track is not used) about its equilibrium at the scenario's speed.
 pub fn scenario_track_model(
-    parameters: super::parameters::ParameterSet,
+    vehicle: impl super::structure::IntoVehicle,
     scenario: &super::scenario::Scenario,
 ) -> Result<TrackInputModel> {
-    let vehicle = super::scenario::PerfectTrackVehicle::new(parameters, scenario)?;
+    let vehicle = super::scenario::PerfectTrackVehicle::new(vehicle, scenario)?;
     let mut system = vehicle.system(scenario.speed)?;
     track_input_model(&mut system)
 }
