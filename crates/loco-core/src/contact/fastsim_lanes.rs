@@ -55,7 +55,7 @@ impl F64x2 {
 
 /// Pairs of lanes integrated together: every element step of all of them is independent, which
 /// hides the latency of the square root and the division.
-pub(super) const PAIRS: usize = 3;
+pub(super) const PAIRS: usize = 5;
 
 /// The per-strip inputs of one lockstep pass, `2·PAIRS` strips (SI units as in `fastsim`).
 #[derive(Debug, Clone, Copy)]
