@@ -1,5 +1,6 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
-//! creep model) and with FaStrip, and one evaluation of its right-hand side.
+//! creep model), with FaStrip and with the FASTSIM table, and one evaluation of its right-hand
+//! side.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::vehicle::creep_model::CreepModel;
@@ -46,6 +47,24 @@ fn bench_vehicle(c: &mut Criterion) {
                 fastrip_contact.clone(),
                 track.clone(),
                 black_box(&fastrip),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    let table = Scenario {
+        creep: CreepModel::from_name("table").unwrap(),
+        ..scenario.clone()
+    };
+    // The table is built once per batch, outside the timed run.
+    let table_contact = Arc::new(build_wheel_rail(&structure.parameters, &table).unwrap());
+    group.bench_function("run_500m_200kmh_table", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                table_contact.clone(),
+                track.clone(),
+                black_box(&table),
                 None,
             )
             .unwrap()

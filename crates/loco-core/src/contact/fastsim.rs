@@ -30,12 +30,13 @@
 //! full slip gives |F| = μN on any grid. The element geometry in units of (a, b) is precomputed in
 //! [`Fastsim::new`]; [`Fastsim::creep_forces`] allocates nothing.
 
+use super::fastsim_lanes::{integrate_strips, StripInputs, PAIRS};
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
 use std::f64::consts::PI;
 
-/// Strips integrated together in the hot loop.
-const LANES: usize = 4;
+/// Strips integrated together in the hot loop (`fastsim_lanes`).
+const LANES: usize = 2 * PAIRS;
 
 /// Geometry of [`LANES`] strips in units of (a, b).
 #[derive(Debug, Clone, Copy, Default)]
@@ -196,53 +197,22 @@ impl Fastsim {
         let nx = self.params.nx as f64;
         let dy = 2.0 * b / self.params.ny as f64;
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
-        // Strips are independent: integrating LANES of them in lockstep lets the CPU overlap the
-        // latency of the serial chain (step, bound check, square root, division) along a strip.
+        let eta_l2 = eta * inv_l2;
         for group in &self.strips {
-            let mut y = [0.0; LANES];
-            let mut a_j = [0.0; LANES];
-            let mut slope_x = [0.0; LANES];
-            let mut bound_j = [0.0; LANES];
-            for l in 0..LANES {
-                y[l] = group.eta[l] * b;
-                a_j[l] = group.half_length[l] * a;
+            let y: [f64; LANES] = std::array::from_fn(|l| group.eta[l] * b);
+            let a_j: [f64; LANES] = std::array::from_fn(|l| group.half_length[l] * a);
+            let inputs = StripInputs {
+                a_j,
                 // The slope of p_x is constant along a strip; p_y's grows linearly with x.
-                slope_x[l] = xi * inv_l1 - phi * y[l] * inv_l3;
-                bound_j[l] = bound_peak * group.shape[l];
-            }
-            let mut px = [0.0; LANES];
-            let mut py = [0.0; LANES];
-            let mut sx = [0.0; LANES];
-            let mut sy = [0.0; LANES];
-            let mut sxpy = [0.0; LANES];
-            let mut x_prev = a_j;
-            for &(u_k, shape_k) in &self.elements {
-                for l in 0..LANES {
-                    let x = u_k * a_j[l];
-                    let h = x_prev[l] - x;
-                    let x_mid = 0.5 * (x_prev[l] + x);
-                    px[l] -= h * slope_x[l];
-                    py[l] -= h * (eta * inv_l2 + phi * x_mid * inv_l3);
-                    let bound = bound_j[l] * shape_k;
-                    // Projection onto the bound, branch-free so that the lanes vectorise:
-                    // scale = min(1, bound/|p|) (|p| = 0 gives 1 through the tiny floor).
-                    let norm = (px[l] * px[l] + py[l] * py[l])
-                        .sqrt()
-                        .max(f64::MIN_POSITIVE);
-                    let scale = (bound / norm).min(1.0);
-                    px[l] *= scale;
-                    py[l] *= scale;
-                    sx[l] += px[l];
-                    sy[l] += py[l];
-                    sxpy[l] += x * py[l];
-                    x_prev[l] = x;
-                }
-            }
+                slope_x: std::array::from_fn(|l| xi * inv_l1 - phi * y[l] * inv_l3),
+                bound: std::array::from_fn(|l| bound_peak * group.shape[l]),
+            };
+            let sums = integrate_strips(&inputs, &self.elements, eta_l2, phi, inv_l3);
             for l in 0..LANES {
                 let area = 2.0 * a_j[l] / nx * dy;
-                fx += sx[l] * area;
-                fy += sy[l] * area;
-                mz += (sxpy[l] - y[l] * sx[l]) * area;
+                fx += sums.sx[l] * area;
+                fy += sums.sy[l] * area;
+                mz += (sums.sxpy[l] - y[l] * sums.sx[l]) * area;
             }
         }
         CreepForces { fx, fy, mz }

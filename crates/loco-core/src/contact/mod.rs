@@ -21,6 +21,7 @@ mod en15302_data;
 pub mod fastrip;
 mod fastrip_march;
 pub mod fastsim;
+mod fastsim_lanes;
 pub mod fastsim_table;
 pub mod geometry;
 pub mod hertz;

@@ -16,7 +16,11 @@ pub type SparseRow = Vec<(usize, f64)>;
 #[derive(Debug, Clone, PartialEq)]
 pub struct MotionMap {
     /// Rows for x, y, z (m) and roll, pitch, yaw (rad).
-    pub rows: [SparseRow; 6],
+    rows: [SparseRow; 6],
+    /// `Some(first)` when the rows select the six coordinates from `first` with coefficient 1
+    /// (a free body): the map is then a copy, taken without walking the rows (same values, as
+    /// `1·q` is `q`).
+    free: Option<usize>,
 }
 
 /// A dense 6×N_DOF map used while building (compressed to [`MotionMap`] afterwards).
@@ -82,16 +86,33 @@ impl DenseMap {
                 .map(|(j, c)| (j, *c))
                 .collect()
         };
-        MotionMap {
-            rows: [row(0), row(1), row(2), row(3), row(4), row(5)],
-        }
+        MotionMap::new([row(0), row(1), row(2), row(3), row(4), row(5)])
     }
 }
 
 impl MotionMap {
+    /// The map of six sparse rows (x, y, z, roll, pitch, yaw).
+    pub fn new(rows: [SparseRow; 6]) -> Self {
+        let first = rows[0].first().map(|&(j, _)| j);
+        let free = first.filter(|&first| {
+            rows.iter()
+                .enumerate()
+                .all(|(k, row)| row.as_slice() == [(first + k, 1.0)])
+        });
+        Self { rows, free }
+    }
+
+    /// Rows for x, y, z (m) and roll, pitch, yaw (rad): (coordinate index, coefficient).
+    pub fn rows(&self) -> &[SparseRow; 6] {
+        &self.rows
+    }
+
     /// The body motion `T q` for coordinates (or velocities) `q`.
     #[inline]
     pub fn apply(&self, q: &[f64]) -> [f64; 6] {
+        if let Some(f) = self.free {
+            return [q[f], q[f + 1], q[f + 2], q[f + 3], q[f + 4], q[f + 5]];
+        }
         let mut u = [0.0; 6];
         for (k, row) in self.rows.iter().enumerate() {
             u[k] = row.iter().map(|&(j, c)| c * q[j]).sum();
@@ -102,6 +123,14 @@ impl MotionMap {
     /// Adds the generalized force `Tᵀ w` of the body wrench `w` (N, N·m) to `gen_force`.
     #[inline]
     pub fn add_transpose(&self, wrench: &[f64; 6], gen_force: &mut [f64]) {
+        if let Some(f) = self.free {
+            for (g, w) in gen_force[f..f + 6].iter_mut().zip(wrench) {
+                if *w != 0.0 {
+                    *g += w;
+                }
+            }
+            return;
+        }
         for (k, row) in self.rows.iter().enumerate() {
             if wrench[k] != 0.0 {
                 for &(j, c) in row {

@@ -14,6 +14,8 @@ use crate::error::{LocoError, Result};
 struct Block {
     dofs: Vec<usize>,
     factor: Vec<f64>,
+    /// The factor's transpose (row-major), so that the back substitution reads rows too.
+    upper: Vec<f64>,
 }
 
 /// The mass matrix (kg, kg·m, kg·m²), dense for inspection and factorised by blocks for solving.
@@ -30,7 +32,7 @@ impl MassMatrix {
         let mut dense = vec![0.0; N_DOF * N_DOF];
         for (map, mass, inertia) in bodies {
             let diag = [*mass, *mass, *mass, inertia[0], inertia[1], inertia[2]];
-            for (k, row) in map.rows.iter().enumerate() {
+            for (k, row) in map.rows().iter().enumerate() {
                 for &(i, ci) in row {
                     for &(j, cj) in row {
                         dense[i * N_DOF + j] += diag[k] * ci * cj;
@@ -52,24 +54,33 @@ impl MassMatrix {
         let mut work = [0.0; N_DOF];
         for block in &self.blocks {
             let n = block.dofs.len();
-            let l = &block.factor;
-            // Forward substitution L y = b, then back substitution Lᵀ x = y.
+            let (l, u) = (&block.factor, &block.upper);
+            if n == 1 {
+                // A coordinate coupled to no other: the substitutions below in one line.
+                x[block.dofs[0]] = rhs[block.dofs[0]] / l[0] / l[0];
+                continue;
+            }
+            let work = &mut work[..n];
+            // Forward substitution L y = b, then back substitution Lᵀ x = y, each sum taken in
+            // the order of increasing k.
             for i in 0..n {
+                let row = &l[i * n..i * n + i];
                 let mut s = rhs[block.dofs[i]];
-                for k in 0..i {
-                    s -= l[i * n + k] * work[k];
+                for (lik, wk) in row.iter().zip(&work[..i]) {
+                    s -= lik * wk;
                 }
                 work[i] = s / l[i * n + i];
             }
             for i in (0..n).rev() {
+                let row = &u[i * n + i + 1..i * n + n];
                 let mut s = work[i];
-                for k in i + 1..n {
-                    s -= l[k * n + i] * work[k];
+                for (uik, wk) in row.iter().zip(&work[i + 1..]) {
+                    s -= uik * wk;
                 }
                 work[i] = s / l[i * n + i];
             }
-            for i in 0..n {
-                x[block.dofs[i]] = work[i];
+            for (&d, w) in block.dofs.iter().zip(work.iter()) {
+                x[d] = *w;
             }
         }
     }
@@ -126,7 +137,12 @@ fn factor_blocks(dense: &[f64]) -> Result<Vec<Block>> {
                 }
             }
         }
-        blocks.push(Block { dofs, factor: l });
+        let upper = (0..n * n).map(|ij| l[(ij % n) * n + ij / n]).collect();
+        blocks.push(Block {
+            dofs,
+            factor: l,
+            upper,
+        });
     }
     Ok(blocks)
 }

@@ -74,7 +74,7 @@ pub fn mode_energy(structure: &VehicleStructure, re: &[f64], im: &[f64]) -> Resu
         let [ixx, iyy, izz] = body.inertia;
         let diag = [body.mass, body.mass, body.mass, ixx, iyy, izz];
         let mut e = [0.0; 6];
-        for (k, row) in body.map.rows.iter().enumerate() {
+        for (k, row) in body.map.rows().iter().enumerate() {
             let (mut u_re, mut u_im) = (0.0, 0.0);
             for &(j, c) in row {
                 u_re += c * re[j];

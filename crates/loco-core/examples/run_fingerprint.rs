@@ -1,0 +1,45 @@
+//! One 500 m run at 200 km/h (the `vehicle` bench's `run_500m_200kmh`), printing its metrics and a
+//! fingerprint of every output sample's bits: the same fingerprint before and after a change means
+//! the change kept the results bit for bit. Also the program callgrind counts instructions of.
+//!
+//! `cargo run --release -p loco-core --example run_fingerprint -- [fastsim|fastrip|table]
+//! [S_high|S_low] [prepare]` (`prepare`: build contact and track only, to subtract set-up cost).
+
+use loco_core::vehicle::creep_model::CreepModel;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
+use loco_core::vehicle::structure::VehicleStructure;
+use std::sync::Arc;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let creep = CreepModel::from_name(args.get(1).map_or("fastsim", String::as_str)).unwrap();
+    let name = args.get(2).map_or("S_high", String::as_str);
+    let scenario = Scenario {
+        creep,
+        ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
+    };
+    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
+    let track = Arc::new(build_track(&scenario, &structure).unwrap());
+    if args.get(3).is_some_and(|a| a == "prepare") {
+        return;
+    }
+    let result = simulate_prepared(structure, wheel_rail, track, &scenario, None).unwrap();
+    // FNV-1a over the bits of every sample of every channel.
+    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    for channel in &result.output.channels {
+        for v in channel {
+            for byte in v.to_bits().to_le_bytes() {
+                hash = (hash ^ byte as u64).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+    }
+    let m = &result.metrics;
+    println!("creep {} scenario {name}", creep.name());
+    println!("wy_max {:.17e}", m.wy_max);
+    println!("ayb_peak_lp {:.17e}", m.ayb_peak_lp);
+    println!("ayc_psd_peak {:.17e}", m.ayc_psd_peak);
+    println!("rhs_evaluations {}", result.statistics.rhs_evaluations);
+    println!("fingerprint {hash:016x}");
+}
