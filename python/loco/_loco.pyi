@@ -26,12 +26,14 @@ __all__ += [
     "LocoError",
     "LocoIOError",
     "ParameterError",
+    "ParameterRangeError",
     "ProfileFormatError",
     "SimulationError",
 ]
 
 class LocoError(Exception): ...
 class ParameterError(LocoError): ...
+class ParameterRangeError(ParameterError): ...
 class ProfileFormatError(LocoError): ...
 class LocoIOError(LocoError): ...
 class ContactError(LocoError): ...
@@ -534,6 +536,15 @@ def ramp_down(
     window: float | None = None,
     threshold: float | None = None,
 ) -> tuple[float, str, NDArray[np.float64], NDArray[np.float64]]: ...
+
+# --- parameter schema (schema.rs) ------------------------------------------------------------
+
+__all__ += ["parameter_schema", "retired_parameters"]
+
+def parameter_schema() -> list[
+    tuple[str, str, str, float, float, list[str], str, str]
+]: ...
+def retired_parameters() -> list[tuple[str, str]]: ...
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------
 

@@ -13,6 +13,7 @@ mod errors;
 mod frequency_response;
 mod metrics;
 mod scenario;
+mod schema;
 mod track;
 mod vehicle;
 
@@ -31,6 +32,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     dampers::register(m)?;
     scenario::register(m)?;
     vehicle::register(m)?;
+    schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;
     Ok(())
