@@ -61,8 +61,8 @@ def render() -> str:
     lines += [
         "### Why the ranges are what they are",
         "",
-        "What main-line rail vehicles (locomotives, power cars, coaches, EMU cars) have; the SPEC §6",
-        "study box lies inside (tested).",
+        "What main-line rail vehicles (locomotives, power cars, coaches, EMU cars) have; the",
+        "SPEC §6 study box lies inside (tested).",
         "",
     ]
     lines += [

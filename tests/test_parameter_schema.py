@@ -15,7 +15,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _docs_script() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("parameter_docs", ROOT / "scripts" / "parameter_docs.py")
+    spec = importlib.util.spec_from_file_location(
+        "parameter_docs", ROOT / "scripts" / "parameter_docs.py"
+    )
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -62,7 +64,7 @@ def test_the_docs_page_lists_exactly_the_schema_keys_and_is_current() -> None:
 
 def test_out_of_range_needs_the_explicit_allowance_in_the_file() -> None:
     base = loco.Locomotive.default()
-    with pytest.raises(loco.ParameterRangeError, match=r"secondary\.yaw_damper_damping.*1e\+?30.*3e\+?06"):
+    with pytest.raises(loco.ParameterRangeError, match=r"secondary\.yaw_damper_damping.*1e30.*3e6"):
         base.replace(C_sx=1e30)
     with pytest.raises(loco.ParameterError):  # the range error is a parameter error
         base.replace({"carbody.mass": 1e-30})
@@ -73,7 +75,7 @@ def test_out_of_range_needs_the_explicit_allowance_in_the_file() -> None:
 
 @pytest.mark.parametrize("value", [2.5, 0.4, 1e12, 1e9, -1.0, float("nan")])
 def test_counts_are_small_whole_numbers(value: float) -> None:
-    with pytest.raises(loco.ParameterError, match="secondary.lateral_dampers_per_bogie"):
+    with pytest.raises(loco.ParameterError, match=r"secondary\.lateral_dampers_per_bogie"):
         loco.Locomotive.default().replace({"secondary.lateral_dampers_per_bogie": value})
 
 
@@ -82,9 +84,15 @@ def test_file_units_are_converted_or_refused(tmp_path: Path) -> None:
     old = 'lateral_damper_damping = { value = 2.5e4, unit = "N·s/m"'
     assert old in text
     path = tmp_path / "v.toml"
-    path.write_text(text.replace(old, 'lateral_damper_damping = { value = 25, unit = "kN·s/m"'), encoding="utf-8")
+    path.write_text(
+        text.replace(old, 'lateral_damper_damping = { value = 25, unit = "kN·s/m"'),
+        encoding="utf-8",
+    )
     assert loco.Locomotive.from_toml(path)["C_sy"] == 25e3
-    path.write_text(text.replace(old, 'lateral_damper_damping = { value = 2.5e4, unit = "kN/mm"'), encoding="utf-8")
+    path.write_text(
+        text.replace(old, 'lateral_damper_damping = { value = 2.5e4, unit = "kN/mm"'),
+        encoding="utf-8",
+    )
     with pytest.raises(loco.LocoError, match=r"secondary\.lateral_damper_damping.*kN/mm"):
         loco.Locomotive.from_toml(path)
 

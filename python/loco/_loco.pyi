@@ -541,9 +541,7 @@ def ramp_down(
 
 __all__ += ["parameter_schema", "retired_parameters"]
 
-def parameter_schema() -> list[
-    tuple[str, str, str, float, float, list[str], str, str]
-]: ...
+def parameter_schema() -> list[tuple[str, str, str, float, float, list[str], str, str]]: ...
 def retired_parameters() -> list[tuple[str, str]]: ...
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------
