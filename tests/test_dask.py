@@ -127,8 +127,8 @@ def test_worker_killed_mid_chunk(
 
     killer = threading.Thread(target=kill_when_busy)
     killer.start()
-    result = run_campaign(design, names(), scenario=SCENARIO, executor=cluster, chunk_size=2,
-                          store=tmp_path, progress=False)  # fmt: skip
+    result = run_campaign(design, names(), VEHICLE, scenario=SCENARIO, executor=cluster,
+                          chunk_size=2, store=tmp_path, progress=False)  # fmt: skip
     killer.join()
     assert killed, "no worker was busy"
     with pytest.raises(ProcessLookupError):
