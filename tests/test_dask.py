@@ -31,6 +31,12 @@ pytest.importorskip("distributed", reason="needs pip install 'loco[distributed]'
 
 # The FSD yaw damper makes the scenario carry a native object to the workers.
 SCENARIO = loco.Scenario(scenario="S_low", distance=300.0, seed=2, yaw_damper=dampers.FSD)
+# K_px far beyond any vehicle is a research value the vehicle file must allow explicitly.
+VEHICLE = loco.Locomotive(
+    toml_text='allow_out_of_range = ["rotary_arm.node_stiffness_longitudinal"]\n'
+    + loco.Locomotive.default().default_toml(),
+    origin="research.toml",
+)
 
 
 @pytest.fixture(scope="module")
@@ -48,7 +54,7 @@ def design() -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def local(design: np.ndarray) -> loco.BatchResult:
-    return loco.run_batch(design, names(), scenario=SCENARIO, threads=2, progress=False)
+    return loco.run_batch(design, names(), VEHICLE, scenario=SCENARIO, threads=2, progress=False)
 
 
 def _same(a: loco.BatchResult, b: loco.BatchResult) -> None:
@@ -73,7 +79,7 @@ def test_local_cluster_bit_identical_to_threads(
     assert len(cluster.client.nthreads()) == 2
     assert local.status[3] != 0 and local.messages[3]
     for chunk_size in (None, 3):
-        result = loco.run_batch(design, names(), scenario=SCENARIO, executor=cluster,
+        result = loco.run_batch(design, names(), VEHICLE, scenario=SCENARIO, executor=cluster,
                                 chunk_size=chunk_size, progress=False)  # fmt: skip
         _same(result, local)
     # An input error on a worker comes back as the loco error, naming the design's row.
@@ -121,8 +127,8 @@ def test_worker_killed_mid_chunk(
 
     killer = threading.Thread(target=kill_when_busy)
     killer.start()
-    result = run_campaign(design, names(), scenario=SCENARIO, executor=cluster, chunk_size=2,
-                          store=tmp_path, progress=False)  # fmt: skip
+    result = run_campaign(design, names(), VEHICLE, scenario=SCENARIO, executor=cluster,
+                          chunk_size=2, store=tmp_path, progress=False)  # fmt: skip
     killer.join()
     assert killed, "no worker was busy"
     with pytest.raises(ProcessLookupError):

@@ -17,6 +17,7 @@ from loco import (
     metrics,
     modes,
     profiles,
+    schema,
     simulation,
     stability,
     track,
@@ -32,11 +33,13 @@ from loco._loco import (
     LocoError,
     LocoIOError,
     ParameterError,
+    ParameterRangeError,
     ProfileFormatError,
     SimulationError,
     __version__,
 )
 from loco.batch import BatchResult, run_batch
+from loco.schema import ParameterSpec, parameter_schema, retired_parameters
 from loco.simulation import Scenario, SimulationResult, simulate
 from loco.stability import critical_speed, eigen
 from loco.track_response import (
@@ -59,6 +62,8 @@ __all__ = [
     "LocoIOError",
     "Locomotive",
     "ParameterError",
+    "ParameterRangeError",
+    "ParameterSpec",
     "ProfileFormatError",
     "ResponsePsd",
     "Scenario",
@@ -75,9 +80,12 @@ __all__ = [
     "frequency_response",
     "metrics",
     "modes",
+    "parameter_schema",
     "profiles",
     "response_psd",
+    "retired_parameters",
     "run_batch",
+    "schema",
     "simulate",
     "simulation",
     "stability",

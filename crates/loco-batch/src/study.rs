@@ -3,6 +3,7 @@
 //! ```toml
 //! [vehicle]
 //! file = "my_loco.toml"            # optional: a parameter file (default: the embedded vehicle)
+//! allow_out_of_range = ["K_py"]    # optional: keys allowed outside their physical range
 //! [vehicle.overrides]              # optional: values (SI) by key or study name
 //! C_sy = 2.5e4
 //!
@@ -63,6 +64,10 @@ pub struct StudyFile {
 #[serde(deny_unknown_fields)]
 pub struct VehicleSection {
     pub file: Option<PathBuf>,
+    /// Keys (or study names) allowed outside their physical range, in the file, the overrides
+    /// and the samples, as a vehicle file's own `allow_out_of_range` list.
+    #[serde(default)]
+    pub allow_out_of_range: Vec<String>,
     #[serde(default)]
     pub overrides: BTreeMap<String, f64>,
 }
@@ -112,6 +117,9 @@ pub fn load_study(path: &Path) -> Result<Study> {
         }
         None => ParameterSet::default_vehicle(),
     };
+    for name in &file.vehicle.allow_out_of_range {
+        base.allow_out_of_range(name)?;
+    }
     for (name, value) in &file.vehicle.overrides {
         base.set(name, *value)?;
     }

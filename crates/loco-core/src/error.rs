@@ -14,6 +14,18 @@ pub enum LocoError {
     #[error("invalid parameter `{name}`: {reason}")]
     InvalidParameter { name: String, reason: String },
 
+    /// A parameter is outside the physical range of its schema entry (`vehicle/parameter_schema`):
+    /// `value`, `min`, `max` in `unit`. A research value outside is allowed only explicitly, by
+    /// listing the key in the vehicle file's `allow_out_of_range`.
+    #[error("parameter `{name}` = {} {unit} is outside its physical range [{}, {}] {unit}; to study it anyway, list its key in the vehicle file's `allow_out_of_range` (docs/vehicle_parameters.md)", number(*.value), number(*.min), number(*.max))]
+    OutOfRange {
+        name: String,
+        value: f64,
+        min: f64,
+        max: f64,
+        unit: String,
+    },
+
     /// An array or record is unusable: wrong shape or length, too short, NaN inside,
     /// not monotonic. `name` names the argument (and the row or column where it helps).
     #[error("invalid input `{name}`: {reason}")]
@@ -65,6 +77,15 @@ pub enum LocoError {
     /// The caller asked the computation to stop (Ctrl-C from Python, ...).
     #[error("interrupted")]
     Interrupted,
+}
+
+/// A number for a message: plain when of everyday size, otherwise in exponent form (`1e30`).
+fn number(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 /// Shorthand used throughout the crate.

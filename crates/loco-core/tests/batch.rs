@@ -94,10 +94,14 @@ fn given_track_streams_draw_the_whole_batchs_tracks() {
 fn a_diverging_sample_is_flagged_and_the_rest_completes() {
     // A primary spring a million times stiffer than the real one puts an axle-box mode far
     // beyond RK4's stability limit at the 1 ms step: that sample diverges.
-    let s = spec(
+    // Far outside the physical range, so the research value has to be allowed explicitly.
+    let mut s = spec(
         &["primary.axle_box_spring_vertical_stiffness"],
         vec![1.5e7, 1.5e13, 1.5e7],
     );
+    s.base
+        .allow_out_of_range("primary.axle_box_spring_vertical_stiffness")
+        .unwrap();
     let out = run_batch(&s, 2, &BatchMonitor::default()).unwrap();
     assert_eq!(out.status[0], SampleStatus::Ok);
     assert_eq!(out.status[1], SampleStatus::Diverged, "{}", out.messages[1]);
@@ -121,9 +125,22 @@ fn input_errors_name_row_and_column_before_running() {
     )
     .unwrap_err();
     let text = e.to_string();
-    assert!(matches!(e, LocoError::InvalidParameter { .. }), "{text}");
+    assert!(matches!(e, LocoError::OutOfRange { .. }), "{text}");
     assert!(
         text.contains("row 1") && text.contains("column 1") && text.contains("K_px"),
+        "{text}"
+    );
+    // A fractional count is refused before running, naming the cell.
+    let e = run_batch(
+        &spec(&["secondary.lateral_dampers_per_bogie"], vec![2.0, 0.4]),
+        1,
+        &BatchMonitor::default(),
+    )
+    .unwrap_err();
+    let text = e.to_string();
+    assert!(matches!(e, LocoError::InvalidParameter { .. }), "{text}");
+    assert!(
+        text.contains("row 1") && text.contains("whole number"),
         "{text}"
     );
     let e = run_batch(

@@ -19,6 +19,12 @@ use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
 use std::sync::Arc;
 
+/// Sets a research value outside the parameter's physical range, allowed explicitly.
+fn research(p: &mut ParameterSet, key: &str, value: f64) {
+    p.allow_out_of_range(key).unwrap();
+    p.set(key, value).unwrap();
+}
+
 fn perfect(name: &str, speed: f64, distance: f64) -> Scenario {
     let mut s = Scenario::study(name, speed, distance, 0).unwrap();
     s.track = TrackSpec::Perfect;
@@ -155,8 +161,7 @@ fn an_absurdly_stiff_primary_spring_diverges() {
     // 1.5e13 N/m per axle box (a million times the real spring) puts the wheelset's vertical mode
     // near 25 kHz, far outside RK4's stability region at 1 ms: the run blows up within steps.
     let mut p = ParameterSet::default_vehicle();
-    p.set("primary.axle_box_spring_vertical_stiffness", 1.5e13)
-        .unwrap();
+    research(&mut p, "primary.axle_box_spring_vertical_stiffness", 1.5e13);
     let e = simulate(p, &perfect("S_norm", 200.0 / 3.6, 100.0)).unwrap_err();
     assert!(matches!(e, LocoError::Diverged { .. }), "{e}");
 }
@@ -322,13 +327,13 @@ fn free_wheelset_reproduces_klingels_wavelength() {
     // creep-free rolling has (1 + r0·φ')·ẏ = V·ψ and L = 2π√(r0·e·(1 + r0·φ')/λ).
     let mut p = ParameterSet::default_vehicle();
     for key in ["K_px", "K_py"] {
-        p.set(key, 1e3).unwrap();
+        research(&mut p, key, 1e3);
     }
     for key in [
         "hollow_shaft.coupling_lateral_stiffness",
         "hollow_shaft.coupling_angular_stiffness",
     ] {
-        p.set(key, 1.0).unwrap();
+        research(&mut p, key, 1.0);
     }
     let speed = 5.0;
     let scenario = conical_scenario(0.05, speed, 150.0);
@@ -352,22 +357,22 @@ fn rigid_bogie_reproduces_its_wavelength_formula() {
     // L = 2π√(r0·(1 + r0·φ')·(e/λ)·(1 + (C22/C11)·(b/e)²·(1 + r0·φ'))), b the half wheelbase;
     // with C22 = C11 and no roll term this is the textbook L_wheelset·√(1 + (b/e)²).
     let mut p = ParameterSet::default_vehicle();
-    p.set("K_px", 1e9).unwrap();
-    p.set("K_py", 1e9).unwrap();
-    p.set("C_sx", 1e4).unwrap();
-    p.set("C_sy", 1e4).unwrap();
+    research(&mut p, "K_px", 1e9);
+    research(&mut p, "K_py", 1e9);
+    research(&mut p, "C_sx", 1e4);
+    research(&mut p, "C_sy", 1e4);
     for key in [
         "secondary.flexicoil_longitudinal_stiffness",
         "secondary.flexicoil_lateral_stiffness",
         "secondary.flexicoil_bending_stiffness",
     ] {
-        p.set(key, 1.0).unwrap();
+        research(&mut p, key, 1.0);
     }
     for key in [
         "hollow_shaft.coupling_lateral_stiffness",
         "hollow_shaft.coupling_angular_stiffness",
     ] {
-        p.set(key, 1.0).unwrap();
+        research(&mut p, key, 1.0);
     }
     let speed = 5.0;
     let mut scenario = conical_scenario(0.05, speed, 250.0);

@@ -28,6 +28,13 @@ create_exception!(
 );
 create_exception!(
     _loco,
+    ParameterRangeError,
+    ParameterError,
+    "A vehicle parameter is outside its physical range (the message names it, its value and the \
+     range; list it in the vehicle file's `allow_out_of_range` to study it anyway)."
+);
+create_exception!(
+    _loco,
     ProfileFormatError,
     LocoError,
     "A profile, track or study file is malformed; the message names the file and line."
@@ -82,6 +89,7 @@ pub fn to_py_err(err: CoreError) -> PyErr {
         CoreError::InvalidParameter { .. } | CoreError::InvalidInput { .. } => {
             ParameterError::new_err(msg)
         }
+        CoreError::OutOfRange { .. } => ParameterRangeError::new_err(msg),
         CoreError::Parse { .. } => ProfileFormatError::new_err(msg),
         CoreError::Io { .. } => LocoIOError::new_err(msg),
         CoreError::Contact(_) => ContactError::new_err(msg),
@@ -180,6 +188,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("LocoError", py.get_type::<LocoError>())?;
     m.add("ParameterError", py.get_type::<ParameterError>())?;
+    m.add("ParameterRangeError", py.get_type::<ParameterRangeError>())?;
     m.add("ProfileFormatError", py.get_type::<ProfileFormatError>())?;
     m.add("LocoIOError", py.get_type::<LocoIOError>())?;
     m.add("ContactError", py.get_type::<ContactError>())?;

@@ -13,6 +13,7 @@ mod errors;
 mod frequency_response;
 mod metrics;
 mod scenario;
+mod schema;
 mod track;
 mod vehicle;
 mod vehicle_handle;
@@ -33,6 +34,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     scenario::register(m)?;
     vehicle_handle::register(m)?;
     vehicle::register(m)?;
+    schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;
     Ok(())

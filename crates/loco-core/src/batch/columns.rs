@@ -6,6 +6,7 @@
 //! turning into hundreds of failed samples.
 
 use crate::error::{LocoError, Result};
+use crate::vehicle::parameter_schema::{spec, unknown_key_reason, Affects};
 use crate::vehicle::parameters::{resolve_name, ParameterSet};
 use crate::vehicle::run_limits::MIN_SPEED;
 use crate::vehicle::scenario::MAX_SPEED;
@@ -30,11 +31,20 @@ impl Column {
         matches!(self, Column::Vehicle(_))
     }
 
-    /// True when the column changes what the wheel-rail contact is built from (wheel radius,
-    /// contact half distance, elastic constants, friction, contact damping): the contact
-    /// tables can then not be shared across samples.
+    /// True when the column changes what the wheel-rail contact is built from (the parameter's
+    /// schema entry `affects` the contact): the contact tables can then not be shared across
+    /// samples.
     pub fn changes_contact(&self) -> bool {
-        matches!(self, Column::Vehicle(key) if key.starts_with("track.") || key.starts_with("contact."))
+        self.affects(Affects::Contact)
+    }
+
+    /// True when the column's parameter changes `what` (its schema entry); the speed changes
+    /// none of the vehicle's parts.
+    pub fn affects(&self, what: Affects) -> bool {
+        match self {
+            Column::Vehicle(key) => spec(key).is_some_and(|s| s.affects(what)),
+            Column::Speed => false,
+        }
     }
 }
 
@@ -46,12 +56,13 @@ pub fn resolve_columns(base: &ParameterSet, names: &[String]) -> Result<Vec<Colu
             Column::Speed
         } else {
             let key = resolve_name(name);
-            if base.parameter(key).is_none() {
+            if spec(key).is_none() || base.parameter(key).is_none() {
                 return Err(LocoError::input(
                     format!("names[{j}]"),
                     format!(
-                        "unknown parameter '{name}': expected a vehicle file key (section.name), \
-                         a study name (K_px, K_py, C_sx, C_sy, K_ncsx, K_ncsy) or '{SPEED_COLUMN}'"
+                        "'{name}': {}; a column is a vehicle file key (section.name), a study \
+                         name (K_px, K_py, C_sx, C_sy, K_ncsx, K_ncsy) or '{SPEED_COLUMN}'",
+                        unknown_key_reason(key)
                     ),
                 ));
             }
@@ -174,17 +185,35 @@ fn check_row(
 ) -> Result<()> {
     check_row_speed(names, columns, i, row)?;
     let name_error = |e: LocoError| -> LocoError {
-        let LocoError::InvalidParameter { name, reason } = &e else {
-            return e;
+        let (name, reason) = match &e {
+            LocoError::InvalidParameter { name, reason } => (name, reason.clone()),
+            LocoError::OutOfRange { name, .. } => (name, e.to_string()),
+            _ => return e,
         };
         // Name the column whose parameter the vehicle refused, when it is one of the row's.
         let j = columns.iter().position(|c| match c {
             Column::Vehicle(key) => name.contains(key.as_str()),
             Column::Speed => false,
         });
-        match j {
-            Some(j) => LocoError::param(cell(i, j, &names[j]), format!("{name}: {reason}")),
-            None => LocoError::param(format!("params[row {i}] {name}"), reason.clone()),
+        match (j, &e) {
+            (
+                Some(j),
+                LocoError::OutOfRange {
+                    value,
+                    min,
+                    max,
+                    unit,
+                    ..
+                },
+            ) => LocoError::OutOfRange {
+                name: format!("{} {name}", cell(i, j, &names[j])),
+                value: *value,
+                min: *min,
+                max: *max,
+                unit: unit.clone(),
+            },
+            (Some(j), _) => LocoError::param(cell(i, j, &names[j]), format!("{name}: {reason}")),
+            (None, _) => LocoError::param(format!("params[row {i}] {name}"), reason),
         }
     };
     let set = row_parameters(base, columns, row).map_err(name_error)?;

@@ -71,6 +71,7 @@ impl SampleStatus {
     pub fn from_error(error: &LocoError) -> Self {
         match error {
             LocoError::InvalidParameter { .. }
+            | LocoError::OutOfRange { .. }
             | LocoError::InvalidInput { .. }
             | LocoError::Parse { .. }
             | LocoError::Io { .. } => SampleStatus::InvalidParameter,

@@ -55,9 +55,11 @@ impl DamperElement {
         self.law.evaluate(x, v, states, discrete, rates)
     }
 
-    /// Adds the damper's forces for tension `force` (N) to the two bodies.
+    /// Adds the forces of the placement's `count` dampers, each in tension `force` (N), to the
+    /// two bodies.
     #[inline]
     pub fn apply(&self, states: &BodyStates, force: f64, wrenches: &mut Wrenches) {
+        let force = force * self.placement.count;
         let n = self.placement.direction;
         // Tension pulls the second end (B) back toward the first.
         self.placement.at.apply_pair(

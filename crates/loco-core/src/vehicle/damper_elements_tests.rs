@@ -18,6 +18,7 @@ fn yaw_placement(name: &str) -> DamperPlacement {
         direction: [0.0, 1.0, 0.0],
         damping: 800e3,
         series_stiffness: 22.5e6,
+        count: 1.0,
     }
 }
 

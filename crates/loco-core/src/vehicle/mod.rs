@@ -1,6 +1,8 @@
 //! The 90-DOF B0-B0 locomotive (SPEC §1): parameters, bodies, suspension, equations of motion.
 //!
-//! - [`parameters`]: the parameter file (embedded default vehicle, overrides by name).
+//! - [`parameters`]: the parameter file (embedded default vehicle, overrides by name), checked
+//!   against [`parameter_schema`] (unit, kind, physical range, what each key affects) with
+//!   [`units`] (the units a file may state a value in).
 //! - [`layout`]: the 90 coordinates and 25 bodies, `dof_names()`.
 //! - [`kinematics`]: small-motion maps from coordinates to body motions.
 //! - [`bodies`]: mass properties and positions of the bodies.
@@ -37,6 +39,7 @@ pub mod layout;
 pub mod linearise;
 pub mod mass;
 pub mod modes;
+pub mod parameter_schema;
 pub mod parameters;
 pub mod presets;
 pub mod rail_plane;
@@ -54,4 +57,5 @@ pub mod structure;
 pub mod suspension;
 pub mod track_input;
 pub mod track_limits;
+pub mod units;
 pub mod wheel_rail;

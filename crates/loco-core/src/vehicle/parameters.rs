@@ -1,16 +1,30 @@
 //! The vehicle parameter file: every number of the locomotive with its unit and source.
 //!
 //! The file is TOML with one table per component and one inline table per parameter:
-//! `mass = { value = 42000.0, unit = "kg", source = "SPEC §1" }`. Values are SI. A parameter is
-//! addressed by `section.name` (e.g. `secondary.yaw_damper_damping`), which is also the name used
-//! for overrides (`ParameterSet::set`) and by the batch engine.
+//! `mass = { value = 42000.0, unit = "kg", source = "SPEC §1" }`. A parameter is addressed by
+//! `section.name` (e.g. `secondary.yaw_damper_damping`), which is also the name used for overrides
+//! (`ParameterSet::set`) and by the batch engine.
+//!
+//! The file must give exactly the keys of the [parameter schema](super::parameter_schema): an
+//! unknown, misspelt or retired key, a missing key, an unknown field, a unit that is not a unit of
+//! the parameter's quantity, a non-finite value, a fractional count or a value outside the
+//! physical range is an error naming the key. Values may be stated in any unit the schema's SI
+//! unit accepts (`vehicle/units.rs`) and are converted to SI on reading. A research value outside
+//! the range is allowed only explicitly: `allow_out_of_range = ["carbody.mass", ...]` at the top of
+//! the file lifts the range (not finiteness, not whole counts) for those keys, in the file and in
+//! every override applied to the set. Derived values (the steel's shear modulus) are computed.
 
+use super::parameter_schema::{schema, spec, unknown_key_reason};
+use super::units;
 use crate::error::{LocoError, Result};
 use serde::Deserialize;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// The embedded default vehicle (an SS8-like B0-B0 locomotive), shipped inside the crate.
 pub const DEFAULT_VEHICLE_TOML: &str = include_str!("default_vehicle.toml");
+
+/// The top-level key of a vehicle file that lists the parameters allowed outside their range.
+pub const ALLOW_OUT_OF_RANGE: &str = "allow_out_of_range";
 
 /// The six parameters of the study (SPEC §6) by their names there, and the parameters of the
 /// file they stand for (per axle box / per damper, SI units).
@@ -32,20 +46,32 @@ pub fn resolve_name(name: &str) -> &str {
 }
 
 /// One parameter: its value (SI), unit and where the value comes from.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Parameter {
     /// Value in SI units.
     pub value: f64,
-    /// Unit of `value`, for people (the code always works in SI).
+    /// The SI unit of `value` (the schema's).
     pub unit: String,
-    /// Where the value comes from: the spec, a published locomotive, a standard or an estimate.
+    /// Where the value comes from: the spec, a published locomotive, a standard or an estimate
+    /// (with the value as the file stated it when it was converted from another unit).
     pub source: String,
 }
 
-/// All parameters of a vehicle, keyed by `section.name`, in a stable (sorted) order.
+/// A parameter as a file states it.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileParameter {
+    value: f64,
+    unit: String,
+    source: String,
+}
+
+/// All parameters of a vehicle, keyed by `section.name`, in a stable (sorted) order: exactly the
+/// keys of the schema, each checked against it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ParameterSet {
     entries: BTreeMap<String, Parameter>,
+    allow_out_of_range: BTreeSet<String>,
 }
 
 impl ParameterSet {
@@ -56,36 +82,107 @@ impl ParameterSet {
             .unwrap_or_else(|e| panic!("embedded vehicle file is invalid: {e}"))
     }
 
-    /// Parses a vehicle file; `origin` names it in error messages.
+    /// Parses and checks a vehicle file; `origin` names it in error messages.
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self> {
-        let parse_err = |reason: String| LocoError::Parse {
+        let parse_err = |line: usize, reason: String| LocoError::Parse {
             path: origin.to_string(),
-            line: 0,
+            line,
             reason,
         };
-        let tables: BTreeMap<String, BTreeMap<String, Parameter>> =
-            toml::from_str(text).map_err(|e| {
-                let line = e
-                    .span()
-                    .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
-                    .unwrap_or(0);
-                LocoError::Parse {
-                    path: origin.to_string(),
+        let table: toml::Table = toml::from_str(text).map_err(|e| {
+            let line = e
+                .span()
+                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
+                .unwrap_or(0);
+            parse_err(line, e.message().to_string())
+        })?;
+        let mut allow = BTreeSet::new();
+        let mut given: Vec<(String, FileParameter, usize)> = Vec::new();
+        for (top, item) in table {
+            if top == ALLOW_OUT_OF_RANGE {
+                let line = line_of(text, None, &top);
+                let names: Vec<String> = item.try_into().map_err(|_| {
+                    parse_err(line, format!("`{top}` must be a list of parameter keys"))
+                })?;
+                for name in names {
+                    if spec(&name).is_none() {
+                        return Err(parse_err(
+                            line,
+                            format!("`{top}`: `{name}`: {}", unknown_key_reason(&name)),
+                        ));
+                    }
+                    allow.insert(name);
+                }
+                continue;
+            }
+            let toml::Value::Table(params) = item else {
+                let line = line_of(text, None, &top);
+                return Err(parse_err(
                     line,
-                    reason: e.message().to_string(),
-                }
-            })?;
-        let mut entries = BTreeMap::new();
-        for (section, params) in tables {
-            for (name, param) in params {
-                let key = format!("{section}.{name}");
-                if !param.value.is_finite() {
-                    return Err(parse_err(format!("`{key}` is not finite")));
-                }
-                entries.insert(key, param);
+                    format!(
+                        "`{top}`: expected a [section] of parameters or `{ALLOW_OUT_OF_RANGE}`"
+                    ),
+                ));
+            };
+            for (name, value) in params {
+                let key = format!("{top}.{name}");
+                let line = line_of(text, Some(&top), &name);
+                let p: FileParameter = value.try_into().map_err(|e: toml::de::Error| {
+                    parse_err(line, format!("`{key}`: {}", e.message().trim()))
+                })?;
+                given.push((key, p, line));
             }
         }
-        Ok(Self { entries })
+        let mut entries = BTreeMap::new();
+        for (key, p, line) in given {
+            let Some(s) = spec(&key) else {
+                return Err(parse_err(
+                    line,
+                    format!("`{key}`: {}", unknown_key_reason(&key)),
+                ));
+            };
+            let Some(factor) = units::factor_to_si(&p.unit, &s.unit) else {
+                return Err(parse_err(
+                    line,
+                    format!(
+                        "`{key}`: unit `{}` is not a unit of {} (accepted: {})",
+                        p.unit,
+                        s.unit,
+                        units::accepted(&s.unit).join(", ")
+                    ),
+                ));
+            };
+            let value = s.check(p.value * factor, allow.contains(&key))?;
+            let source = if p.unit.trim() == s.unit {
+                p.source
+            } else {
+                format!("{} [stated as {} {}]", p.source, p.value, p.unit.trim())
+            };
+            let unit = s.unit.clone();
+            entries.insert(
+                key,
+                Parameter {
+                    value,
+                    unit,
+                    source,
+                },
+            );
+        }
+        let missing: Vec<&str> = schema()
+            .iter()
+            .map(|s| s.key.as_str())
+            .filter(|k| !entries.contains_key(*k))
+            .collect();
+        if !missing.is_empty() {
+            return Err(parse_err(
+                0,
+                format!("missing vehicle parameters: {}", missing.join(", ")),
+            ));
+        }
+        Ok(Self {
+            entries,
+            allow_out_of_range: allow,
+        })
     }
 
     /// The value of `key` (`section.name`), or an error naming the missing key.
@@ -101,30 +198,68 @@ impl ParameterSet {
         self.entries.get(key)
     }
 
-    /// Overrides the value of an existing parameter, by file key or study alias (`K_px`, ...);
-    /// unknown names and non-finite values are refused (a typo must not silently leave the
-    /// default in place).
+    /// Overrides the value of a parameter, by file key or study alias (`K_px`, ...), checked
+    /// against the schema: unknown and retired names, non-finite values, fractional counts and
+    /// values out of range (unless allowed) are refused.
     pub fn set(&mut self, name: &str, value: f64) -> Result<()> {
         let key = resolve_name(name);
-        if !value.is_finite() {
-            let label = if key == name {
-                key.to_string()
-            } else {
-                format!("{name} ({key})")
-            };
-            return Err(LocoError::param(
-                label,
-                format!("must be finite, got {value}"),
-            ));
+        let label = if key == name {
+            key.to_string()
+        } else {
+            format!("{name} ({key})")
+        };
+        let Some(s) = spec(key) else {
+            return Err(LocoError::param(name, unknown_key_reason(key)));
+        };
+        let value = s
+            .check(value, self.allow_out_of_range.contains(key))
+            .map_err(|e| match e {
+                LocoError::OutOfRange {
+                    value,
+                    min,
+                    max,
+                    unit,
+                    ..
+                } => LocoError::OutOfRange {
+                    name: label.clone(),
+                    value,
+                    min,
+                    max,
+                    unit,
+                },
+                LocoError::InvalidParameter { reason, .. } => LocoError::param(&label, reason),
+                other => other,
+            })?;
+        let p = self
+            .entries
+            .get_mut(key)
+            .ok_or_else(|| LocoError::param(key, "missing from the vehicle parameter file"))?;
+        p.value = value;
+        p.source = "override".to_string();
+        Ok(())
+    }
+
+    /// Lifts the range of `key` (not finiteness, not whole counts) for this set, as the file's
+    /// `allow_out_of_range` list does.
+    pub fn allow_out_of_range(&mut self, key: &str) -> Result<()> {
+        let key = resolve_name(key);
+        if spec(key).is_none() {
+            return Err(LocoError::param(key, unknown_key_reason(key)));
         }
-        match self.entries.get_mut(key) {
-            Some(p) => {
-                p.value = value;
-                p.source = "override".to_string();
-                Ok(())
-            }
-            None => Err(LocoError::param(name, "unknown vehicle parameter")),
-        }
+        self.allow_out_of_range.insert(key.to_string());
+        Ok(())
+    }
+
+    /// The keys allowed outside their range, sorted.
+    pub fn allowed_out_of_range(&self) -> impl Iterator<Item = &str> {
+        self.allow_out_of_range.iter().map(String::as_str)
+    }
+
+    /// Shear modulus of wheel and rail steel, Pa: derived, G = E / (2 (1 + ν)).
+    pub fn shear_modulus(&self) -> Result<f64> {
+        let e = self.get("track.young_modulus")?;
+        let nu = self.get("track.poisson_ratio")?;
+        Ok(e / (2.0 * (1.0 + nu)))
     }
 
     /// All keys in sorted order.
@@ -148,35 +283,25 @@ impl ParameterSet {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn embedded_file_parses_with_sources() {
-        let set = ParameterSet::from_toml_str(DEFAULT_VEHICLE_TOML, "embedded").unwrap();
-        assert!(set.len() > 60);
-        for (key, p) in set.iter() {
-            assert!(!p.source.trim().is_empty(), "{key} has no source");
-            assert!(!p.unit.trim().is_empty(), "{key} has no unit");
+/// The 1-based line of `name` in `[section]` (None: a top-level key) of `text`, or 0.
+fn line_of(text: &str, section: Option<&str>, name: &str) -> usize {
+    let mut current: Option<&str> = None;
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if let Some(header) = t.strip_prefix('[') {
+            current = header.split(']').next().map(str::trim);
+            continue;
         }
-        assert_eq!(set.get("carbody.mass").unwrap(), 42e3);
-    }
-
-    #[test]
-    fn override_and_errors_name_the_key() {
-        let mut set = ParameterSet::default_vehicle();
-        set.set("secondary.yaw_damper_damping", 2e5).unwrap();
-        assert_eq!(set.get("secondary.yaw_damper_damping").unwrap(), 2e5);
-        set.set("K_py", 5e6).unwrap();
-        assert_eq!(set.get("rotary_arm.node_stiffness_lateral").unwrap(), 5e6);
-        for (_, key) in STUDY_PARAMETERS {
-            assert!(set.parameter(key).is_some(), "{key}");
+        let starts = t
+            .strip_prefix(name)
+            .is_some_and(|rest| rest.trim_start().starts_with('='));
+        if starts && current == section {
+            return i + 1;
         }
-        let e = set.set("secondary.yaw_dampr", 1.0).unwrap_err();
-        assert!(e.to_string().contains("secondary.yaw_dampr"));
-        assert!(set.set("carbody.mass", f64::NAN).is_err());
-        let e = ParameterSet::from_toml_str("[a]\nb = 3", "f.toml").unwrap_err();
-        assert!(matches!(e, LocoError::Parse { .. }));
     }
+    0
 }
+
+#[cfg(test)]
+#[path = "parameters_tests.rs"]
+mod tests;

@@ -65,6 +65,7 @@ impl RunOutput {
 }
 
 /// Where the acceleration channels are measured.
+#[derive(Debug)]
 pub(crate) struct Probes {
     /// (name, body, point from the body's centre of gravity, m, component 0..3).
     acceleration: Vec<(String, usize, [f64; 3], usize)>,
@@ -107,9 +108,9 @@ pub(crate) fn probes(s: &VehicleStructure) -> Result<Probes> {
     let p = &s.parameters;
     let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
     let side = p.get("carbody.sperling_point_lateral_offset")?;
+    let along = p.get("carbody.sperling_point_longitudinal_offset")?;
     let mut acceleration = Vec::new();
-    for (b, tag) in ["front", "rear"].iter().enumerate() {
-        let x = s.layout.bogie_x[b];
+    for (x, tag) in [(along, "front"), (-along, "rear")] {
         for (axis, component) in [("ay", Y), ("az", Z)] {
             acceleration.push((
                 format!("carbody_floor_{axis}_{tag}"),

@@ -171,16 +171,68 @@ pub fn start_distance(structure: &VehicleStructure) -> f64 {
     -structure.layout.wheelset_x[0]
 }
 
+/// What the wheel-rail contact reads from the vehicle parameters (the keys whose schema entry
+/// `affects` the contact), checked.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactParameters {
+    /// Nominal rolling radius, m.
+    pub nominal_radius: f64,
+    /// Half the distance between the nominal contact points, m.
+    pub contact_half_distance: f64,
+    /// Young's modulus of the steel, Pa.
+    pub young_modulus: f64,
+    /// Poisson's ratio of the steel.
+    pub poisson_ratio: f64,
+    /// Shear modulus of the steel, Pa, derived from the two above.
+    pub shear_modulus: f64,
+    /// Coulomb friction coefficient.
+    pub friction: f64,
+    /// Normal contact damping, N·s/m.
+    pub normal_damping: f64,
+}
+
+impl ContactParameters {
+    /// Reads and checks the contact parameters of a vehicle.
+    pub fn from_parameters(parameters: &ParameterSet) -> Result<Self> {
+        let nu = parameters.get("track.poisson_ratio")?;
+        if !(0.0..0.5).contains(&nu) {
+            return Err(LocoError::param(
+                "track.poisson_ratio",
+                format!("must be in [0, 0.5), got {nu}"),
+            ));
+        }
+        Ok(Self {
+            nominal_radius: check_positive(
+                "track.wheel_rolling_radius",
+                parameters.get("track.wheel_rolling_radius")?,
+            )?,
+            contact_half_distance: check_positive(
+                "track.contact_point_half_distance",
+                parameters.get("track.contact_point_half_distance")?,
+            )?,
+            young_modulus: check_positive(
+                "track.young_modulus",
+                parameters.get("track.young_modulus")?,
+            )?,
+            poisson_ratio: nu,
+            shear_modulus: parameters.shear_modulus()?,
+            friction: check_positive(
+                "track.wheel_rail_friction",
+                parameters.get("track.wheel_rail_friction")?,
+            )?,
+            normal_damping: crate::error::check_non_negative(
+                "contact.normal_contact_damping",
+                parameters.get("contact.normal_contact_damping")?,
+            )?,
+        })
+    }
+}
+
 /// Builds the wheel-rail contact (contact table and FASTSIM) of a scenario for a vehicle.
 pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
-    let r0 = check_positive(
-        "track.wheel_rolling_radius",
-        parameters.get("track.wheel_rolling_radius")?,
-    )?;
-    let half = check_positive(
-        "track.contact_point_half_distance",
-        parameters.get("track.contact_point_half_distance")?,
-    )?;
+    let c = ContactParameters::from_parameters(parameters)?;
+    let r0 = c.nominal_radius;
+    let half = c.contact_half_distance;
     let wheelset = WheelsetSetup {
         // Nominal contact points 2·half apart on the taping lines (SPEC §1: 1493 mm).
         back_to_back: 2.0 * (half - WheelsetSetup::default().flange_back_offset),
@@ -204,38 +256,18 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
             ..ContactTableParams::default()
         },
     )?;
-    let e = check_positive(
-        "track.young_modulus",
-        parameters.get("track.young_modulus")?,
-    )?;
-    let nu = parameters.get("track.poisson_ratio")?;
-    if !(0.0..0.5).contains(&nu) {
-        return Err(LocoError::param(
-            "track.poisson_ratio",
-            format!("must be in [0, 0.5), got {nu}"),
-        ));
-    }
     let fastsim_params = FastsimParams {
-        poisson_ratio: nu,
-        shear_modulus: check_positive(
-            "track.shear_modulus",
-            parameters.get("track.shear_modulus")?,
-        )?,
+        poisson_ratio: c.poisson_ratio,
+        shear_modulus: c.shear_modulus,
         ..scenario.fastsim
     };
     Ok(WheelRail::new(
         table,
         scenario.creep.solver(fastsim_params)?,
         WheelRailSettings {
-            friction: check_positive(
-                "track.wheel_rail_friction",
-                parameters.get("track.wheel_rail_friction")?,
-            )?,
-            contact_modulus: e / (2.0 * (1.0 - nu * nu)),
-            normal_damping: crate::error::check_non_negative(
-                "contact.normal_contact_damping",
-                parameters.get("contact.normal_contact_damping")?,
-            )?,
+            friction: c.friction,
+            contact_modulus: c.young_modulus / (2.0 * (1.0 - c.poisson_ratio * c.poisson_ratio)),
+            normal_damping: c.normal_damping,
             nominal_radius: r0,
             contact_half_distance: half,
         },

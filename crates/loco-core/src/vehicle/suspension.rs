@@ -41,6 +41,9 @@ pub struct DamperPlacement {
     pub damping: f64,
     /// Series stiffness of the damper and its joints, N/m.
     pub series_stiffness: f64,
+    /// Identical dampers working in parallel on this line (the file's `*_dampers_per_*`): they
+    /// share one set of internal states and their force is this many times one damper's.
+    pub count: f64,
 }
 
 /// All suspension elements.
@@ -59,6 +62,14 @@ impl Reader<'_> {
     }
     fn non_neg(&self, key: &str) -> Result<f64> {
         check_non_negative(key, self.0.get(key)?)
+    }
+    /// A count of elements; the parameter set has checked it is a whole number in `0..=16`.
+    fn count(&self, key: &str) -> Result<usize> {
+        Ok(self.non_neg(key)? as usize)
+    }
+    /// A count of elements the vehicle cannot do without (springs, mounts, bearings): at least 1.
+    fn count_pos(&self, key: &str) -> Result<usize> {
+        Ok(self.pos(key)? as usize)
     }
 }
 
@@ -126,6 +137,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
     let pvd_semi = r.pos("primary.vertical_damper_lateral_semi_spacing")?;
     let pvd_c = r.pos("primary.vertical_damper_damping")?;
     let pvd_k = r.pos("primary.vertical_damper_series_stiffness")?;
+    let pvd_n = r.non_neg("primary.vertical_dampers_per_axle_box")?;
     for w in 0..N_WHEELSETS {
         let b = bogie_of(w);
         let xw = layout.wheelset_x[w];
@@ -158,12 +170,13 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                 direction: [0.0, 0.0, 1.0],
                 damping: pvd_c,
                 series_stiffness: pvd_k,
+                count: pvd_n,
             });
         }
     }
 
     // Secondary suspension, per bogie.
-    let n_flexicoil = r.pos("secondary.flexicoil_springs_per_side")?.round() as usize;
+    let n_flexicoil = r.count_pos("secondary.flexicoil_springs_per_side")?;
     let fc = [
         r.pos("secondary.flexicoil_longitudinal_stiffness")?,
         r.pos("secondary.flexicoil_lateral_stiffness")?,
@@ -176,16 +189,18 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
     let fc_top = r.pos("secondary.flexicoil_top_height")?;
     let lat_c = r.pos("secondary.lateral_damper_damping")?;
     let lat_k = r.pos("secondary.lateral_damper_series_stiffness")?;
-    let n_lat = r.pos("secondary.lateral_dampers_per_bogie")?.round() as usize;
+    let n_lat = r.count("secondary.lateral_dampers_per_bogie")?;
     let lat_h = r.pos("secondary.lateral_damper_height")?;
     let yaw_c = r.pos("secondary.yaw_damper_damping")?;
     let yaw_k = r.pos("secondary.yaw_damper_series_stiffness")?;
     let yaw_semi = r.pos("secondary.yaw_damper_lateral_semi_spacing")?;
     let yaw_len = r.pos("secondary.yaw_damper_length")?;
     let yaw_h = r.pos("secondary.yaw_damper_height")?;
+    let yaw_n = r.non_neg("secondary.yaw_dampers_per_side")?;
     let svd_c = r.pos("secondary.vertical_damper_damping")?;
     let svd_k = r.pos("secondary.vertical_damper_series_stiffness")?;
     let svd_semi = r.pos("secondary.vertical_damper_lateral_semi_spacing")?;
+    let svd_n = r.non_neg("secondary.vertical_dampers_per_side")?;
     let bump_clearance = r.pos("secondary.bump_stop_clearance")?;
     let bump_k = r.pos("secondary.bump_stop_stiffness")?;
     let bump_h = r.pos("secondary.bump_stop_height")?;
@@ -242,6 +257,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                 direction: [0.0, 0.0, 1.0],
                 damping: svd_c,
                 series_stiffness: svd_k,
+                count: svd_n,
             });
             // Yaw damper: frame end at the bogie centre, carbody end one damper length outboard.
             let yy = side_y(side, yaw_semi);
@@ -259,6 +275,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                 direction: [out, 0.0, 0.0],
                 damping: yaw_c,
                 series_stiffness: yaw_k,
+                count: yaw_n,
             });
         }
         for i in 0..n_lat {
@@ -280,6 +297,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
                 direction: [0.0, 1.0, 0.0],
                 damping: lat_c,
                 series_stiffness: lat_k,
+                count: 1.0,
             });
         }
         s.bump_stops.push(BumpStop {
@@ -299,10 +317,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
     }
 
     // Drive: motor mounts, gearbox bearings, six-link coupling.
-    let mounts = r
-        .pos("traction_motor.suspension_points_per_motor")?
-        .round()
-        .max(1.0) as usize;
+    let mounts = r.count_pos("traction_motor.suspension_points_per_motor")?;
     let per_mount = |key: &str| -> Result<f64> { Ok(r.non_neg(key)? / mounts as f64) };
     let mount_k = [
         per_mount("traction_motor.suspension_stiffness_x")?,
@@ -317,7 +332,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
     let mount_dx = r.non_neg("traction_motor.suspension_point_longitudinal_offset")?;
     let mount_dy = r.non_neg("traction_motor.suspension_point_lateral_semi_spacing")?;
     let mount_dz = p.get("traction_motor.suspension_point_vertical_offset")?;
-    let bearings = r.pos("hollow_shaft.bearings_per_shaft")?;
+    let bearings = r.count_pos("hollow_shaft.bearings_per_shaft")? as f64;
     let bearing_semi = r.non_neg("hollow_shaft.bearing_semi_spacing")?;
     let bearing_radial = r.pos("hollow_shaft.bearing_radial_stiffness")?;
     let bearing_axial = r.pos("hollow_shaft.bearing_axial_stiffness")?;
