@@ -9,11 +9,13 @@
 use loco_core::dampers::Damper;
 use loco_core::track::{Channel, TrackIrregularity};
 use loco_core::vehicle::frequency_response::ResponseSolver;
-use loco_core::vehicle::linearise::least_damped;
+use loco_core::vehicle::linearise::{least_damped, LinearisationSettings};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{simulate, start_distance, Scenario, TrackSpec};
 use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_input::{scenario_track_model, TrackInputModel};
+use loco_core::vehicle::track_input::{
+    scenario_track_model, scenario_track_model_with, TrackInputModel,
+};
 use loco_core::Result;
 use nalgebra::Complex;
 use rayon::prelude::*;
@@ -181,6 +183,21 @@ fn lateral_channel_cases(name: &str, yaw: &str, channel: Channel) {
 #[test]
 fn alignment_s_low_yd2_matches_the_linear_response() {
     lateral_channel_cases("S_low", "YD2", Channel::Alignment);
+}
+
+/// A difference step that is not a positive number is refused, naming the field.
+#[test]
+fn a_non_positive_linearisation_step_is_refused() {
+    let base = scenario("S_norm", "YD2");
+    for step in [0.0, -1e-5, f64::NAN] {
+        let err = scenario_track_model_with(
+            ParameterSet::default_vehicle(),
+            &base,
+            &LinearisationSettings { step },
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("step"), "{step}: {err}");
+    }
 }
 
 #[test]

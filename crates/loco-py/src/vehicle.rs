@@ -323,6 +323,7 @@ fn linear_critical_speed(
         high: high.unwrap_or(default.high),
         tolerance: tolerance.unwrap_or(default.tolerance),
         band: band.unwrap_or(default.band),
+        ..default
     };
     run_detached(py, move || {
         let set = parameter_set(toml_text.as_deref(), &origin, &overrides)?;
