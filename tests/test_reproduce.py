@@ -28,8 +28,10 @@ STAGES = {
     "speed_sweep": ["speed_sweep.png", "speed_sweep_psd.png", "speed_sweep_peaks.png",
                     "speed_sweep.csv", "speed_sweep_summary.csv", "speed_sweep_peaks.csv"],
     "monte_carlo": ["monte_carlo.png", "monte_carlo.csv", "monte_carlo_summary.csv"],
+    "surrogate_samples": ["surrogate_samples.csv", "surrogate_samples.json"],
     "surrogate": ["parity_W_y.png", "parity_A_yb.png", "parity_W_y_used.png",
-                  "parity_A_yb_used.png", "surrogate_r2.csv", "surrogate_selection.csv"],
+                  "parity_A_yb_used.png", "surrogate_r2.csv", "surrogate_selection.csv",
+                  "surrogate_spec.csv"],
     "sensitivity": ["sobol_W_y.png", "sobol_A_yb.png", "sobol_convergence.png",
                     "sobol_indices.csv", "sobol_summary.csv", "saltelli_samples.csv"],
     "optimisation": ["pareto.png", "pareto_verification.png", "pareto_front.csv",
@@ -97,8 +99,20 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     mc = pd.read_csv(out / "monte_carlo" / "monte_carlo.csv")
     assert len(mc) == TINY.lhs_samples and set(names()) <= set(mc.columns)
     assert mc[["W_y", "A_yb"]].notna().all().all()
+    extra = pd.read_csv(out / "surrogate_samples" / "surrogate_samples.csv")
+    assert len(extra) == TINY.surrogate_samples - TINY.lhs_samples
+    assert list(extra.columns) == list(mc.columns)
+    assert extra[["W_y", "A_yb"]].notna().all().all()
+    # The extension is a second design, not a copy of the Monte Carlo's points.
+    assert not np.isin(extra[names()[0]], mc[names()[0]]).any()
     r2 = pd.read_csv(out / "surrogate" / "surrogate_r2.csv")
     assert len(r2) == 2 * len(CANDIDATES) * TINY.kfold and (r2["r2"] <= 1.0).all()
+    # The SPEC network is also scored on the Monte Carlo's samples alone (SPEC §6.3's R²).
+    spec = pd.read_csv(out / "surrogate" / "surrogate_spec.csv")
+    assert len(spec) == 2 * TINY.kfold and (spec["samples"] == TINY.lhs_samples).all()
+    meta = json.loads((out / "surrogate" / "surrogate.json").read_text())
+    assert meta["training_samples"] == TINY.surrogate_samples
+    assert meta["spec_samples"] == TINY.lhs_samples
     chosen = pd.read_csv(out / "surrogate" / "surrogate_selection.csv")
     assert (
         len(chosen) == 2 * len(CANDIDATES) and chosen.groupby("objective")["used"].sum().eq(1).all()

@@ -7,6 +7,7 @@ import pytest
 
 from loco.studies import parameters as sp
 from loco.studies.sampling import latin_hypercube, saltelli, saltelli_block_size
+from loco.studies.surrogate_samples import extension_design, training_design
 
 
 def test_six_parameters_in_si() -> None:
@@ -54,3 +55,22 @@ def test_saltelli_blocks_are_a_prefix() -> None:
         np.testing.assert_array_equal(big[1 + i], expected)
     with pytest.raises(ValueError, match="power of 2"):
         saltelli(12)
+
+
+def test_surrogate_training_design_extends_the_monte_carlo() -> None:
+    """The surrogate's samples are the Monte Carlo's Latin hypercube unchanged, followed by an
+    independent one of the rest (issue 11: the SPEC network's R² stays on the SPEC's 200)."""
+    x = training_design(30, 20, seed=3)
+    assert x.shape == (30, 6)
+    np.testing.assert_array_equal(x[:20], latin_hypercube(20, seed=3))
+    np.testing.assert_array_equal(x[20:], extension_design(30, 20, seed=3))
+    # Independent of the Monte Carlo's design, and of the Monte Carlo of the next study seed.
+    assert not np.isin(x[20:, 0], x[:20, 0]).any()
+    assert not np.isin(x[20:, 0], latin_hypercube(20, seed=4)[:, 0]).any()
+    # The extension is itself a Latin hypercube: one point in each of its 10 strata per column.
+    bounds = sp.bounds_si()
+    unit = (x[20:] - bounds[:, 0]) / (bounds[:, 1] - bounds[:, 0])
+    for column in unit.T:
+        assert sorted(np.floor(column * 10).astype(int)) == list(range(10))
+    assert training_design(10, 20, seed=3).shape == (20, 6)
+    assert extension_design(10, 20, seed=3).shape == (0, 6)

@@ -233,6 +233,7 @@ fn linear_critical_speed(
         high: high.unwrap_or(default.high),
         tolerance: tolerance.unwrap_or(default.tolerance),
         band: band.unwrap_or(default.band),
+        ..default
     };
     let speed = run_detached(py, move || {
         core_linear_critical_speed(structure, &scenario, &search)

@@ -6,12 +6,15 @@ stage finished with the same settings is skipped on a rerun, ``--force`` runs it
 1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h;
    each point the mean and 95 % interval over ``n_tracks`` synthesised tracks.
 2. ``monte_carlo``: Latin hypercube over the six parameters, W_y (S_low) and A_yb (S_high).
-3. ``surrogate``: k-fold held-out R² of the SPEC RBF network, a larger RBF network and a
-   Gaussian process; the best is the surrogate of stages 4 and 5; parity plots.
-4. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
-5. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
-6. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
-7. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
+3. ``surrogate_samples``: a second Latin hypercube, so that the surrogate learns from
+   ``surrogate_samples`` samples in all (:mod:`loco.studies.surrogate_samples`).
+4. ``surrogate``: k-fold held-out R² of the SPEC RBF network on the Monte Carlo's samples, and of
+   the SPEC network, a larger RBF network and a Gaussian process on all the training samples;
+   the best is the surrogate of stages 5 and 6; parity plots.
+5. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
+6. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
+7. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
+8. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
    (the same for every damper), with paired tests of whether each ranking is significant.
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
@@ -24,9 +27,10 @@ marker records the content hash of its outputs, and the stages that read the Mon
 record its hash in their settings, so a damaged output is never reused.
 
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
-500 m at 200 km/h; 256 Saltelli base samples for the direct indices). ``--quick`` (default, the
+500 m at 200 km/h; 256 Saltelli base samples for the direct indices), plus 100 more samples for
+the surrogate (300 in all, :mod:`loco.studies.surrogate_samples`). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
-sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``): about 1 100
+sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``): about 1 300
 runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
 """
 
@@ -42,6 +46,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 import loco
 from loco import campaign, dampers
 from loco.commands import damper_bench
@@ -52,6 +58,7 @@ from loco.studies import (
     parameter_stages,
     parameter_study,
     speed_sweep,
+    surrogate_samples,
     surrogate_validation,
 )
 from loco.studies.report import StudyRecord, save_json, write_report
@@ -68,7 +75,9 @@ class Sizes:
     """How big each stage is.
 
     ``distance`` (m) and ``speed_kmh`` (km/h) are the study's run; ``sweep_speeds_kmh`` the
-    speed sweep (km/h); ``lhs_samples`` the Monte Carlo; ``convergence_bases`` the Saltelli base
+    speed sweep (km/h); ``lhs_samples`` the Monte Carlo; ``surrogate_samples`` the samples the
+    surrogate of the Sobol' and NSGA-II stages learns from (the Monte Carlo's and more:
+    :mod:`loco.studies.surrogate_samples`); ``convergence_bases`` the Saltelli base
     sample counts N of the direct Sobol' indices (the largest is simulated: N·8 runs per
     scenario); ``surrogate_base`` the Saltelli N on the surrogate; ``kfold`` the folds of the R²;
     ``pop_size`` and ``n_gen`` NSGA-II; ``n_verify`` the Pareto points re-simulated;
@@ -81,6 +90,7 @@ class Sizes:
     speed_kmh: float
     sweep_speeds_kmh: tuple[float, ...]
     lhs_samples: int
+    surrogate_samples: int
     convergence_bases: tuple[int, ...]
     surrogate_base: int
     kfold: int
@@ -96,17 +106,21 @@ class Sizes:
         saltelli = max(self.convergence_bases) * (len(parameter_study.names()) + 2)
         n_obj = len(parameter_study.OBJECTIVES)
         fsd = 6 * (1 + fsd_comparison.LEAD_IN / self.distance)
-        parameters = n_obj * (self.lhs_samples + saltelli + self.n_verify)
+        training = max(self.lhs_samples, self.surrogate_samples)
+        parameters = n_obj * (training + saltelli + self.n_verify)
         return round(self.n_tracks * (3 * sweep + fsd) + parameters)
 
 
-#: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples).
+#: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples; the
+#: surrogate of Sobol' and NSGA-II on the Monte Carlo's 200 samples and 100 more, the count the
+#: learning curve of :data:`loco.studies.surrogate_samples.SURROGATE_SAMPLES` asks for).
 FULL = Sizes(
     name="full",
     distance=500.0,
     speed_kmh=200.0,
     sweep_speeds_kmh=tuple(float(v) for v in range(80, 301, 10)),
     lhs_samples=200,
+    surrogate_samples=surrogate_samples.SURROGATE_SAMPLES,
     convergence_bases=(16, 32, 64, 128, 256),
     surrogate_base=8192,
     kfold=5,
@@ -115,7 +129,7 @@ FULL = Sizes(
     n_verify=20,
     n_tracks=8,
 )
-#: The README's main job: < 15 min on 2 cores (about 1 100 runs of 500 m). It keeps SPEC's
+#: The README's main job: < 15 min on 2 cores (about 1 300 runs of 500 m). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
@@ -138,6 +152,7 @@ TINY = dataclasses.replace(
     distance=300.0,
     sweep_speeds_kmh=(180.0,),
     lhs_samples=16,
+    surrogate_samples=24,
     convergence_bases=(2, 4),
     surrogate_base=256,
     kfold=3,
@@ -250,10 +265,11 @@ def reproduce(
     # `--full` run after `--quick` reuses the stages whose sizes the two share.
     common = {"seed": seed, **setup.settings()}
     lhs = {**common, "lhs_samples": sizes.lhs_samples}
+    extension = {**lhs, "surrogate_samples": sizes.surrogate_samples}
     # The surrogates are chosen by k-fold cross-validation: every stage that uses them depends on
     # the folds and the candidates too.
     fitted = {
-        **lhs,
+        **extension,
         "log_target": parameter_study.LOG_TARGET,
         "kfold": sizes.kfold,
         "surrogate_selection": selection_settings(sizes.kfold),
@@ -281,6 +297,7 @@ def reproduce(
         "n_tracks": sizes.n_tracks,
     }
     mc_csv = out_dir / "monte_carlo" / "monte_carlo.csv"
+    extra_csv = out_dir / "surrogate_samples" / "surrogate_samples.csv"
     log(
         f"loco {loco.__version__}: reproducing SPEC §6 ({sizes.name}, ~{sizes.runs()} runs of "
         f"{sizes.distance:g} m) into {out_dir}"
@@ -293,14 +310,22 @@ def reproduce(
     def monte_carlo(d: Path) -> StudyRecord:
         return parameter_study.run_monte_carlo(setup, sizes.lhs_samples, seed, d)
 
-    # The Monte Carlo samples and the surrogates chosen and fitted on them, loaded and chosen once
-    # on the first stage that needs them and shared by the surrogate, Sobol' and NSGA-II stages.
+    def extra_samples(d: Path) -> StudyRecord:
+        return surrogate_samples.run_extension(
+            setup, sizes.surrogate_samples, sizes.lhs_samples, seed, d
+        )
+
+    # The surrogate's training samples (the Monte Carlo's, then the extension's) and the
+    # surrogates chosen and fitted on them, loaded and chosen once on the first stage that needs
+    # them and shared by the surrogate, Sobol' and NSGA-II stages.
     Fitted = tuple[parameter_study.FloatArray, parameter_study.FloatArray, list[Selection]]
     fitted_models: list[Fitted] = []
 
     def lhs_and_models() -> Fitted:
         if not fitted_models:
-            x, y = parameter_study.load_monte_carlo(mc_csv)
+            parts = [parameter_study.load_monte_carlo(p) for p in (mc_csv, extra_csv)]
+            x = np.vstack([p[0] for p in parts])
+            y = np.vstack([p[1] for p in parts])
             chosen = surrogate_validation.select_surrogates(x, y, n_splits=sizes.kfold, seed=seed)
             fitted_models.append((x, y, chosen))
         return fitted_models[0]
@@ -308,7 +333,13 @@ def reproduce(
     def surrogate(d: Path) -> StudyRecord:
         x, y, chosen = lhs_and_models()
         return surrogate_validation.validate_surrogate(
-            x, y, d, n_splits=sizes.kfold, seed=seed, selections=chosen
+            x,
+            y,
+            d,
+            n_splits=sizes.kfold,
+            seed=seed,
+            selections=chosen,
+            spec_samples=sizes.lhs_samples,
         )
 
     def sensitivity(d: Path) -> StudyRecord:
@@ -347,6 +378,7 @@ def reproduce(
     stages: list[tuple[str, dict[str, Any], Callable[[Path], StudyRecord]]] = [
         ("speed_sweep", speed_sweep.sweep_settings(**sweep_args), sweep),
         ("monte_carlo", lhs, monte_carlo),
+        ("surrogate_samples", extension, extra_samples),
         ("surrogate", fitted, surrogate),
         (
             "sensitivity",
@@ -388,7 +420,11 @@ def reproduce(
         log(f"stage {i}/{len(stages)}: {name}")
         if name in READS_MONTE_CARLO:
             # Rerun when the table they learn from changed (it is checked by its own marker).
-            settings = {**settings, "monte_carlo_sha256": runner.output_hash(mc_csv)}
+            settings = {
+                **settings,
+                "monte_carlo_sha256": runner.output_hash(mc_csv),
+                "surrogate_samples_sha256": runner.output_hash(extra_csv),
+            }
         record = runner.run(
             name, {**settings, "loco_version": loco.__version__}, in_campaign(stage)
         )
@@ -427,7 +463,8 @@ def _verdict(records: list[StudyRecord]) -> list[str]:
     return ["## Verdict", "", "Not available: the damper comparison stage wrote no table.", ""]
 
 
-#: Stages that learn from ``monte_carlo/monte_carlo.csv``.
+#: Stages that learn from ``monte_carlo/monte_carlo.csv`` and
+#: ``surrogate_samples/surrogate_samples.csv``.
 READS_MONTE_CARLO = ("surrogate", "sensitivity", "optimisation")
 
 PREAMBLE = (

@@ -49,6 +49,7 @@ __all__ = [
     "fit_surrogates",
     "load_monte_carlo",
     "run_monte_carlo",
+    "samples_frame",
     "surrogate_objectives",
 ]
 
@@ -145,7 +146,9 @@ def axis_label(objective: Objective) -> str:
     return f"{objective.label}{unit}, {objective.scenario}"
 
 
-def _samples_frame(x: FloatArray, y: FloatArray) -> pd.DataFrame:
+def samples_frame(x: FloatArray, y: FloatArray) -> pd.DataFrame:
+    """The samples ``x`` (n, 6) in SI and in the study's units, and the objectives ``y`` (n, 2),
+    as the table ``monte_carlo.csv`` holds them (:func:`load_monte_carlo` reads it)."""
     frame = pd.DataFrame(x, columns=names())
     units = to_study_units(x)
     for j, p in enumerate(STUDY_PARAMETERS):
@@ -194,7 +197,7 @@ def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path)
     ``monte_carlo.json``."""
     x = latin_hypercube(n_samples, seed=seed)
     y = setup.evaluator()(x, names())
-    frame = _samples_frame(x, y)
+    frame = samples_frame(x, y)
     summary = frame[labels()].describe().T.reset_index(names="objective")
     summary["n_failed"] = [int(np.isnan(y[:, j]).sum()) for j in range(y.shape[1])]
     settings = {

@@ -9,13 +9,14 @@
 //!
 //! All four matrices are central finite differences of the full nonlinear right-hand side and of
 //! the recording function about the equilibrium, as [`super::linearise`] forms `A` for the
-//! eigenvalue analysis (same perturbation; the rail inputs are perturbed by 1e-7 m and 1e-7 m/m,
-//! small against the 0.1 mm contact table grid). Discrete damper states (a frequency valve) stay
+//! eigenvalue analysis, with the same [`LinearisationSettings`] (the rail inputs are perturbed by
+//! the same step in m and m/m). Discrete damper states (a frequency valve) stay
 //! at their start state, as in the eigenvalue analysis: an FSD is linearised with its valve in the
 //! `start_closed` position.
 
 use super::integrator::OdeSystem;
 use super::layout::N_WHEELSETS;
+use super::linearise::LinearisationSettings;
 use super::run::{names_of, probes, sample};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
@@ -24,9 +25,6 @@ use crate::track::RailIrregularity;
 
 /// Rail inputs per wheelset (positions then slopes).
 pub const RAIL_INPUTS: usize = 8;
-
-/// Relative perturbation of states and inputs (see [`super::linearise`]).
-const PERTURBATION: f64 = 1e-7;
 
 /// The linearised vehicle with the rails as inputs; matrices row-major.
 #[derive(Debug, Clone)]
@@ -81,8 +79,17 @@ fn evaluate(
 }
 
 /// Linearises `system` about its static equilibrium at its (constant) speed with the rails as
-/// inputs. The system's own track is not read.
+/// inputs, with the default [`LinearisationSettings`]. The system's own track is not read.
 pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> {
+    track_input_model_with(system, &LinearisationSettings::default())
+}
+
+/// [`track_input_model`] with the given settings.
+pub fn track_input_model_with(
+    system: &mut VehicleSystem,
+    settings: &LinearisationSettings,
+) -> Result<TrackInputModel> {
+    let step = settings.checked()?.step;
     let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
     let probes = probes(&system.structure)?;
     let outputs = names_of(&system.structure, &probes);
@@ -95,7 +102,7 @@ pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> 
     system.rail_inputs = Some(perfect);
     let mut y = y0.clone();
     for j in 0..n {
-        let h = PERTURBATION * (1.0 + y0[j].abs());
+        let h = step * (1.0 + y0[j].abs());
         y[j] = y0[j] + h;
         evaluate(system, &probes, &y, &mut plus, &mut z_plus);
         y[j] = y0[j] - h;
@@ -111,7 +118,7 @@ pub fn track_input_model(system: &mut VehicleSystem) -> Result<TrackInputModel> 
     for w in 0..N_WHEELSETS {
         for k in 0..RAIL_INPUTS {
             let col = w * RAIL_INPUTS + k;
-            let h = PERTURBATION;
+            let h = step;
             let mut rails = perfect;
             *rail_field(&mut rails[w], k) = h;
             system.rail_inputs = Some(rails);
@@ -151,7 +158,16 @@ pub fn scenario_track_model(
     vehicle: impl super::structure::IntoVehicle,
     scenario: &super::scenario::Scenario,
 ) -> Result<TrackInputModel> {
+    scenario_track_model_with(vehicle, scenario, &LinearisationSettings::default())
+}
+
+/// [`scenario_track_model`] with the given settings.
+pub fn scenario_track_model_with(
+    vehicle: impl super::structure::IntoVehicle,
+    scenario: &super::scenario::Scenario,
+    settings: &LinearisationSettings,
+) -> Result<TrackInputModel> {
     let vehicle = super::scenario::PerfectTrackVehicle::new(vehicle, scenario)?;
     let mut system = vehicle.system(scenario.speed)?;
-    track_input_model(&mut system)
+    track_input_model_with(&mut system, settings)
 }
