@@ -3,7 +3,7 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, final
 
 import numpy as _np
@@ -432,6 +432,7 @@ class RunScenario:
         gauge: float = 1.435,
         gauge_height: float = 0.016,
         rail_inclination: float | None = None,
+        curve: str | Sequence[Mapping[str, float | str]] | None = None,
     ) -> RunScenario: ...
     @property
     def speed(self) -> float: ...

@@ -8,6 +8,8 @@
 
 from __future__ import annotations
 
+import os
+from collections.abc import Mapping, Sequence
 from dataclasses import InitVar, dataclass, field, fields
 from typing import TYPE_CHECKING, Any
 
@@ -62,6 +64,11 @@ class Scenario:
     the grid of any of them. (``creep_table`` was replaced by ``creep="table"``.)
     ``lead_in`` (m) is run before the recorded ``distance`` and not recorded, so that start
     transients (an FSD valve leaving its defined start state) settle first; 0 as in the study.
+    ``curve`` is the designed alignment the track follows (None: straight): a CSV file of
+    sections or a list of dicts, each ``kind`` (``"straight"``, ``"transition"``, ``"curve"``)
+    and ``length_m``; a curve adds ``radius_m``, ``cant_mm`` and ``direction`` (``"left"`` or
+    ``"right"``), a transition (clothoid, linear cant run-off) may give ``cant_run_off_m``.
+    s = 0 is where the leading wheelset starts; irregularities come on top.
     """
 
     scenario: str | None = None
@@ -81,6 +88,7 @@ class Scenario:
     creep: str = "fastsim"
     initial_lateral_offset: float = 0.0
     lead_in: float = 0.0
+    curve: str | Sequence[Mapping[str, float | str]] | None = None
     creep_table: InitVar[object] = None
     """Removed: refused with :class:`loco.ParameterError` naming ``creep``."""
 
@@ -149,7 +157,17 @@ class Scenario:
             creep=str(self.creep),
             initial_lateral_offset=float(self.initial_lateral_offset),
             lead_in=float(self.lead_in),
+            curve=None if self.curve is None else _curve_argument(self.curve),
         )
+
+
+def _curve_argument(
+    curve: str | Sequence[Mapping[str, float | str]],
+) -> str | list[dict[str, float | str]]:
+    """The ``curve`` setting for the native scenario: a CSV path, or the sections as dicts."""
+    if isinstance(curve, (str, os.PathLike)):
+        return os.fspath(curve)
+    return [dict(section) for section in curve]
 
 
 #: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.

@@ -5,10 +5,13 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
+use loco_core::track::design_input::SectionSetting;
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::scenario::Scenario;
+use loco_core::vehicle::scenario_settings::CurveSetting;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -29,7 +32,7 @@ impl PyRunScenario {
         spectrum="cn-hsr".to_string(), seed=0, band=(2.0, 200.0), yaw_damper=None, step=1e-3,
         output_rate=500.0, fastsim_grid=(10, 10), creep="fastsim".to_string(), initial_lateral_offset=0.0,
         lead_in=0.0,
-        gauge=1.435, gauge_height=0.016, rail_inclination=None
+        gauge=1.435, gauge_height=0.016, rail_inclination=None, curve=None
     ))]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -52,6 +55,7 @@ impl PyRunScenario {
         gauge: f64,
         gauge_height: f64,
         rail_inclination: Option<f64>,
+        curve: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         // A given track takes the place of `track_kind`; the synthesis settings only reach a
         // synthesised track (the Python layer always passes them).
@@ -78,6 +82,7 @@ impl PyRunScenario {
             gauge: Some(gauge),
             gauge_height: Some(gauge_height),
             rail_inclination,
+            curve: curve.map(|c| curve_setting(&c)).transpose()?,
             ..ScenarioSettings::default()
         };
         let given = GivenObjects {
@@ -130,4 +135,54 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRunScenario>()?;
     m.add_function(wrap_pyfunction!(creep_model_names, m)?)?;
     Ok(())
+}
+
+/// The `curve` keyword: a CSV path, or a sequence of dicts with the fields of
+/// [`SectionSetting`] (`kind`, `length_m`, `radius_m`, `cant_mm`, `direction`,
+/// `cant_run_off_m`); errors name the section and the field.
+fn curve_setting(curve: &Bound<'_, PyAny>) -> PyResult<CurveSetting> {
+    if let Ok(path) = curve.extract::<String>() {
+        return Ok(CurveSetting::File(path));
+    }
+    let bad = |name: String, reason: String| to_py_err(loco_core::LocoError::param(name, reason));
+    let mut sections = Vec::new();
+    for (i, item) in curve.try_iter()?.enumerate() {
+        let item = item?;
+        let field = |name: &str| format!("curve section {} ({name})", i + 1);
+        let dict = item.cast::<PyDict>().map_err(|_| {
+            bad(
+                format!("curve section {}", i + 1),
+                "expected a dict of kind, length_m, radius_m, cant_mm, direction, cant_run_off_m"
+                    .into(),
+            )
+        })?;
+        let mut s = SectionSetting::default();
+        for (key, value) in dict.iter() {
+            let key: String = key.extract()?;
+            let number = || {
+                value
+                    .extract::<f64>()
+                    .map_err(|_| bad(field(&key), "expected a number".into()))
+            };
+            let text = || {
+                value
+                    .extract::<String>()
+                    .map_err(|_| bad(field(&key), "expected a string".into()))
+            };
+            match key.as_str() {
+                "kind" => s.kind = text()?,
+                "direction" => s.direction = Some(text()?),
+                "length_m" => s.length_m = number()?,
+                "radius_m" => s.radius_m = Some(number()?),
+                "cant_mm" => s.cant_mm = Some(number()?),
+                "cant_run_off_m" => s.cant_run_off_m = Some(number()?),
+                _ => return Err(bad(field(&key), "unknown field".into())),
+            }
+        }
+        if !dict.contains("length_m")? {
+            return Err(bad(field("length_m"), "missing".into()));
+        }
+        sections.push(s);
+    }
+    Ok(CurveSetting::Sections(sections))
 }

@@ -230,3 +230,42 @@ mod tests {
         assert!(e.contains("curve section 1 (cant_mm)"), "{e}");
     }
 }
+
+#[cfg(test)]
+mod study_file_tests {
+    use crate::vehicle::scenario_settings::ScenarioSettings;
+    use std::path::Path;
+
+    #[test]
+    fn a_study_file_states_curves_as_tables_or_a_csv_path() {
+        let text = r#"
+            name = "S_norm"
+            speed_kmh = 120.0
+            distance = 100.0
+            track = "perfect"
+            [[curve]]
+            kind = "transition"
+            length_m = 50.0
+            [[curve]]
+            kind = "curve"
+            length_m = 200.0
+            radius_m = 800.0
+            cant_mm = 110.0
+            direction = "left"
+        "#;
+        let settings: ScenarioSettings = toml::from_str(text).unwrap();
+        let scenario = settings
+            .resolve(Default::default(), Path::new("."))
+            .unwrap();
+        assert_eq!(scenario.curve.len(), 2);
+        let missing: ScenarioSettings = toml::from_str(
+            "name = \"S_norm\"\nspeed = 10.0\ndistance = 10.0\ncurve = \"no-such.csv\"",
+        )
+        .unwrap();
+        let e = missing
+            .resolve(Default::default(), Path::new("."))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("no-such.csv"), "{e}");
+    }
+}
