@@ -3,7 +3,7 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, final
 
 import numpy as _np
@@ -420,7 +420,16 @@ class RunScenario:
 
     def __new__(
         cls,
-        settings: dict[str, bool | int | float | str | tuple[float, float] | tuple[int, int]]
+        settings: dict[
+            str,
+            bool
+            | int
+            | float
+            | str
+            | tuple[float, float]
+            | tuple[int, int]
+            | Sequence[Mapping[str, float | str]],
+        ]
         | None = None,
         *,
         wheel: Profile | None = None,

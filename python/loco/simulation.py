@@ -9,6 +9,7 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -99,7 +100,12 @@ class Scenario:
     ~0.5 s). ``fastsim_grid`` is the grid of any of them. ``lead_in`` (m) is run before the
     recorded ``distance`` and not recorded, so that start transients (an FSD valve leaving its
     defined start state) settle first; 0 as in the study. ``gauge`` (m), ``gauge_height`` (m below
-    the rail top) and ``rail_inclination`` (rad) set the track. ``perfect_track`` and
+    the rail top) and ``rail_inclination`` (rad) set the track. ``curve`` is the designed
+    alignment the track follows (default: straight): a CSV file of sections or a list of dicts,
+    each ``kind`` (``"straight"``, ``"transition"``, ``"curve"``) and ``length_m``; a curve adds
+    ``radius_m``, ``cant_mm`` and ``direction`` (``"left"`` or ``"right"``), a transition
+    (clothoid, linear cant run-off) may give ``cant_run_off_m``; s = 0 is where the leading
+    wheelset starts; irregularities come on top. ``perfect_track`` and
     ``creep_table`` were replaced (``track="perfect"``, ``creep="table"``): refused with
     :class:`loco.ParameterError` saying so.
     """
@@ -124,6 +130,7 @@ class Scenario:
     gauge: float = _Setting()  # type: ignore[assignment]
     gauge_height: float = _Setting()  # type: ignore[assignment]
     rail_inclination: float = _Setting()  # type: ignore[assignment]
+    curve: str | Sequence[Mapping[str, float | str]] | None = _Setting()  # type: ignore[assignment]
 
     def __init__(
         self,
@@ -148,6 +155,7 @@ class Scenario:
         gauge: float | None = None,
         gauge_height: float | None = None,
         rail_inclination: float | None = None,
+        curve: str | os.PathLike[str] | Sequence[Mapping[str, float | str]] | None = None,
         **replaced: object,
     ) -> None:
         for name in replaced:
@@ -264,6 +272,15 @@ _CHECKS: dict[str, Any] = {
     },
     "yaw_damper": _name_or_path,
 }
+
+
+def _curve_argument(
+    curve: str | Sequence[Mapping[str, float | str]],
+) -> str | list[dict[str, float | str]]:
+    """The ``curve`` setting for the native scenario: a CSV path, or the sections as dicts."""
+    if isinstance(curve, (str, os.PathLike)):
+        return os.fspath(curve)
+    return [dict(section) for section in curve]
 
 
 #: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.

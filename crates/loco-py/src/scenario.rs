@@ -5,9 +5,11 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
+use loco_core::track::design_input::SectionSetting;
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::presets::SCENARIOS;
 use loco_core::vehicle::scenario::Scenario;
+use loco_core::vehicle::scenario_settings::CurveSetting;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use loco_core::LocoError;
 use pyo3::prelude::*;
@@ -19,7 +21,7 @@ use std::sync::Arc;
 /// (the study file's `[scenario]` keys, same names, types and checks: `name`, `wheel`, `rail`,
 /// `speed`, `distance`, `lead_in`, `track`, `spectrum`, `seed`, `band`, `yaw_damper`,
 /// `fsd_trigger`, `step`, `output_rate`, `fastsim_grid`, `creep`, `initial_lateral_offset`,
-/// `gauge`, `gauge_height`, `rail_inclination`), every one optional (`scenario_defaults()`), and
+/// `gauge`, `gauge_height`, `rail_inclination`, `curve`), every one optional (`scenario_defaults()`), and
 /// the objects a caller holds instead of names (wheel and rail profiles, a track, a damper).
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
 pub struct PyRunScenario {
@@ -68,10 +70,16 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
 /// The settings of a Python dict, checked as the study file's `[scenario]` section is.
 fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSettings> {
     let mut table = toml::Table::new();
+    let mut curve = None;
     if let Some(settings) = settings {
         for (key, value) in settings.iter() {
             let key: String = key.extract()?;
             if value.is_none() {
+                continue;
+            }
+            // Sections are dicts, which the study file writes as `[[scenario.curve]]` tables.
+            if key == "curve" {
+                curve = Some(curve_setting(&value)?);
                 continue;
             }
             let v = toml_value(&key, &value)?;
@@ -79,14 +87,21 @@ fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSetting
         }
     }
     let read = |table: toml::Table| toml::Value::Table(table).try_into::<ScenarioSettings>();
-    read(table.clone()).map_err(|e| {
-        // Name the setting: the first one refused on its own (serde's message names the type).
-        let key = table
-            .iter()
-            .find(|(k, v)| read(toml::Table::from_iter([((*k).clone(), (*v).clone())])).is_err())
-            .map_or("scenario", |(k, _)| k.as_str());
-        to_py_err(LocoError::param(key, e.message().to_string()))
-    })
+    read(table.clone())
+        .map_err(|e| {
+            // Name the setting: the first one refused on its own (serde's message names the type).
+            let key = table
+                .iter()
+                .find(|(k, v)| {
+                    read(toml::Table::from_iter([((*k).clone(), (*v).clone())])).is_err()
+                })
+                .map_or("scenario", |(k, _)| k.as_str());
+            to_py_err(LocoError::param(key, e.message().to_string()))
+        })
+        .map(|settings| ScenarioSettings {
+            curve: curve.or(settings.curve.clone()),
+            ..settings
+        })
 }
 
 #[pymethods]
@@ -197,4 +212,54 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scenario_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_presets, m)?)?;
     Ok(())
+}
+
+/// The `curve` keyword: a CSV path, or a sequence of dicts with the fields of
+/// [`SectionSetting`] (`kind`, `length_m`, `radius_m`, `cant_mm`, `direction`,
+/// `cant_run_off_m`); errors name the section and the field.
+fn curve_setting(curve: &Bound<'_, PyAny>) -> PyResult<CurveSetting> {
+    if let Ok(path) = curve.extract::<String>() {
+        return Ok(CurveSetting::File(path));
+    }
+    let bad = |name: String, reason: String| to_py_err(loco_core::LocoError::param(name, reason));
+    let mut sections = Vec::new();
+    for (i, item) in curve.try_iter()?.enumerate() {
+        let item = item?;
+        let field = |name: &str| format!("curve section {} ({name})", i + 1);
+        let dict = item.cast::<PyDict>().map_err(|_| {
+            bad(
+                format!("curve section {}", i + 1),
+                "expected a dict of kind, length_m, radius_m, cant_mm, direction, cant_run_off_m"
+                    .into(),
+            )
+        })?;
+        let mut s = SectionSetting::default();
+        for (key, value) in dict.iter() {
+            let key: String = key.extract()?;
+            let number = || {
+                value
+                    .extract::<f64>()
+                    .map_err(|_| bad(field(&key), "expected a number".into()))
+            };
+            let text = || {
+                value
+                    .extract::<String>()
+                    .map_err(|_| bad(field(&key), "expected a string".into()))
+            };
+            match key.as_str() {
+                "kind" => s.kind = text()?,
+                "direction" => s.direction = Some(text()?),
+                "length_m" => s.length_m = number()?,
+                "radius_m" => s.radius_m = Some(number()?),
+                "cant_mm" => s.cant_mm = Some(number()?),
+                "cant_run_off_m" => s.cant_run_off_m = Some(number()?),
+                _ => return Err(bad(field(&key), "unknown field".into())),
+            }
+        }
+        if !dict.contains("length_m")? {
+            return Err(bad(field("length_m"), "missing".into()));
+        }
+        sections.push(s);
+    }
+    Ok(CurveSetting::Sections(sections))
 }

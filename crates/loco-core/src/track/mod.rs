@@ -8,11 +8,14 @@
 //!   derivatives along the track. Each wheelset calls it at its own distance, so the time
 //!   delays between axles follow from the geometry.
 
+pub mod design;
+pub mod design_input;
 pub mod irregularity;
 pub mod measured;
 pub mod spectrum;
 pub mod synthesis;
 
+pub use design::{CurveDirection, DesignPoint, DesignSection, TrackDesign};
 pub use irregularity::{RailIrregularity, TrackIrregularity, TrackOrigin};
 pub use measured::{load_csv, parse_csv, MeasuredParams};
 pub use spectrum::{Channel, TrackSpectrum};

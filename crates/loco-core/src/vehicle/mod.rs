@@ -55,6 +55,7 @@ pub mod simulation;
 pub mod statics;
 pub mod structure;
 pub mod suspension;
+pub mod track_frame;
 pub mod track_input;
 pub mod track_limits;
 pub mod units;

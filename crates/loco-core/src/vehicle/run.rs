@@ -342,7 +342,14 @@ pub(crate) fn sample(
         push(match quantity {
             DamperQuantity::Force => system.damper_forces[i],
             DamperQuantity::Valve => system.discrete[i].scale_factor,
-            DamperQuantity::Stroke => system.dampers[i].stroke(&system.body_states).0,
+            DamperQuantity::Stroke => {
+                // On a curve the dampers act in the reference frame (`track_frame`).
+                let states = match system.curve {
+                    Some(_) => &system.frame_work.states,
+                    None => &system.body_states,
+                };
+                system.dampers[i].stroke(states).0
+            }
         });
     }
 }

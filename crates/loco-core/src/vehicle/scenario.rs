@@ -8,6 +8,7 @@ use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
 use super::structure::{IntoVehicle, VehicleStructure};
+use super::track_frame::CurvedTrack;
 use super::track_limits::TrackLimits;
 use super::wheel_rail::{WheelRail, WheelRailSettings};
 use crate::contact::builtin::builtin_profile;
@@ -18,7 +19,7 @@ use crate::contact::setup::{ContactSearchParams, TrackSetup, WheelsetSetup};
 use crate::contact::table::{ContactTable, ContactTableParams};
 use crate::dampers::Damper;
 use crate::error::{check_positive, LocoError, Result};
-use crate::track::{synthesize, SynthesisParams, TrackIrregularity};
+use crate::track::{synthesize, DesignSection, SynthesisParams, TrackDesign, TrackIrregularity};
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
@@ -72,6 +73,9 @@ pub struct Scenario {
     pub creep: CreepModel,
     /// Lateral disturbance of every wheelset at t = 0, m (0: start from equilibrium).
     pub initial_lateral_offset: f64,
+    /// Designed alignment and cant the track frames follow (`track::design`), s = 0 where the
+    /// leading wheelset starts; empty: straight track.
+    pub curve: Vec<DesignSection>,
 }
 
 impl Scenario {
@@ -95,6 +99,7 @@ impl Scenario {
             fastsim: FastsimParams::default(),
             creep: CreepModel::Fastsim,
             initial_lateral_offset: 0.0,
+            curve: Vec::new(),
         })
     }
 
@@ -274,6 +279,25 @@ pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resul
     ))
 }
 
+/// Checks and resolves curve sections for a wheel-rail contact: the cant's roll uses the
+/// contact's nominal half distance b, and the smallest radius is the one the table's largest
+/// rolling radius difference follows in pure rolling ([`crate::track::design::min_radius_of`]).
+pub fn curve_design(wheel_rail: &WheelRail, sections: &[DesignSection]) -> Result<TrackDesign> {
+    let (lo, hi) = wheel_rail.table().y_range();
+    let n = ((hi - lo) / 1e-4).round() as usize;
+    let ys: Vec<f64> = (0..=n)
+        .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+        .collect();
+    let largest = wheel_rail
+        .table()
+        .rolling_radius_difference(&ys)
+        .into_iter()
+        .fold(0.0, |a: f64, d| a.max(d.abs()));
+    let b = wheel_rail.contact_half_distance();
+    let min_radius = crate::track::design::min_radius_of(largest, wheel_rail.centred_radius(), b);
+    TrackDesign::new(sections, b, min_radius)
+}
+
 /// Builds the track of a scenario (synthesised ones get the run's length).
 pub fn build_track(scenario: &Scenario, structure: &VehicleStructure) -> Result<TrackIrregularity> {
     let length = scenario.track_length(structure);
@@ -322,6 +346,13 @@ pub fn simulate_prepared(
         scenario.yaw_damper.as_ref(),
         scenario.run.step,
     )?;
+    if !scenario.curve.is_empty() {
+        let design = curve_design(&system.wheel_rail, &scenario.curve)?;
+        system.curve = Some(Arc::new(CurvedTrack::new(
+            Arc::new(design),
+            &system.structure,
+        )));
+    }
     let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;
     if scenario.initial_lateral_offset != 0.0 {
         // On the rails: rise and roll follow the contact table, as in the critical-speed ramp.

@@ -19,6 +19,8 @@ use crate::contact::profile_io::load_profile;
 use crate::contact::setup::TrackSetup;
 use crate::dampers::{Damper, FsdTrigger};
 use crate::error::{LocoError, Result};
+use crate::track::design::DesignSection;
+use crate::track::design_input::{load_sections_csv, resolve_sections, SectionSetting};
 use crate::track::{load_csv, MeasuredParams, SynthesisParams, TrackIrregularity, TrackSpectrum};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -76,6 +78,9 @@ pub struct ScenarioSettings {
     pub gauge_height: Option<f64>,
     /// Rail inclination, rad.
     pub rail_inclination: Option<f64>,
+    /// Designed curves: a list of sections (`track::design_input`) or the path of a CSV file of
+    /// them (relative to the settings' directory); none: straight track.
+    pub curve: Option<CurveSetting>,
     /// Batches only, not part of a [`Scenario`]: a track per sample (seed + sample index)
     /// instead of one shared track. [`ScenarioSettings::resolve`] ignores it.
     pub per_sample_track: Option<bool>,
@@ -86,6 +91,24 @@ pub const SYNTHETIC: &str = "synthetic";
 
 /// The `track` setting of a perfect (irregularity-free) track.
 pub const PERFECT: &str = "perfect";
+
+/// The `curve` setting: sections in place, or a CSV file of them.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(untagged)]
+pub enum CurveSetting {
+    File(String),
+    Sections(Vec<SectionSetting>),
+}
+
+impl CurveSetting {
+    /// The sections, a file relative to `dir`.
+    pub fn sections(&self, dir: &Path) -> Result<Vec<DesignSection>> {
+        match self {
+            Self::File(path) => resolve_sections(&load_sections_csv(&dir.join(path))?),
+            Self::Sections(list) => resolve_sections(list),
+        }
+    }
+}
 
 /// Profiles, track and yaw damper a front end already holds as objects. Each takes the place of
 /// the setting of the same name; giving both is refused.
@@ -150,6 +173,7 @@ impl ScenarioSettings {
             gauge_height: Some(track.gauge_height),
             rail_inclination: Some(track.rail_inclination),
             per_sample_track: Some(false),
+            curve: None,
         }
     }
 
@@ -231,6 +255,10 @@ impl ScenarioSettings {
                 self.initial_lateral_offset,
                 defaults.initial_lateral_offset,
             ),
+            curve: match &self.curve {
+                Some(c) => c.sections(dir)?,
+                None => Vec::new(),
+            },
         };
         scenario.track_setup.validate()?;
         scenario.validate()?;

@@ -16,11 +16,12 @@ use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::OdeSystem;
 use super::layout::{
-    coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF, N_WHEELSETS, X,
-    Y,
+    body_wheelset, coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF,
+    N_WHEELSETS, X, Y, YAW,
 };
 use super::run_statistics::RunStatistics;
 use super::structure::VehicleStructure;
+use super::track_frame::{CurvedTrack, FrameWork};
 use super::wheel_rail::{ContactMode, WheelForces, WheelRail};
 use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
 use crate::error::{LocoError, Result};
@@ -129,6 +130,10 @@ pub struct VehicleSystem {
     /// Rail irregularities each wheelset sees in place of the track look-up (`None` in runs): the
     /// track as an input of the linearisation ([`super::track_input`]).
     pub rail_inputs: Option<[RailIrregularity; N_WHEELSETS]>,
+    /// The designed curves the track frames follow (`None`: straight track, no frame terms).
+    pub curve: Option<Arc<CurvedTrack>>,
+    /// The curve terms' workspace (reference-frame states, the design at every body).
+    pub(crate) frame_work: Box<FrameWork>,
     /// Number of continuous states.
     n_states: usize,
     /// First error met inside a right-hand side (reported after the step).
@@ -181,6 +186,8 @@ impl VehicleSystem {
             start_distance,
             contact_mode: ContactMode::Rolling,
             rail_inputs: None,
+            curve: None,
+            frame_work: Box::default(),
             n_states: offset,
             error: None,
             statistics: RunStatistics::default(),
@@ -203,6 +210,12 @@ impl VehicleSystem {
         self.speed.speed_at(t)
     }
 
+    /// Track distance of the vehicle origin at time `t` (s), m.
+    #[inline]
+    pub fn vehicle_distance(&self, t: f64) -> f64 {
+        self.start_distance + self.speed.distance_at(t)
+    }
+
     /// Track distance of wheelset `w` at time `t` (s), m.
     #[inline]
     pub fn wheelset_distance(&self, w: usize, t: f64) -> f64 {
@@ -218,21 +231,43 @@ impl VehicleSystem {
         self.structure.body_states(q, qd, &mut self.body_states);
         self.wrenches = [[0.0; 6]; N_BODIES];
         let speed = self.speed_at(t);
+        // On a curve the suspension sees the bodies in the reference frame (`track_frame`).
+        let s_r = self.vehicle_distance(t);
+        if let Some(curve) = &self.curve {
+            curve.prepare(&self.structure, s_r, speed, q, qd, &mut self.frame_work);
+        }
+        let states = match self.curve {
+            Some(_) => &self.frame_work.states,
+            None => &self.body_states,
+        };
         self.structure
-            .add_structural_forces(&self.body_states, speed, &mut self.wrenches);
+            .add_structural_forces(states, speed, &mut self.wrenches);
         // Dampers carry no static force: the static search leaves them out.
         let statics = matches!(self.contact_mode, ContactMode::Held { .. });
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
-            let (x, v) = damper.stroke(&self.body_states);
+            let (x, v) = damper.stroke(states);
             let n = damper.n_states();
             let o = damper.state_offset;
             let mut rates = [0.0; MAX_STATES];
             let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
             dy[o..o + n].copy_from_slice(&rates[..n]);
-            damper.apply(&self.body_states, force, &mut self.wrenches);
+            damper.apply(states, force, &mut self.wrenches);
             self.damper_forces[i] = force;
         }
+        if let Some(curve) = &self.curve {
+            curve.add_frame_forces(
+                speed,
+                &self.frame_work,
+                &self.body_states,
+                &mut self.wrenches,
+            );
+        }
         for w in 0..N_WHEELSETS {
+            // The wheelset's absolute yaw rate includes its track frame's (rolling on a curve).
+            let frame_yaw = self.curve.as_ref().map_or(0.0, |c| {
+                c.wheelset_frame_yaw_rate(speed, &self.frame_work, w)
+            });
+            self.body_states.velocity[body_wheelset(w)][YAW] += frame_yaw;
             let rails = if let Some(inputs) = &self.rail_inputs {
                 inputs[w]
             } else if statics {
@@ -250,6 +285,7 @@ impl VehicleSystem {
                 &mut self.wrenches,
                 &mut self.wheel_forces[w],
             );
+            self.body_states.velocity[body_wheelset(w)][YAW] -= frame_yaw;
             if let Err(e) = result {
                 self.error.get_or_insert(e);
             }
@@ -348,10 +384,20 @@ impl OdeSystem for VehicleSystem {
         let (q, rest) = y.split_at(N_DOF);
         self.structure
             .body_states(q, &rest[..N_DOF], &mut self.body_states);
+        let speed = self.speed_at(t);
+        let s_r = self.vehicle_distance(t);
+        if let Some(curve) = &self.curve {
+            let qd = &rest[..N_DOF];
+            curve.prepare(&self.structure, s_r, speed, q, qd, &mut self.frame_work);
+        }
+        let states = match self.curve {
+            Some(_) => &self.frame_work.states,
+            None => &self.body_states,
+        };
         // Dampers carry no static force: the static search leaves them out.
         let statics = matches!(self.contact_mode, ContactMode::Held { .. });
         for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
-            let (x, v) = damper.stroke(&self.body_states);
+            let (x, v) = damper.stroke(states);
             let o = damper.state_offset;
             let n = damper.n_states();
             damper

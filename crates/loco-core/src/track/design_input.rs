@@ -1,0 +1,271 @@
+//! Curve sections as front ends state them: named fields with their units (a `[[scenario.curve]]`
+//! table of the batch study file, a Python dict, a row of a CSV file), turned into
+//! [`DesignSection`]s with errors naming the section and the field.
+//!
+//! Fields: `kind` (`straight`, `transition` or `curve`), `length_m`; for a curve `radius_m`,
+//! `cant_mm` (default 0) and `direction` (`left` or `right`); for a transition optionally
+//! `cant_run_off_m` (default: its length). The CSV file has these names as its header (any
+//! order, empty cells for fields a section does not use).
+
+use super::design::{CurveDirection, DesignSection};
+use crate::error::{LocoError, Result};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// One section in named fields (units in the names).
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionSetting {
+    pub kind: String,
+    pub length_m: f64,
+    pub radius_m: Option<f64>,
+    pub cant_mm: Option<f64>,
+    pub direction: Option<String>,
+    pub cant_run_off_m: Option<f64>,
+}
+
+fn field(i: usize, name: &str) -> String {
+    format!("curve section {} ({name})", i + 1)
+}
+
+impl SectionSetting {
+    /// The section, checked for the fields its kind needs and allows; `i` is its 0-based index.
+    pub fn resolve(&self, i: usize) -> Result<DesignSection> {
+        let refuse = |name: &str, given: bool| {
+            if given {
+                Err(LocoError::param(
+                    field(i, name),
+                    format!("not used by a {} section", self.kind),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        match self.kind.as_str() {
+            "straight" => {
+                refuse("radius_m", self.radius_m.is_some())?;
+                refuse("cant_mm", self.cant_mm.is_some())?;
+                refuse("direction", self.direction.is_some())?;
+                refuse("cant_run_off_m", self.cant_run_off_m.is_some())?;
+                Ok(DesignSection::Straight {
+                    length: self.length_m,
+                })
+            }
+            "transition" => {
+                refuse("radius_m", self.radius_m.is_some())?;
+                refuse("cant_mm", self.cant_mm.is_some())?;
+                refuse("direction", self.direction.is_some())?;
+                Ok(DesignSection::Transition {
+                    length: self.length_m,
+                    cant_run_off: self.cant_run_off_m,
+                })
+            }
+            "curve" => {
+                refuse("cant_run_off_m", self.cant_run_off_m.is_some())?;
+                let radius = self.radius_m.ok_or_else(|| {
+                    LocoError::param(field(i, "radius_m"), "missing: a curve needs its radius")
+                })?;
+                let direction = self.direction.as_deref().ok_or_else(|| {
+                    LocoError::param(field(i, "direction"), "missing: left or right")
+                })?;
+                Ok(DesignSection::Curve {
+                    length: self.length_m,
+                    radius,
+                    cant: self.cant_mm.unwrap_or(0.0) * 1e-3,
+                    direction: CurveDirection::from_name(direction, &field(i, "direction"))?,
+                })
+            }
+            other => Err(LocoError::param(
+                field(i, "kind"),
+                format!("expected straight, transition or curve, got '{other}'"),
+            )),
+        }
+    }
+}
+
+/// All sections of a list.
+pub fn resolve_sections(settings: &[SectionSetting]) -> Result<Vec<DesignSection>> {
+    settings
+        .iter()
+        .enumerate()
+        .map(|(i, s)| s.resolve(i))
+        .collect()
+}
+
+/// Sections from CSV text (header row of field names); `path` names the file in errors.
+pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>> {
+    let parse_error = |line: usize, reason: String| LocoError::Parse {
+        path: path.to_string(),
+        line,
+        reason,
+    };
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let (_, header) = lines
+        .next()
+        .ok_or_else(|| parse_error(0, "empty file: expected a header row".into()))?;
+    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    let known = [
+        "kind",
+        "length_m",
+        "radius_m",
+        "cant_mm",
+        "direction",
+        "cant_run_off_m",
+    ];
+    if let Some(bad) = names.iter().find(|n| !known.contains(n)) {
+        return Err(parse_error(
+            1,
+            format!("unknown column '{bad}'; expected {}", known.join(", ")),
+        ));
+    }
+    for required in ["kind", "length_m"] {
+        if !names.contains(&required) {
+            return Err(parse_error(1, format!("missing column '{required}'")));
+        }
+    }
+    let mut out = Vec::new();
+    for (index, line) in lines {
+        let number = index + 1;
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        if cells.len() != names.len() {
+            return Err(parse_error(
+                number,
+                format!("{} cells, expected {}", cells.len(), names.len()),
+            ));
+        }
+        let mut s = SectionSetting::default();
+        for (name, cell) in names.iter().zip(&cells) {
+            if cell.is_empty() {
+                continue;
+            }
+            let number_of = |cell: &str| {
+                cell.parse::<f64>()
+                    .map_err(|_| parse_error(number, format!("{name}: not a number: '{cell}'")))
+            };
+            match *name {
+                "kind" => s.kind = cell.to_string(),
+                "direction" => s.direction = Some(cell.to_string()),
+                "length_m" => s.length_m = number_of(cell)?,
+                "radius_m" => s.radius_m = Some(number_of(cell)?),
+                "cant_mm" => s.cant_mm = Some(number_of(cell)?),
+                _ => s.cant_run_off_m = Some(number_of(cell)?),
+            }
+        }
+        if s.kind.is_empty() {
+            return Err(parse_error(number, "kind: empty".into()));
+        }
+        out.push(s);
+    }
+    if out.is_empty() {
+        return Err(parse_error(0, "no sections".into()));
+    }
+    Ok(out)
+}
+
+/// Sections from a CSV file.
+pub fn load_sections_csv(path: &Path) -> Result<Vec<SectionSetting>> {
+    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })?;
+    parse_sections_csv(&text, &path.display().to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_rows_become_sections() {
+        let text = "kind,length_m,radius_m,cant_mm,direction,cant_run_off_m\n\
+                    straight,50,,,,\n\
+                    transition,80,,,,60\n\
+                    curve,300,600,120,right,\n";
+        let sections = resolve_sections(&parse_sections_csv(text, "c.csv").unwrap()).unwrap();
+        assert_eq!(
+            sections,
+            vec![
+                DesignSection::Straight { length: 50.0 },
+                DesignSection::Transition {
+                    length: 80.0,
+                    cant_run_off: Some(60.0)
+                },
+                DesignSection::Curve {
+                    length: 300.0,
+                    radius: 600.0,
+                    cant: 0.12,
+                    direction: CurveDirection::Right
+                },
+            ]
+        );
+    }
+
+    #[test]
+    fn bad_rows_and_fields_are_named() {
+        let e = parse_sections_csv("kind,length_m,speed\n", "c.csv").unwrap_err();
+        assert!(
+            e.to_string().contains("c.csv:1: unknown column 'speed'"),
+            "{e}"
+        );
+        let e = parse_sections_csv("kind,length_m\nstraight,x\n", "c.csv").unwrap_err();
+        assert!(e.to_string().contains("c.csv:2: length_m"), "{e}");
+        let curve = SectionSetting {
+            kind: "curve".into(),
+            length_m: 10.0,
+            radius_m: Some(600.0),
+            ..SectionSetting::default()
+        };
+        let e = curve.resolve(2).unwrap_err().to_string();
+        assert!(e.contains("curve section 3 (direction)"), "{e}");
+        let straight = SectionSetting {
+            kind: "straight".into(),
+            length_m: 10.0,
+            cant_mm: Some(50.0),
+            ..SectionSetting::default()
+        };
+        let e = straight.resolve(0).unwrap_err().to_string();
+        assert!(e.contains("curve section 1 (cant_mm)"), "{e}");
+    }
+}
+
+#[cfg(test)]
+mod study_file_tests {
+    use crate::vehicle::scenario_settings::ScenarioSettings;
+    use std::path::Path;
+
+    #[test]
+    fn a_study_file_states_curves_as_tables_or_a_csv_path() {
+        let text = r#"
+            name = "S_norm"
+            speed_kmh = 120.0
+            distance = 100.0
+            track = "perfect"
+            [[curve]]
+            kind = "transition"
+            length_m = 50.0
+            [[curve]]
+            kind = "curve"
+            length_m = 200.0
+            radius_m = 800.0
+            cant_mm = 110.0
+            direction = "left"
+        "#;
+        let settings: ScenarioSettings = toml::from_str(text).unwrap();
+        let scenario = settings
+            .resolve(Default::default(), Path::new("."))
+            .unwrap();
+        assert_eq!(scenario.curve.len(), 2);
+        let missing: ScenarioSettings = toml::from_str(
+            "name = \"S_norm\"\nspeed = 10.0\ndistance = 10.0\ncurve = \"no-such.csv\"",
+        )
+        .unwrap();
+        let e = missing
+            .resolve(Default::default(), Path::new("."))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("no-such.csv"), "{e}");
+    }
+}
