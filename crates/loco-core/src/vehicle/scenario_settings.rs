@@ -125,8 +125,49 @@ fn lookup_profile(name: &str, kind: ProfileKind, dir: &Path) -> Result<Profile> 
     if builtin_names().contains(&name) {
         builtin_profile(name)
     } else {
-        load_profile(&dir.join(name), Some(kind), false)
+        let path = dir.join(name);
+        if !path.is_file() {
+            let field = if kind == ProfileKind::Wheel {
+                "wheel"
+            } else {
+                "rail"
+            };
+            return Err(LocoError::param(
+                field,
+                format!(
+                    "'{name}' is neither a built-in profile ({}) nor a profile file",
+                    builtin_names().join(", ")
+                ),
+            ));
+        }
+        load_profile(&path, Some(kind), false)
     }
+}
+
+/// Track gauge of a run, m: standard-gauge track as laid and as worn (EN 13848-5's limits for
+/// every speed lie within 1.426–1.470 m); the study's wheelsets (back-to-back 1.353 m) are made
+/// for it, so another gauge needs another wheelset, not this setting.
+pub const GAUGE_RANGE: [f64; 2] = [1.400, 1.470];
+
+/// Height of the gauge measuring point below the rail top, m: 14 mm in EN 13848-1, 16 mm in the
+/// Chinese rules; the range leaves room for other conventions while staying on the rail head.
+pub const GAUGE_HEIGHT_RANGE: [f64; 2] = [0.005, 0.025];
+
+/// The user's track set-up inside the ranges the run's wheelsets and rails are made for (the
+/// contact code takes any geometry it can build; a scenario is the physical case).
+fn check_track_setup_range(track: &TrackSetup) -> Result<()> {
+    for (field, value, [low, high]) in [
+        ("gauge", track.gauge, GAUGE_RANGE),
+        ("gauge_height", track.gauge_height, GAUGE_HEIGHT_RANGE),
+    ] {
+        if !(low..=high).contains(&value) {
+            return Err(LocoError::param(
+                field,
+                format!("{value} m is outside [{low}, {high}] m"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn conflict(field: &str, reason: impl Into<String>) -> LocoError {
@@ -261,6 +302,7 @@ impl ScenarioSettings {
             },
         };
         scenario.track_setup.validate()?;
+        check_track_setup_range(&scenario.track_setup)?;
         scenario.validate()?;
         Ok(scenario)
     }
@@ -377,6 +419,14 @@ impl ScenarioSettings {
             file => {
                 self.no_synthesis_settings("a measured one")?;
                 let path = dir.join(file);
+                if !path.is_file() {
+                    return Err(LocoError::param(
+                        "track",
+                        format!(
+                            "'{file}' is neither '{SYNTHETIC}', '{PERFECT}' nor a measured track file"
+                        ),
+                    ));
+                }
                 Ok(TrackSpec::Given(Arc::new(load_csv(
                     &path.display().to_string(),
                     &MeasuredParams::default(),
