@@ -86,8 +86,8 @@ def test_local_cluster_bit_identical_to_threads(
     bad = design.copy()
     bad[6, 1] = np.nan
     with pytest.raises(loco.ParameterError, match=r"row 6, column 1 'K_py'"):
-        loco.run_batch(bad, names(), scenario=SCENARIO, executor=cluster, chunk_size=4,
-                       progress=False)  # fmt: skip
+        loco.run_batch(bad, names(), VEHICLE, scenario=SCENARIO, executor=cluster,
+                       chunk_size=4, progress=False)  # fmt: skip
     # Histories come back from the workers too.
     kept = loco.run_batch(design[:2], names(), scenario=SCENARIO, executor=cluster,
                           histories=[1], progress=False)  # fmt: skip
