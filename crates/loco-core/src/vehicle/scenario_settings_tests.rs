@@ -316,3 +316,72 @@ fn a_bad_band_is_refused_as_band_at_once() {
         assert_eq!(field_of(err), "band", "{band:?}");
     }
 }
+
+#[test]
+fn gauge_and_gauge_height_outside_their_ranges_are_refused_by_name() {
+    // The defaults (1.435 m, 16 mm) and EN 13848-1's 14 mm lie inside the ranges.
+    for (gauge, height) in [
+        (1.435, 0.016),
+        (1.435, 0.014),
+        (1.426, 0.016),
+        (1.470, 0.016),
+    ] {
+        let s = ScenarioSettings {
+            gauge: Some(gauge),
+            gauge_height: Some(height),
+            ..settings("S_norm")
+        };
+        assert!(s.resolve(GivenObjects::default(), Path::new(".")).is_ok());
+    }
+    for (field, gauge, height) in [
+        ("gauge", 1.0, 0.016),
+        ("gauge", 1.676, 0.016),
+        ("gauge_height", 1.435, 0.0),
+        ("gauge_height", 1.435, 0.05),
+    ] {
+        let s = ScenarioSettings {
+            gauge: Some(gauge),
+            gauge_height: Some(height),
+            ..settings("S_norm")
+        };
+        let err = s
+            .resolve(GivenObjects::default(), Path::new("."))
+            .unwrap_err();
+        assert_eq!(field_of(err), field, "{gauge} {height}");
+    }
+}
+
+#[test]
+fn a_profile_or_track_name_that_is_no_file_is_refused_by_name() {
+    for (s, field) in [
+        (
+            ScenarioSettings {
+                name: None,
+                wheel: Some("no-such-wheel".into()),
+                ..settings("S_norm")
+            },
+            "wheel",
+        ),
+        (
+            ScenarioSettings {
+                name: None,
+                wheel: Some("jm3-new".into()),
+                rail: Some("no-such-rail".into()),
+                ..settings("S_norm")
+            },
+            "rail",
+        ),
+        (
+            ScenarioSettings {
+                track: Some("no-such-track.csv".into()),
+                ..settings("S_norm")
+            },
+            "track",
+        ),
+    ] {
+        let err = s
+            .resolve(GivenObjects::default(), Path::new("."))
+            .unwrap_err();
+        assert_eq!(field_of(err), field);
+    }
+}
