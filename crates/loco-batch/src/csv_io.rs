@@ -4,6 +4,7 @@
 //! back (Python's `float`, pandas) gets the same `f64` bit for bit.
 
 use loco_core::batch::BatchOutput;
+use loco_core::csv_table::CsvTable;
 use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::{LocoError, Result};
@@ -25,45 +26,20 @@ pub fn read_samples(path: &Path) -> Result<Samples> {
         path: label.clone(),
         reason: e.to_string(),
     })?;
-    let parse_error = |line: usize, reason: String| LocoError::Parse {
-        path: label.clone(),
-        line,
-        reason,
-    };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let (_, header) = lines.next().ok_or_else(|| {
-        parse_error(
-            0,
-            "empty file: a header of parameter names is needed".into(),
-        )
-    })?;
-    let names: Vec<String> = header.split(',').map(|s| s.trim().to_string()).collect();
-    if names.iter().any(String::is_empty) {
-        return Err(parse_error(1, "empty column name in the header".into()));
-    }
+    let table = CsvTable::parse(&text, &label)?;
     let mut values = Vec::new();
-    for (line, text) in lines {
-        let cells: Vec<&str> = text.split(',').map(str::trim).collect();
-        if cells.len() != names.len() {
-            return Err(parse_error(
-                line,
-                format!("{} values for {} columns", cells.len(), names.len()),
-            ));
-        }
-        for (cell, name) in cells.iter().zip(&names) {
+    for (line, cells) in &table.rows {
+        for (cell, name) in cells.iter().zip(&table.names) {
             let value: f64 = cell.parse().map_err(|_| {
-                parse_error(line, format!("column '{name}': '{cell}' is not a number"))
+                table.error(*line, format!("column '{name}': '{cell}' is not a number"))
             })?;
             values.push(value);
         }
     }
     if values.is_empty() {
-        return Err(parse_error(0, "no sample rows".into()));
+        return Err(table.error(0, "no sample rows"));
     }
+    let names = table.names.iter().map(|n| n.to_string()).collect();
     Ok(Samples { names, values })
 }
 

@@ -100,15 +100,7 @@ fn read(path: &Path) -> Result<String> {
 pub fn load_study(path: &Path) -> Result<Study> {
     let text = read(path)?;
     let origin = path.display().to_string();
-    let file: StudyFile = toml::from_str(&text).map_err(|e| LocoError::Parse {
-        path: origin.clone(),
-        // 1-based line of the span's start (a span starting a line counts that line).
-        line: e
-            .span()
-            .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
-            .unwrap_or(0),
-        reason: e.message().to_string(),
-    })?;
+    let file: StudyFile = toml::from_str(&text).map_err(|e| LocoError::toml(&origin, &text, &e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut base = match &file.vehicle.file {
         Some(f) => {

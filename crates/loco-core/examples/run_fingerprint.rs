@@ -3,8 +3,11 @@
 //! the change kept the results bit for bit. Also the program callgrind counts instructions of.
 //!
 //! `cargo run --release -p loco-core --example run_fingerprint -- [fastsim|fastrip|table]
-//! [S_high|S_low] [prepare]` (`prepare`: build contact and track only, to subtract set-up cost).
+//! [S_high|S_low] [prepare|curve]` (`prepare`: build contact and track only, to subtract set-up
+//! cost; `curve`: the same run on the design of `scripts/curve_cost.py`, a 60 m transition into
+//! R = 1200 m with 100 mm cant, to count what the curve terms cost against the straight run).
 
+use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
@@ -15,10 +18,25 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let creep = CreepModel::from_name(args.get(1).map_or("fastsim", String::as_str)).unwrap();
     let name = args.get(2).map_or("S_high", String::as_str);
-    let scenario = Scenario {
+    let mut scenario = Scenario {
         creep,
         ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
     };
+    if args.get(3).is_some_and(|a| a == "curve") {
+        scenario.curve = vec![
+            DesignSection::Straight { length: 10.0 },
+            DesignSection::Transition {
+                length: 60.0,
+                cant_run_off: None,
+            },
+            DesignSection::Curve {
+                length: 1000.0,
+                radius: 1200.0,
+                cant: 0.1,
+                direction: CurveDirection::Left,
+            },
+        ];
+    }
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
     let track = Arc::new(build_track(&scenario, &structure).unwrap());

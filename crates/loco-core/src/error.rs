@@ -107,6 +107,20 @@ impl LocoError {
             reason: reason.into(),
         }
     }
+
+    /// A [`LocoError::Parse`] for the TOML error `e` in `text`, the content of the file `path`,
+    /// at the 1-based line where the error's span starts (a span starting a line counts that
+    /// line; 0: no span).
+    pub fn toml(path: &str, text: &str, e: &toml::de::Error) -> Self {
+        Self::Parse {
+            path: path.to_string(),
+            line: e
+                .span()
+                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
+                .unwrap_or(0),
+            reason: e.message().to_string(),
+        }
+    }
 }
 
 /// Checks that `value` is finite and strictly positive; the error names `name`.

@@ -11,9 +11,11 @@
 //! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
 //! - [`vehicle`]: the 90-DOF locomotive: parameters, bodies, suspension, equations of motion.
 //! - [`batch`]: many runs in parallel (rayon), failed samples flagged, deterministic.
+//! - [`csv_table`]: comma-separated tables with a header row, errors naming file and line.
 
 pub mod batch;
 pub mod contact;
+pub mod csv_table;
 pub mod dampers;
 pub mod error;
 pub mod metrics;

@@ -17,7 +17,7 @@
 //! V·κ, and the lateral offset of the centre line at s₂ from the tangent at s₁ is
 //! `∫_{s₁}^{s₂} (Ψ − Ψ(s₁)) ds` (small angles: a vehicle spans a heading change of κ·20 m).
 
-use crate::error::{LocoError, Result};
+use crate::error::{check_positive, LocoError, Result};
 
 /// Largest cant the model accepts, m (EN 13803 allows at most 180–200 mm on ballasted track).
 pub const MAX_CANT: f64 = 0.2;
@@ -142,8 +142,13 @@ pub struct TrackDesign {
     end: f64,
 }
 
+/// The name of field `field` of section `i` (0-based) in errors.
+fn section_field(i: usize, field: &str) -> String {
+    format!("curve section {} ({field})", i + 1)
+}
+
 fn section_error(i: usize, field: &str, reason: impl Into<String>) -> LocoError {
-    LocoError::param(format!("curve section {} ({field})", i + 1), reason)
+    LocoError::param(section_field(i, field), reason)
 }
 
 impl TrackDesign {
@@ -156,14 +161,7 @@ impl TrackDesign {
             return Err(LocoError::param("curve", "no sections"));
         }
         for (i, section) in sections.iter().enumerate() {
-            let length = section.length();
-            if !(length.is_finite() && length > 0.0) {
-                return Err(section_error(
-                    i,
-                    "length_m",
-                    format!("must be finite and positive, got {length}"),
-                ));
-            }
+            check_positive(&section_field(i, "length_m"), section.length())?;
             match *section {
                 DesignSection::Curve { radius, cant, .. } => {
                     if !(radius.is_finite() && radius >= min_radius) {
@@ -193,13 +191,7 @@ impl TrackDesign {
                     cant_run_off: Some(run_off),
                     length,
                 } => {
-                    if !(run_off.is_finite() && run_off > 0.0) {
-                        return Err(section_error(
-                            i,
-                            "cant_run_off_m",
-                            format!("must be finite and positive, got {run_off}"),
-                        ));
-                    }
+                    check_positive(&section_field(i, "cant_run_off_m"), run_off)?;
                     if run_off > length {
                         return Err(section_error(
                             i,

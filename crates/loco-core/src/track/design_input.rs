@@ -8,6 +8,7 @@
 //! order, empty cells for fields a section does not use).
 
 use super::design::{CurveDirection, DesignSection};
+use crate::csv_table::CsvTable;
 use crate::error::{LocoError, Result};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -94,19 +95,7 @@ pub fn resolve_sections(settings: &[SectionSetting]) -> Result<Vec<DesignSection
 
 /// Sections from CSV text (header row of field names); `path` names the file in errors.
 pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>> {
-    let parse_error = |line: usize, reason: String| LocoError::Parse {
-        path: path.to_string(),
-        line,
-        reason,
-    };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-    let (_, header) = lines
-        .next()
-        .ok_or_else(|| parse_error(0, "empty file: expected a header row".into()))?;
-    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    let table = CsvTable::parse(text, path)?;
     let known = [
         "kind",
         "length_m",
@@ -115,35 +104,29 @@ pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>>
         "direction",
         "cant_run_off_m",
     ];
-    if let Some(bad) = names.iter().find(|n| !known.contains(n)) {
-        return Err(parse_error(
-            1,
+    let header = table.header_line;
+    if let Some(bad) = table.names.iter().find(|n| !known.contains(n)) {
+        return Err(table.error(
+            header,
             format!("unknown column '{bad}'; expected {}", known.join(", ")),
         ));
     }
     for required in ["kind", "length_m"] {
-        if !names.contains(&required) {
-            return Err(parse_error(1, format!("missing column '{required}'")));
+        if !table.names.contains(&required) {
+            return Err(table.error(header, format!("missing column '{required}'")));
         }
     }
     let mut out = Vec::new();
-    for (index, line) in lines {
-        let number = index + 1;
-        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-        if cells.len() != names.len() {
-            return Err(parse_error(
-                number,
-                format!("{} cells, expected {}", cells.len(), names.len()),
-            ));
-        }
+    for (number, cells) in &table.rows {
+        let number = *number;
         let mut s = SectionSetting::default();
-        for (name, cell) in names.iter().zip(&cells) {
+        for (name, &cell) in table.names.iter().zip(cells) {
             if cell.is_empty() {
                 continue;
             }
             let number_of = |cell: &str| {
                 cell.parse::<f64>()
-                    .map_err(|_| parse_error(number, format!("{name}: not a number: '{cell}'")))
+                    .map_err(|_| table.error(number, format!("{name}: not a number: '{cell}'")))
             };
             match *name {
                 "kind" => s.kind = cell.to_string(),
@@ -155,12 +138,12 @@ pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>>
             }
         }
         if s.kind.is_empty() {
-            return Err(parse_error(number, "kind: empty".into()));
+            return Err(table.error(number, "kind: empty"));
         }
         out.push(s);
     }
     if out.is_empty() {
-        return Err(parse_error(0, "no sections".into()));
+        return Err(table.error(0, "no sections"));
     }
     Ok(out)
 }

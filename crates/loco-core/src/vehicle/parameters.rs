@@ -89,13 +89,8 @@ impl ParameterSet {
             line,
             reason,
         };
-        let table: toml::Table = toml::from_str(text).map_err(|e| {
-            let line = e
-                .span()
-                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
-                .unwrap_or(0);
-            parse_err(line, e.message().to_string())
-        })?;
+        let table: toml::Table =
+            toml::from_str(text).map_err(|e| LocoError::toml(origin, text, &e))?;
         let mut allow = BTreeSet::new();
         let mut given: Vec<(String, FileParameter, usize)> = Vec::new();
         for (top, item) in table {

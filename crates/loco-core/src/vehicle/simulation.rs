@@ -232,9 +232,15 @@ impl VehicleSystem {
         self.wrenches = [[0.0; 6]; N_BODIES];
         let speed = self.speed_at(t);
         // On a curve the suspension sees the bodies in the reference frame (`track_frame`).
-        let s_r = self.vehicle_distance(t);
         if let Some(curve) = &self.curve {
-            curve.prepare(&self.structure, s_r, speed, q, qd, &mut self.frame_work);
+            let s_r = self.vehicle_distance(t);
+            curve.prepare(
+                &self.structure,
+                s_r,
+                speed,
+                &self.body_states,
+                &mut self.frame_work,
+            );
         }
         let states = match self.curve {
             Some(_) => &self.frame_work.states,
@@ -263,11 +269,13 @@ impl VehicleSystem {
             );
         }
         for w in 0..N_WHEELSETS {
-            // The wheelset's absolute yaw rate includes its track frame's (rolling on a curve).
-            let frame_yaw = self.curve.as_ref().map_or(0.0, |c| {
-                c.wheelset_frame_yaw_rate(speed, &self.frame_work, w)
-            });
-            self.body_states.velocity[body_wheelset(w)][YAW] += frame_yaw;
+            // The wheelset's absolute yaw rate includes its track frame's (rolling on a curve);
+            // its own is put back after the contact, not recomputed (no rounding).
+            let own_yaw = self.body_states.velocity[body_wheelset(w)][YAW];
+            if let Some(curve) = &self.curve {
+                self.body_states.velocity[body_wheelset(w)][YAW] =
+                    own_yaw + curve.wheelset_frame_yaw_rate(speed, &self.frame_work, w);
+            }
             let rails = if let Some(inputs) = &self.rail_inputs {
                 inputs[w]
             } else if statics {
@@ -285,7 +293,7 @@ impl VehicleSystem {
                 &mut self.wrenches,
                 &mut self.wheel_forces[w],
             );
-            self.body_states.velocity[body_wheelset(w)][YAW] -= frame_yaw;
+            self.body_states.velocity[body_wheelset(w)][YAW] = own_yaw;
             if let Err(e) = result {
                 self.error.get_or_insert(e);
             }
@@ -385,10 +393,15 @@ impl OdeSystem for VehicleSystem {
         self.structure
             .body_states(q, &rest[..N_DOF], &mut self.body_states);
         let speed = self.speed_at(t);
-        let s_r = self.vehicle_distance(t);
         if let Some(curve) = &self.curve {
-            let qd = &rest[..N_DOF];
-            curve.prepare(&self.structure, s_r, speed, q, qd, &mut self.frame_work);
+            let s_r = self.vehicle_distance(t);
+            curve.prepare(
+                &self.structure,
+                s_r,
+                speed,
+                &self.body_states,
+                &mut self.frame_work,
+            );
         }
         let states = match self.curve {
             Some(_) => &self.frame_work.states,

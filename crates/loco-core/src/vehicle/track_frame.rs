@@ -70,12 +70,18 @@ pub struct CurvedTrack {
     pub design: Arc<TrackDesign>,
     bodies: Vec<FrameBody>,
     gravity: f64,
+    /// The distinct distances (m) of the bodies' nominal centres ahead of the vehicle origin,
+    /// the origin's own (0) first: bodies at one distance (a wheelset, its motor, its rotary
+    /// arms) share one look-up of the design per evaluation.
+    stations: Vec<f64>,
+    /// Each body's index into `stations`.
+    station_of: Vec<usize>,
 }
 
 /// Workspaces and the last evaluation's frame data (no allocation in the time loop).
 #[derive(Debug, Clone)]
 pub struct FrameWork {
-    /// Coordinates and velocities of the frame offsets, then the sums with the state's.
+    /// Coordinates and velocities of the frame offsets.
     offsets: Vec<f64>,
     rates: Vec<f64>,
     /// Body states in the reference frame (what the suspension sees).
@@ -84,6 +90,12 @@ pub struct FrameWork {
     offset_states: BodyStates,
     /// The design at each body's distance.
     pub points: [DesignPoint; N_BODIES],
+    /// sin θ and cos θ of each body's track roll.
+    roll_sin_cos: [(f64, f64); N_BODIES],
+    /// The design at each station (`CurvedTrack::stations`; at most one per body and the
+    /// origin) and sin θ, cos θ of its roll.
+    station_points: [DesignPoint; N_BODIES + 1],
+    station_roll: [(f64, f64); N_BODIES + 1],
 }
 
 impl Default for FrameWork {
@@ -94,6 +106,9 @@ impl Default for FrameWork {
             states: BodyStates::default(),
             offset_states: BodyStates::default(),
             points: [DesignPoint::default(); N_BODIES],
+            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            station_points: [DesignPoint::default(); N_BODIES + 1],
+            station_roll: [(0.0, 1.0); N_BODIES + 1],
         }
     }
 }
@@ -110,31 +125,56 @@ impl CurvedTrack {
                 position: b.position,
                 spin: b.spin_momentum_per_speed,
             })
+            .collect::<Vec<_>>();
+        let mut stations = vec![0.0];
+        let station_of = bodies
+            .iter()
+            .map(|b| {
+                let x = b.position[0];
+                // Bitwise equal distances give bitwise equal look-ups.
+                match stations
+                    .iter()
+                    .position(|s: &f64| s.to_bits() == x.to_bits())
+                {
+                    Some(k) => k,
+                    None => {
+                        stations.push(x);
+                        stations.len() - 1
+                    }
+                }
+            })
             .collect();
         Self {
             design,
             bodies,
             gravity: structure.gravity,
+            stations,
+            station_of,
         }
     }
 
     /// Fills `work` for the vehicle origin at distance `s_r` (m) running at `speed` (m/s): the
-    /// design at every body and the body states (from coordinates `q`, velocities `qd`) seen in
-    /// the reference frame.
+    /// design at every body and the body states seen in the reference frame, from the states
+    /// `relative` to the bodies' own frames (`structure.body_states` of the coordinates).
     pub fn prepare(
         &self,
         structure: &VehicleStructure,
         s_r: f64,
         speed: f64,
-        q: &[f64],
-        qd: &[f64],
+        relative: &BodyStates,
         work: &mut FrameWork,
     ) {
-        for (point, body) in work.points.iter_mut().zip(&self.bodies) {
-            *point = self.design.at(s_r + body.position[0]);
+        let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
+        for ((point, roll), x) in stations.zip(&self.stations) {
+            *point = self.design.at(s_r + x);
+            *roll = point.roll.sin_cos();
         }
-        let r = self.design.at(s_r);
-        let (st, ct) = r.roll.sin_cos();
+        for (i, &k) in self.station_of.iter().enumerate() {
+            work.points[i] = work.station_points[k];
+            work.roll_sin_cos[i] = work.station_roll[k];
+        }
+        let r = work.station_points[0];
+        let (st, ct) = work.station_roll[0];
         let roll_rate_r = speed * r.roll_rate;
         work.offsets.fill(0.0);
         work.rates.fill(0.0);
@@ -174,13 +214,27 @@ impl CurvedTrack {
             }
         }
         structure.body_states(&work.offsets, &work.rates, &mut work.offset_states);
-        for (k, v) in work.offsets.iter_mut().enumerate() {
-            *v += q[k];
+        // The motion maps are linear: a body's state in the reference frame is its state
+        // relative to its own frame plus its frame's offset (no second pass over the maps).
+        let pairs = [
+            (
+                &mut work.states.position,
+                &relative.position,
+                &work.offset_states.position,
+            ),
+            (
+                &mut work.states.velocity,
+                &relative.velocity,
+                &work.offset_states.velocity,
+            ),
+        ];
+        for (sum, own, offset) in pairs {
+            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
+                for k in 0..6 {
+                    s[k] = a[k] + b[k];
+                }
+            }
         }
-        for (k, v) in work.rates.iter_mut().enumerate() {
-            *v += qd[k];
-        }
-        structure.body_states(&work.offsets, &work.rates, &mut work.states);
     }
 
     /// Turns the wrenches formed in the reference frame (gravity, structure, dampers) into each
@@ -205,7 +259,7 @@ impl CurvedTrack {
             let f = sub(f, cross(rot, f));
             let m = sub(m, cross(rot, m));
             let p = &work.points[i];
-            let (s, c) = p.roll.sin_cos();
+            let (s, c) = work.roll_sin_cos[i];
             let a = v2 * p.curvature;
             let mg = body.mass * g;
             // Gravity in the own frame less the reference frame's vertical turned into it.
@@ -236,7 +290,7 @@ impl CurvedTrack {
     #[inline]
     pub fn wheelset_frame_yaw_rate(&self, speed: f64, work: &FrameWork, w: usize) -> f64 {
         let p = &work.points[body_wheelset(w)];
-        speed * p.curvature * p.roll.cos()
+        speed * p.curvature * work.roll_sin_cos[body_wheelset(w)].1
     }
 }
 

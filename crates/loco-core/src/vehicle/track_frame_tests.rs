@@ -22,8 +22,7 @@ fn bogies_in_a_steady_curve_sit_on_the_versine_and_yaw_with_the_tangent() {
     .unwrap();
     let curve = CurvedTrack::new(Arc::new(design), &structure);
     let mut work = FrameWork::default();
-    let zeros = vec![0.0; N_DOF];
-    curve.prepare(&structure, 250.0, 50.0, &zeros, &zeros, &mut work);
+    curve.prepare(&structure, 250.0, 50.0, &BodyStates::default(), &mut work);
     for b in 0..N_BOGIES {
         let x = structure.layout.bogie_x[b];
         let p = &work.states.position[body_frame(b)];
