@@ -25,6 +25,7 @@ S = {"scenario": "S_norm"}
         ({"seed": 1.5}, "seed", "must be a whole number, got 1.5"),
         ({"seed": -1}, "seed", "must be in [0, "),
         ({"seed": 2**64}, "seed", "must be in [0, "),
+        ({"seed": 2**63}, "seed", "must be in [0, "),
         ({"seed": math.inf}, "seed", "must be a whole number"),
         ({"seed": True}, "seed", "got bool True"),
         ({"fastsim_grid": (1e30, 10)}, "fastsim_grid", "must be in [1, "),

@@ -51,6 +51,7 @@ __all__ += [
     "builtin_profile_names",
     "conical_profiles",
     "contact_geometry",
+    "contact_setup_defaults",
     "load_profile_file",
     "rolling_radius_difference",
 ]
@@ -77,6 +78,7 @@ def load_profile_file(
 def builtin_profile_named(name: str) -> Profile: ...
 def builtin_profile_names() -> list[str]: ...
 def conical_profiles(conicity: float) -> tuple[Profile, Profile]: ...
+def contact_setup_defaults() -> list[tuple[str, float]]: ...
 def contact_geometry(
     left_wheel: Profile,
     right_wheel: Profile,

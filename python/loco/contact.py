@@ -13,13 +13,12 @@ Track set-up keywords (SI units): ``gauge`` (m, measured ``gauge_height`` below 
 ``back_to_back`` or its synonym ``flange_back_spacing`` (m, between the wheels' inner faces),
 ``flange_back_offset`` (m, from a wheel's inner face to its taping line) and ``nominal_radius``
 (m, one value or a (left, right) pair). Defaults are the study's: 1435 mm gauge at 16 mm, 1:40,
-back-to-back 1353 mm, 70 mm, 625 mm.
+back-to-back 1353 mm, 70 mm, 625 mm (:data:`SETUP_DEFAULTS`, from the core).
 """
 
 from __future__ import annotations
 
 import importlib
-import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -29,9 +28,22 @@ import numpy.typing as npt
 from loco import _loco
 from loco._loco import Profile
 
-__all__ = ["ContactGeometry", "geometry", "rolling_radius_difference"]
+__all__ = ["SETUP_DEFAULTS", "ContactGeometry", "geometry", "rolling_radius_difference"]
 
 _FloatArray = npt.NDArray[np.float64]
+
+#: The study's track and wheelset set-up (SI), the defaults of the keywords above, from the core
+#: (``TrackSetup::default``, ``WheelsetSetup::default``): ``gauge``, ``gauge_height``,
+#: ``rail_inclination``, ``back_to_back``, ``flange_back_offset``, ``nominal_radius_left`` and
+#: ``nominal_radius_right``.
+SETUP_DEFAULTS: dict[str, float] = dict(_loco.contact_setup_defaults())
+
+#: The default ``nominal_radius``: one value when both wheels have it, else the (left, right) pair.
+_NOMINAL_RADIUS: float | tuple[float, float] = (
+    SETUP_DEFAULTS["nominal_radius_left"]
+    if SETUP_DEFAULTS["nominal_radius_left"] == SETUP_DEFAULTS["nominal_radius_right"]
+    else (SETUP_DEFAULTS["nominal_radius_left"], SETUP_DEFAULTS["nominal_radius_right"])
+)
 
 
 @dataclass(frozen=True)
@@ -100,7 +112,7 @@ def _setup(
         "gauge": float(gauge),
         "gauge_height": float(gauge_height),
         "rail_inclination": float(inclination),
-        "back_to_back": float(spacing if spacing is not None else 1.353),
+        "back_to_back": float(spacing if spacing is not None else SETUP_DEFAULTS["back_to_back"]),
         "flange_back_offset": float(flange_back_offset),
         "nominal_radius_left": float(r_left),
         "nominal_radius_right": float(r_right),
@@ -115,13 +127,13 @@ def geometry(
     *,
     right_wheel: Profile | None = None,
     right_rail: Profile | None = None,
-    gauge: float = 1.435,
-    gauge_height: float = 0.016,
-    inclination: float = math.atan(1.0 / 40.0),
+    gauge: float = SETUP_DEFAULTS["gauge"],
+    gauge_height: float = SETUP_DEFAULTS["gauge_height"],
+    inclination: float = SETUP_DEFAULTS["rail_inclination"],
     back_to_back: float | None = None,
     flange_back_spacing: float | None = None,
-    flange_back_offset: float = 0.070,
-    nominal_radius: float | tuple[float, float] = 0.625,
+    flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
+    nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
 ) -> ContactGeometry:
     """Rigid contact geometry for the lateral displacements ``y`` (m, array-like).
 
@@ -166,13 +178,13 @@ def rolling_radius_difference(
     *,
     right_wheel: Profile | None = None,
     right_rail: Profile | None = None,
-    gauge: float = 1.435,
-    gauge_height: float = 0.016,
-    inclination: float = math.atan(1.0 / 40.0),
+    gauge: float = SETUP_DEFAULTS["gauge"],
+    gauge_height: float = SETUP_DEFAULTS["gauge_height"],
+    inclination: float = SETUP_DEFAULTS["rail_inclination"],
     back_to_back: float | None = None,
     flange_back_spacing: float | None = None,
-    flange_back_offset: float = 0.070,
-    nominal_radius: float | tuple[float, float] = 0.625,
+    flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
+    nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
 ) -> _FloatArray:
     """Δr = r_left − r_right (m) at each lateral displacement ``y`` (m) of the wheelset translated
     without roll (EN 15302's definition, see the module documentation)."""

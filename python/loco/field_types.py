@@ -17,8 +17,9 @@ from loco import _loco
 
 __all__ = ["flag", "pair", "real", "text", "whole", "wrong_type"]
 
-#: Largest whole number the core takes (u64 seeds; usize grids on 64-bit platforms).
-MAX_WHOLE = 2**64 - 1
+#: Largest whole number a setting takes: the largest TOML integer (64-bit signed), the form in
+#: which settings reach the core, as the study file's do.
+MAX_WHOLE = 2**63 - 1
 
 
 def wrong_type(name: str, expected: str, value: Any) -> _loco.ParameterError:

@@ -224,11 +224,6 @@ class Scenario:
 SETTINGS: tuple[str, ...] = tuple(n for n, v in vars(Scenario).items() if isinstance(v, _Setting))
 
 
-#: Bound of each grid size before it reaches the core (whose bound, on nx·ny, gives the reason):
-#: keeps the conversion to the core's integers from overflowing.
-GRID_BOUND = 2**32
-
-
 def _reals(name: str, value: Any) -> tuple[float, float]:
     a, b = types.pair(name, value)
     return types.real(name, a), types.real(name, b)
@@ -236,13 +231,23 @@ def _reals(name: str, value: Any) -> tuple[float, float]:
 
 def _grid(name: str, value: Any) -> tuple[int, int]:
     a, b = types.pair(name, value)
-    return types.whole(name, a, 1, GRID_BOUND), types.whole(name, b, 1, GRID_BOUND)
+    return types.whole(name, a, 1), types.whole(name, b, 1)
 
 
 def _name_or_path(name: str, value: Any) -> str:
     """A name (a built-in profile, a preset, ``"synthetic"``/``"perfect"``) or a file path; the
     objects (profiles, dampers, tracks) are passed apart."""
     return types.text(name, value)
+
+
+def _curve(name: str, value: Any) -> Any:
+    """The ``curve`` setting: a CSV path, or the sections with any mapping as a dict (the core
+    reads dicts as the study file's ``[[scenario.curve]]`` tables and names a bad field)."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, bytes) or not isinstance(value, Sequence):
+        raise types.wrong_type(name, "a CSV path or a list of sections (dicts)", value)
+    return [dict(s) if isinstance(s, Mapping) else s for s in value]
 
 
 #: The Python type check of each plain setting (:mod:`loco.field_types`), before the core checks
@@ -268,19 +273,19 @@ _CHECKS: dict[str, Any] = {
     "fastsim_grid": _grid,
     **{
         n: _name_or_path
-        for n in ("scenario", "spectrum", "creep", "fsd_trigger", "wheel", "rail", "track")
+        for n in (
+            "scenario",
+            "spectrum",
+            "creep",
+            "fsd_trigger",
+            "wheel",
+            "rail",
+            "track",
+            "yaw_damper",
+        )
     },
-    "yaw_damper": _name_or_path,
+    "curve": _curve,
 }
-
-
-def _curve_argument(
-    curve: str | Sequence[Mapping[str, float | str]],
-) -> str | list[dict[str, float | str]]:
-    """The ``curve`` setting for the native scenario: a CSV path, or the sections as dicts."""
-    if isinstance(curve, (str, os.PathLike)):
-        return os.fspath(curve)
-    return [dict(section) for section in curve]
 
 
 #: Names of the run statistics (:attr:`SimulationResult.statistics`, batch columns), from the core.

@@ -353,9 +353,29 @@ fn py_rolling_radius_difference<'py>(
     Ok(dr.into_pyarray(py))
 }
 
+/// The study's track and wheelset set-up, the defaults of the contact functions
+/// (`TrackSetup::default()`, `WheelsetSetup::default()`): gauge (m), gauge_height (m below the
+/// rail top), rail_inclination (rad), back_to_back (m), flange_back_offset (m),
+/// nominal_radius_left and nominal_radius_right (m).
+#[pyfunction]
+fn contact_setup_defaults() -> Vec<(&'static str, f64)> {
+    let track = TrackSetup::default();
+    let wheelset = WheelsetSetup::default();
+    vec![
+        ("gauge", track.gauge),
+        ("gauge_height", track.gauge_height),
+        ("rail_inclination", track.rail_inclination),
+        ("back_to_back", wheelset.back_to_back),
+        ("flange_back_offset", wheelset.flange_back_offset),
+        ("nominal_radius_left", wheelset.nominal_radius[0]),
+        ("nominal_radius_right", wheelset.nominal_radius[1]),
+    ]
+}
+
 /// Adds this file's functions and classes to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyProfile>()?;
+    m.add_function(wrap_pyfunction!(contact_setup_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(load_profile_file, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_profile_named, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;

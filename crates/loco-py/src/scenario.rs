@@ -13,7 +13,8 @@ use loco_core::vehicle::scenario_settings::CurveSetting;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use loco_core::LocoError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use serde::de::DeserializeOwned;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -28,14 +29,14 @@ pub struct PyRunScenario {
     pub inner: Scenario,
 }
 
-/// A Python setting value as TOML (bool, int, float, str, or a list/tuple of them), so that the
-/// settings are read by the same deserialiser as the study file.
+/// A Python setting value as TOML (bool, int, float, str, a list/tuple of them, or a dict of
+/// them as a table), so that the settings are read by the same deserialiser as the study file.
 fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
     let bad = || {
         to_py_err(LocoError::param(
             key,
             format!(
-                "expected a number, a string, a bool or a list of them, got {}",
+                "expected a number, a string, a bool, a dict or a list of them, got {}",
                 value
                     .get_type()
                     .name()
@@ -56,6 +57,13 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
     if let Ok(i) = value.extract::<i64>() {
         return Ok(toml::Value::Integer(i));
     }
+    if value.cast::<PyInt>().is_ok() {
+        // Not read as a float: that would be refused as the wrong type, or lose digits.
+        return Err(to_py_err(LocoError::param(
+            key,
+            format!("{value} is outside the 64-bit signed integers of TOML (the study file's)"),
+        )));
+    }
     if let Ok(x) = value.extract::<f64>() {
         return Ok(toml::Value::Float(x));
     }
@@ -64,44 +72,91 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
             value.try_iter()?.map(|v| toml_value(key, &v?)).collect();
         return Ok(toml::Value::Array(items?));
     }
+    if let Ok(dict) = value.cast::<PyDict>() {
+        let mut table = toml::Table::new();
+        for (k, v) in dict.iter() {
+            let k: String = k.extract()?;
+            if !v.is_none() {
+                let v = toml_value(&format!("{key}.{k}"), &v)?;
+                table.insert(k, v);
+            }
+        }
+        return Ok(toml::Value::Table(table));
+    }
     Err(bad())
+}
+
+/// `table` read as a `T`; an error names the first key refused on its own, added to `base` (a
+/// table `T` accepts), as `name(key)`, else `whole`: serde's message names only the type.
+fn read_table<T: DeserializeOwned>(
+    table: &toml::Table,
+    base: &toml::Table,
+    whole: &str,
+    name: impl Fn(&str) -> String,
+) -> PyResult<T> {
+    let read = |table: toml::Table| toml::Value::Table(table).try_into::<T>();
+    read(table.clone()).map_err(|e| {
+        let key = table.iter().find(|(k, v)| {
+            let mut one = base.clone();
+            one.insert((*k).clone(), (*v).clone());
+            read(one).is_err()
+        });
+        let field = key.map_or_else(|| whole.to_string(), |(k, _)| name(k));
+        to_py_err(LocoError::param(field, e.message().to_string()))
+    })
 }
 
 /// The settings of a Python dict, checked as the study file's `[scenario]` section is.
 fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSettings> {
     let mut table = toml::Table::new();
-    let mut curve = None;
     if let Some(settings) = settings {
         for (key, value) in settings.iter() {
             let key: String = key.extract()?;
-            if value.is_none() {
-                continue;
+            if !value.is_none() {
+                let v = toml_value(&key, &value)?;
+                table.insert(key, v);
             }
-            // Sections are dicts, which the study file writes as `[[scenario.curve]]` tables.
-            if key == "curve" {
-                curve = Some(curve_setting(&value)?);
-                continue;
-            }
-            let v = toml_value(&key, &value)?;
-            table.insert(key, v);
         }
     }
-    let read = |table: toml::Table| toml::Value::Table(table).try_into::<ScenarioSettings>();
-    read(table.clone())
-        .map_err(|e| {
-            // Name the setting: the first one refused on its own (serde's message names the type).
-            let key = table
-                .iter()
-                .find(|(k, v)| {
-                    read(toml::Table::from_iter([((*k).clone(), (*v).clone())])).is_err()
-                })
-                .map_or("scenario", |(k, _)| k.as_str());
-            to_py_err(LocoError::param(key, e.message().to_string()))
+    // The sections are read one by one, so that an error names the section and its field.
+    let curve = table.remove("curve").map(curve_setting).transpose()?;
+    let settings: ScenarioSettings =
+        read_table(&table, &toml::Table::new(), "scenario", str::to_string)?;
+    Ok(ScenarioSettings { curve, ..settings })
+}
+
+/// The `curve` setting: a CSV path, or a list of tables with the fields of [`SectionSetting`]
+/// (`kind`, `length_m`, `radius_m`, `cant_mm`, `direction`, `cant_run_off_m`).
+fn curve_setting(curve: toml::Value) -> PyResult<CurveSetting> {
+    let bad = |name: String, reason: &str| to_py_err(LocoError::param(name, reason));
+    let sections = match curve {
+        toml::Value::String(path) => return Ok(CurveSetting::File(path)),
+        toml::Value::Array(sections) => sections,
+        _ => {
+            return Err(bad(
+                "curve".into(),
+                "expected a CSV path or a list of sections (dicts)",
+            ))
+        }
+    };
+    // A section the deserialiser accepts, to which each field is added on its own.
+    let base = toml::Table::try_from(SectionSetting::default())
+        .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
+    sections
+        .into_iter()
+        .enumerate()
+        .map(|(i, section)| {
+            let whole = format!("curve section {}", i + 1);
+            let toml::Value::Table(table) = section else {
+                return Err(bad(
+                    whole,
+                    "expected a dict of kind, length_m, radius_m, cant_mm, direction, cant_run_off_m",
+                ));
+            };
+            read_table(&table, &base, &whole, |k| format!("{whole} ({k})"))
         })
-        .map(|settings| ScenarioSettings {
-            curve: curve.or(settings.curve.clone()),
-            ..settings
-        })
+        .collect::<PyResult<Vec<SectionSetting>>>()
+        .map(CurveSetting::Sections)
 }
 
 #[pymethods]
@@ -212,54 +267,4 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scenario_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_presets, m)?)?;
     Ok(())
-}
-
-/// The `curve` keyword: a CSV path, or a sequence of dicts with the fields of
-/// [`SectionSetting`] (`kind`, `length_m`, `radius_m`, `cant_mm`, `direction`,
-/// `cant_run_off_m`); errors name the section and the field.
-fn curve_setting(curve: &Bound<'_, PyAny>) -> PyResult<CurveSetting> {
-    if let Ok(path) = curve.extract::<String>() {
-        return Ok(CurveSetting::File(path));
-    }
-    let bad = |name: String, reason: String| to_py_err(loco_core::LocoError::param(name, reason));
-    let mut sections = Vec::new();
-    for (i, item) in curve.try_iter()?.enumerate() {
-        let item = item?;
-        let field = |name: &str| format!("curve section {} ({name})", i + 1);
-        let dict = item.cast::<PyDict>().map_err(|_| {
-            bad(
-                format!("curve section {}", i + 1),
-                "expected a dict of kind, length_m, radius_m, cant_mm, direction, cant_run_off_m"
-                    .into(),
-            )
-        })?;
-        let mut s = SectionSetting::default();
-        for (key, value) in dict.iter() {
-            let key: String = key.extract()?;
-            let number = || {
-                value
-                    .extract::<f64>()
-                    .map_err(|_| bad(field(&key), "expected a number".into()))
-            };
-            let text = || {
-                value
-                    .extract::<String>()
-                    .map_err(|_| bad(field(&key), "expected a string".into()))
-            };
-            match key.as_str() {
-                "kind" => s.kind = text()?,
-                "direction" => s.direction = Some(text()?),
-                "length_m" => s.length_m = number()?,
-                "radius_m" => s.radius_m = Some(number()?),
-                "cant_mm" => s.cant_mm = Some(number()?),
-                "cant_run_off_m" => s.cant_run_off_m = Some(number()?),
-                _ => return Err(bad(field(&key), "unknown field".into())),
-            }
-        }
-        if !dict.contains("length_m")? {
-            return Err(bad(field("length_m"), "missing".into()));
-        }
-        sections.push(s);
-    }
-    Ok(CurveSetting::Sections(sections))
 }

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import math
 from pathlib import Path
 from typing import Any
 
@@ -34,14 +33,15 @@ WHEELS: list[tuple[str, str, float]] = [
     ("jm3-new", "S_norm", 0.10),
     ("jm3-worn", "S_high", 0.70),
 ]
-#: The study's track and wheelset (SI): the defaults of :mod:`loco.contact`, spelled out.
+#: The study's track and wheelset (SI): the defaults of :mod:`loco.contact` (from the core),
+#: spelled out in the table.
 TRACK: dict[str, Any] = {
-    "gauge": 1.435,
-    "gauge_height": 0.016,
-    "inclination": math.atan(1.0 / 40.0),
-    "back_to_back": 1.353,
-    "flange_back_offset": 0.070,
-    "nominal_radius": 0.625,
+    "gauge": contact.SETUP_DEFAULTS["gauge"],
+    "gauge_height": contact.SETUP_DEFAULTS["gauge_height"],
+    "inclination": contact.SETUP_DEFAULTS["rail_inclination"],
+    "back_to_back": contact.SETUP_DEFAULTS["back_to_back"],
+    "flange_back_offset": contact.SETUP_DEFAULTS["flange_back_offset"],
+    "nominal_radius": contact._NOMINAL_RADIUS,
 }
 AMPLITUDE = 0.003
 
