@@ -52,18 +52,24 @@ def _write_inputs(tmp: Path) -> tuple[Path, Path]:
     return study, samples
 
 
+def _batch(*args: str | Path) -> subprocess.CompletedProcess[str]:
+    """``loco-batch`` with ``args``, its output captured."""
+    command = [str(BINARY), *map(str, args)]
+    return subprocess.run(command, capture_output=True, text=True, check=False)
+
+
+def _rows(path: Path) -> list[dict[str, str]]:
+    """The rows of a metrics file the binary wrote."""
+    with path.open(encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
 def test_binary_matches_python_bit_for_bit(tmp_path: Path) -> None:
     study, samples = _write_inputs(tmp_path)
     out = tmp_path / "metrics.csv"
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "2", "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", out, "--threads", "2", "--quiet")
     assert done.returncode == 0, done.stderr
-    with out.open(encoding="utf-8") as f:
-        rows = list(csv.DictReader(f))
+    rows = _rows(out)
 
     allowed = 'allow_out_of_range = ["rotary_arm.node_stiffness_lateral"]\n'
     vehicle = loco.Locomotive(toml_text=allowed + loco.Locomotive.default().default_toml())
@@ -94,22 +100,12 @@ def test_binary_matches_python_bit_for_bit(tmp_path: Path) -> None:
 def test_binary_reports_malformed_samples_with_file_and_line(tmp_path: Path) -> None:
     study, samples = _write_inputs(tmp_path)
     samples.write_text("K_px,K_py\n1.5e7,3.5e6\n1.5e7,abc\n", encoding="utf-8")
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(tmp_path / "m.csv"), "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", tmp_path / "m.csv", "--quiet")
     assert done.returncode != 0
     assert f"{samples}:3" in done.stderr and "K_py" in done.stderr
 
     study.write_text("[scenario]\nname = 'S_high'\nspeed = 50.0\ndistanse = 10.0\n")
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "--quiet")
     assert done.returncode != 0 and "study.toml" in done.stderr
     # The unknown key is reported on its own line (the 4th), not the one before.
     assert f"{study}:4:" in done.stderr and "distanse" in done.stderr
@@ -117,12 +113,7 @@ def test_binary_reports_malformed_samples_with_file_and_line(tmp_path: Path) -> 
     study.write_text(
         "[scenario]\nname = 'S_high'\nspeed = 50.0\ndistance = 10.0\ntrack = 'perfect'\nseed = 3\n"
     )
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "--quiet")
     assert done.returncode != 0 and "scenario.seed" in done.stderr
 
 
@@ -134,12 +125,7 @@ def test_binary_rejects_an_unknown_channel_before_running(tmp_path: Path) -> Non
     rows = ["K_px,K_py"] + ["1.5e7,3.5e6"] * 400
     samples.write_text("\n".join(rows) + "\n", encoding="utf-8")
     out = tmp_path / "metrics.csv"
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(out), "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", out, "--quiet")
     assert done.returncode != 0
     assert "output.channels" in done.stderr and "yaw_damper_bogie1_left_valv'" in done.stderr
     # The message lists what is available, including the new vertical damper forces.
@@ -153,15 +139,9 @@ def test_study_file_selects_the_hydraulic_valve(tmp_path: Path) -> None:
     text = STUDY.replace('yaw_damper = "FSD"', 'yaw_damper = "FSD"\nfsd_trigger = "hydraulic"')
     study.write_text(text.replace("distance = 295.0", "distance = 60.0"), encoding="utf-8")
     out = tmp_path / "metrics.csv"
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "1", "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", out, "--threads", "1", "--quiet")
     assert done.returncode == 0, done.stderr
-    with out.open(encoding="utf-8") as f:
-        rows = list(csv.DictReader(f))
+    rows = _rows(out)
     vehicle = loco.Locomotive.default().replace(C_sy=3.0e4)
     scenario = loco.Scenario(
         scenario="S_high",
@@ -176,12 +156,7 @@ def test_study_file_selects_the_hydraulic_valve(tmp_path: Path) -> None:
     got = np.array([float(rows[0][m]) for m in expected.metric_names])
     assert np.array_equal(got, expected.metrics[0], equal_nan=True)
     study.write_text(text.replace('fsd_trigger = "hydraulic"', 'fsd_trigger = "zero"'))
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(out), "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", out, "--quiet")
     assert done.returncode != 0 and "fsd_trigger" in done.stderr
 
 
@@ -205,15 +180,9 @@ def test_the_same_scenario_keys_mean_the_same_run_in_both_front_ends(tmp_path: P
     samples = tmp_path / "samples.csv"
     samples.write_text("C_sx\n800000.0\n200000.0\n", encoding="utf-8")
     out = tmp_path / "metrics.csv"
-    done = subprocess.run(
-        [str(BINARY), str(study), str(samples), "-o", str(out), "--threads", "0", "--quiet"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = _batch(study, samples, "-o", out, "--threads", "0", "--quiet")
     assert done.returncode == 0, done.stderr
-    with out.open(encoding="utf-8") as f:
-        rows = list(csv.DictReader(f))
+    rows = _rows(out)
     scenario = loco.Scenario(scenario="S_high", **settings)  # type: ignore[arg-type]
     x = np.array([[8e5], [2e5]])
     expected = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=0, progress=False)

@@ -10,7 +10,8 @@ import pytest
 import loco
 
 G = 9.81
-B = 0.7465  # half distance between the nominal contact points, m (parameter file)
+#: Half distance between the nominal contact points, m, read from the parameter file.
+B = loco.Locomotive.default()["track.contact_point_half_distance"]
 
 
 def _sections(direction: str) -> list[dict[str, float | str]]:

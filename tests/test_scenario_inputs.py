@@ -15,6 +15,14 @@ from loco.stability import CriticalSpeed
 S = {"scenario": "S_norm"}
 
 
+def _refusal(settings: dict[str, object], field: str) -> str:
+    """The message of the :class:`loco.ParameterError` refusing ``settings`` (on top of
+    :data:`S`), which must name ``field``."""
+    with pytest.raises(loco.ParameterError, match=f"`{field}`") as error:
+        loco.Scenario(**{**S, **settings}).native()  # type: ignore[arg-type]
+    return str(error.value)
+
+
 @pytest.mark.parametrize(
     ("settings", "field", "words"),
     [
@@ -44,9 +52,7 @@ S = {"scenario": "S_norm"}
 def test_a_wrong_type_is_a_parameter_error_naming_the_field(
     settings: dict[str, object], field: str, words: str
 ) -> None:
-    with pytest.raises(loco.ParameterError, match=f"`{field}`") as error:
-        loco.Scenario(**{**S, **settings}).native()  # type: ignore[arg-type]
-    assert words in str(error.value)
+    assert words in _refusal(settings, field)
 
 
 def test_numpy_and_integral_values_are_accepted() -> None:
@@ -74,9 +80,7 @@ def test_numpy_and_integral_values_are_accepted() -> None:
 def test_cost_bounds_refuse_with_the_field_and_the_reason(
     settings: dict[str, object], field: str, reason: str
 ) -> None:
-    with pytest.raises(loco.ParameterError, match=f"`{field}`") as error:
-        loco.Scenario(**{**S, **settings}).native()  # type: ignore[arg-type]
-    assert reason in str(error.value)
+    assert reason in _refusal(settings, field)
 
 
 def test_the_cost_bounds_hold_in_batches_too() -> None:

@@ -9,6 +9,8 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from loco.metrics import run_metric_names
+from loco.studies.fsd_comparison import JUDGED_BY, STABILITY_FLAGS
 from loco.studies.report import StudyRecord, write_report
 from loco.studies.verdict import verdict, verdict_from_csv
 
@@ -99,3 +101,9 @@ def test_the_verdict_is_the_first_section_of_the_report(tmp_path: Path) -> None:
     )
     headings = [x for x in report.read_text().splitlines() if x.startswith("## ")]
     assert headings == ["## Verdict: which yaw damper holds which scenario", "## A stage"]
+
+
+def test_the_columns_it_reads_are_the_cores_run_metrics() -> None:
+    # The judging metrics and the instability flags by the core's names, so that a renamed
+    # metric fails here and not as a missing column of a finished study.
+    assert {*JUDGED_BY.values(), *STABILITY_FLAGS} <= set(run_metric_names())

@@ -27,7 +27,7 @@ HELP = "frequency response of the linearised vehicle to track irregularities and
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", type=Path, default=Path("out/frf"), help="output directory")
-    parser.add_argument("--scenario", default="S_low", choices=["S_low", "S_norm", "S_high"])
+    parser.add_argument("--scenario", default="S_low", choices=list(loco.simulation.SCENARIOS))
     parser.add_argument(
         "--damper", default="YD2", choices=sorted(dampers.PRESETS), help="yaw damper preset"
     )

@@ -37,6 +37,7 @@ __all__ = [
     "CASES",
     "DAMPERS",
     "JUDGED_BY",
+    "STABILITY_FLAGS",
     "FsdComparison",
     "run_fsd_comparison",
     "save_fsd_comparison",
@@ -55,6 +56,9 @@ VALVE_SUFFIX = "_valve"
 
 #: Metric by which each scenario judges a yaw damper (SPEC §5): W_y on S_low, A_yb on S_high.
 JUDGED_BY: dict[str, str] = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
+#: The bogie instability flags (core run metrics, 0/1): EN 14363 sliding rms over its limit, GB/T
+#: 8 m/s² peaks in 6 cycles.
+STABILITY_FLAGS: tuple[str, ...] = ("ayb_en_unstable", "ayb_gbt_unstable")
 #: Fraction of the record the valves were closed (from the valve channels, not a core metric).
 VALVE_FRACTION = "valve_closed_fraction"
 #: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
@@ -66,11 +70,9 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     "rms",
     "dominant_hz",
     "psd_peak",
-    "wy_max",
-    "ayb_peak_lp",
+    *JUDGED_BY.values(),
     VALVE_FRACTION,
-    "ayb_en_unstable",
-    "ayb_gbt_unstable",
+    *STABILITY_FLAGS,
 )
 
 

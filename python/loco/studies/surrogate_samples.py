@@ -69,7 +69,7 @@ def extension_design(n_total: int, lhs_samples: int, seed: int) -> FloatArray:
     ``lhs_samples``; empty when ``n_total <= lhs_samples``."""
     n = n_total - lhs_samples
     if n <= 0:
-        return np.empty((0, len(latin_hypercube(1, seed=seed)[0])))
+        return np.empty((0, len(names())))
     return latin_hypercube(n, seed=seed + EXTENSION_SEED_OFFSET)
 
 

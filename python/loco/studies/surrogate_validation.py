@@ -24,6 +24,7 @@ from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
 from loco.studies.surrogate import parity_plot
 from loco.studies.surrogate_selection import (
+    CANDIDATES,
     DESCRIPTIONS,
     R2_REQUIRED,
     SPEC_MODEL,
@@ -43,17 +44,24 @@ def select_surrogates(
     n_splits: int = 5,
     seed: int = 0,
     log_target: bool = LOG_TARGET,
+    candidates: Sequence[str] = CANDIDATES,
 ) -> list[Selection]:
     """For each objective (column of ``y``), on the samples where it is finite: every candidate
-    of :mod:`loco.studies.surrogate_selection` scored on the same ``n_splits`` folds, the best
-    refitted on all of them (``selection.model``, the surrogate Sobol' and NSGA-II use) and the
-    SPEC network (``selection.spec_model``)."""
+    of :mod:`loco.studies.surrogate_selection` (or of ``candidates``) scored on the same
+    ``n_splits`` folds, the best refitted on all of them (``selection.model``, the surrogate
+    Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``)."""
     out = []
     for j in range(y.shape[1]):
         ok = np.isfinite(y[:, j])
         out.append(
             select_surrogate(
-                x[ok], y[ok, j], bounds_si(), n_splits=n_splits, seed=seed, log_target=log_target
+                x[ok],
+                y[ok, j],
+                bounds_si(),
+                n_splits=n_splits,
+                seed=seed,
+                log_target=log_target,
+                candidates=candidates,
             )
         )
     return out
@@ -69,13 +77,10 @@ def spec_scores(
 ) -> list[CandidateScore]:
     """The SPEC network's held-out scores for each objective on ``(x, y)`` alone (the Monte
     Carlo's samples), on the folds :func:`select_surrogates` would use there."""
-    out = []
-    for j in range(y.shape[1]):
-        ok = np.isfinite(y[:, j])
-        sel = select_surrogate(x[ok], y[ok, j], bounds_si(), n_splits=n_splits, seed=seed,
-                               log_target=log_target, candidates=(SPEC_MODEL,))  # fmt: skip
-        out.append(sel.scores[SPEC_MODEL])
-    return out
+    only_spec = select_surrogates(
+        x, y, n_splits=n_splits, seed=seed, log_target=log_target, candidates=(SPEC_MODEL,)
+    )
+    return [s.scores[SPEC_MODEL] for s in only_spec]
 
 
 def surrogate_label(selections: Sequence[Selection]) -> str:

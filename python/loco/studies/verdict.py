@@ -26,13 +26,11 @@ import numpy as np
 import pandas as pd
 
 from loco import _loco
-from loco.studies.fsd_comparison import JUDGED_BY
+from loco.studies.fsd_comparison import JUDGED_BY, STABILITY_FLAGS
 from loco.studies.statistics import ALPHA, Ranking, rank
 
 __all__ = ["HOLD_CRITERIA", "ScenarioVerdict", "Verdict", "verdict", "verdict_from_csv"]
 
-#: Instability flags (0/1 per track) whose raising means a damper does not hold S_high.
-STABILITY_FLAGS = ("ayb_en_unstable", "ayb_gbt_unstable")
 #: The criterion each scenario is held by, in words.
 HOLD_CRITERIA: dict[str, str] = {
     "S_low": "an excellent ride, W_y < 2.75 (GB/T 5599-2019, locomotive), on every track",
@@ -136,7 +134,7 @@ def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
     if done.empty:
         return False
     if scenario == "S_low":
-        ratings = [_loco.locomotive_ride_rating(float(w)) for w in done["wy_max"]]
+        ratings = [_loco.locomotive_ride_rating(float(w)) for w in done[JUDGED_BY["S_low"]]]
         return all(r == "excellent" for r in ratings)
     if scenario == "S_high":
         if not all(f in done.columns for f in STABILITY_FLAGS):
