@@ -26,6 +26,7 @@ BAD_VALUES = [
     (["reproduce", "--seed", "-1"], "--seed"),
     (["reproduce", "--seed", "1e3"], "--seed"),
     (["reproduce", "--seed", str(2**64)], "--seed"),
+    (["reproduce", "--seed", str(2**63)], "--seed"),
     (["reproduce", "--workers", "0"], "--workers"),
     (["reproduce", "--chunk-size", "-5"], "--chunk-size"),
     (["damper-bench", "--amplitude", "0"], "--amplitude"),

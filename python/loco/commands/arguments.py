@@ -14,6 +14,8 @@ import os
 import tempfile
 from pathlib import Path
 
+from loco.field_types import MAX_WHOLE
+
 __all__ = [
     "UsageError",
     "finite_float",
@@ -45,12 +47,13 @@ def positive_int(text: str) -> int:
 
 
 def non_negative_int(text: str) -> int:
-    """A whole number >= 0 (seeds)."""
+    """A whole number >= 0 (seeds), at most what a scenario setting takes
+    (:data:`loco.field_types.MAX_WHOLE`)."""
     n = _integer(text)
     if n < 0:
         raise argparse.ArgumentTypeError(f"must be >= 0, got {n}")
-    if n >= 2**64:
-        raise argparse.ArgumentTypeError(f"must be < 2**64, got {n}")
+    if n > MAX_WHOLE:
+        raise argparse.ArgumentTypeError(f"must be <= {MAX_WHOLE}, got {n}")
     return n
 
 
