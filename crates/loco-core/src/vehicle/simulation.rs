@@ -222,26 +222,31 @@ impl VehicleSystem {
         self.start_distance + self.speed.distance_at(t) + self.structure.layout.wheelset_x[w]
     }
 
-    /// Generalized forces `Q(q, q̇)` (N, N·m) at time `t` with damper states from `y`; also fills
-    /// the body states, wheel forces and damper forces, and the damper state rates into `dy`.
-    fn forces(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self.statistics.rhs_evaluations += 1;
+    /// The bodies' states from `y` at time `t`, and on a curve also their states in the reference
+    /// frame the suspension sees (`track_frame`).
+    fn update_body_states(&mut self, t: f64, y: &[f64]) {
         let (q, rest) = y.split_at(N_DOF);
-        let qd = &rest[..N_DOF];
-        self.structure.body_states(q, qd, &mut self.body_states);
-        self.wrenches = [[0.0; 6]; N_BODIES];
-        let speed = self.speed_at(t);
-        // On a curve the suspension sees the bodies in the reference frame (`track_frame`).
+        self.structure
+            .body_states(q, &rest[..N_DOF], &mut self.body_states);
         if let Some(curve) = &self.curve {
             let s_r = self.vehicle_distance(t);
             curve.prepare(
                 &self.structure,
                 s_r,
-                speed,
+                self.speed_at(t),
                 &self.body_states,
                 &mut self.frame_work,
             );
         }
+    }
+
+    /// Generalized forces `Q(q, q̇)` (N, N·m) at time `t` with damper states from `y`; also fills
+    /// the body states, wheel forces and damper forces, and the damper state rates into `dy`.
+    fn forces(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.statistics.rhs_evaluations += 1;
+        self.update_body_states(t, y);
+        self.wrenches = [[0.0; 6]; N_BODIES];
+        let speed = self.speed_at(t);
         let states = match self.curve {
             Some(_) => &self.frame_work.states,
             None => &self.body_states,
@@ -389,20 +394,7 @@ impl OdeSystem for VehicleSystem {
     }
 
     fn after_step(&mut self, t: f64, dt: f64, y: &[f64]) {
-        let (q, rest) = y.split_at(N_DOF);
-        self.structure
-            .body_states(q, &rest[..N_DOF], &mut self.body_states);
-        let speed = self.speed_at(t);
-        if let Some(curve) = &self.curve {
-            let s_r = self.vehicle_distance(t);
-            curve.prepare(
-                &self.structure,
-                s_r,
-                speed,
-                &self.body_states,
-                &mut self.frame_work,
-            );
-        }
+        self.update_body_states(t, y);
         let states = match self.curve {
             Some(_) => &self.frame_work.states,
             None => &self.body_states,
