@@ -35,7 +35,7 @@ struct CurveRun {
 }
 
 /// Runs the locomotive `p` on perfect track with the conical wheel of conicity `lambda` on
-/// knife-edge rails (`contact::builtin::conical`): 10 m straight, a 60 m clothoid, then a left
+/// knife-edge rails (`contact::builtin::conical`; `lambda` 0: the S_norm profiles): 10 m straight, a 60 m clothoid, then a left
 /// curve of `radius` (m) with the cant that balances `speed` (m/s), over `distance` m.
 fn run_cone(p: ParameterSet, lambda: f64, radius: f64, speed: f64, distance: f64) -> CurveRun {
     let mut scenario = Scenario::study("S_norm", speed, distance, 0).unwrap();
