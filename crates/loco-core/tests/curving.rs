@@ -265,8 +265,9 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
         // jump a fraction of a step apart. Checked: with c_n a tenth (research value) the
         // peak falls to 49 N and the rms to 2.8 N; the rest is the onset of the K δ^1.5 term.
         // Any change in rounding moves where the jump falls between the runs' steps (the
-        // peak was 49 N before the schema/handle merge). A contact damping that vanishes with δ (Hunt-Crossley, c δ^1.5 δ̇) would remove the
-        // jump; it changes straight-track results and is left to the contact model.
+        // peak was 49 N before the schema/handle merge). A contact damping that vanishes with
+        // δ (Hunt-Crossley, c δ^1.5 δ̇) would remove the jump; it changes straight-track
+        // results and is left to the contact model.
         let diffs: Vec<f64> = ql.iter().zip(qr).map(|(x, y)| x - y).collect();
         let peak = diffs.iter().fold(0.0f64, |a, d| a.max(d.abs()));
         let rms = (diffs.iter().map(|d| d * d).sum::<f64>() / diffs.len() as f64).sqrt();

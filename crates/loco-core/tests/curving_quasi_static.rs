@@ -35,8 +35,9 @@ struct CurveRun {
 }
 
 /// Runs the locomotive `p` on perfect track with the conical wheel of conicity `lambda` on
-/// knife-edge rails (`contact::builtin::conical`; `lambda` 0: the S_norm profiles): 10 m straight, a 60 m clothoid, then a left
-/// curve of `radius` (m) with the cant that balances `speed` (m/s), over `distance` m.
+/// knife-edge rails (`contact::builtin::conical`; `lambda` 0: the S_norm profiles): 10 m
+/// straight, a 60 m clothoid, then a left curve of `radius` (m) with the cant that balances
+/// `speed` (m/s), over `distance` m.
 fn run_cone(p: ParameterSet, lambda: f64, radius: f64, speed: f64, distance: f64) -> CurveRun {
     let mut scenario = Scenario::study("S_norm", speed, distance, 0).unwrap();
     scenario.track = TrackSpec::Perfect;
@@ -117,6 +118,15 @@ fn wheelset_wrench(
     (wrenches[body], out)
 }
 
+/// Half the distance between the centred wheelset's contact points, l (m), from the table.
+fn half_distance(wr: &WheelRail) -> f64 {
+    wr.table().lookup(0.0).wheels[0]
+        .touching()
+        .unwrap()
+        .lateral
+        .abs()
+}
+
 /// The quasi-static pose of a free wheelset (no suspension, axle load `load` N, no lateral
 /// load) by Newton's method on the lateral force, vertical force, roll, yaw and spin moments.
 fn free_wheelset_pose(wr: &WheelRail, load: f64, speed: f64, radius: f64) -> [f64; 5] {
@@ -172,10 +182,11 @@ fn wheelset_pose(
 #[test]
 fn free_conical_wheelset_rolls_round_a_curve_at_the_pure_rolling_offset() {
     // Wickens, Fundamentals of Rail Vehicle Dynamics (2003), and Iwnicki (ed.), Handbook of
-    // Railway Vehicle Dynamics (2006), on steady curving of a wheelset: a free wheelset with coned wheels of
-    // conicity λ runs round a curve of radius R, with no lateral load, where its rolling radius
-    // difference matches the outer rail's longer path: 2λy = 2 r0 l / R, so y = r0 l / (λ R)
-    // toward the outer rail, with neither longitudinal nor lateral creep (ψ = 0).
+    // Railway Vehicle Dynamics (2006), on the steady curving of a wheelset: a free wheelset with
+    // coned wheels of conicity λ, with no lateral load, runs round a curve of radius R where its
+    // rolling radius difference matches the outer rail's longer path, 2λy = 2 r0 l / R, so
+    // y = r0 l / (λR) toward the outer rail, with neither longitudinal nor lateral creep (ψ = 0).
+    // The conical pair has no flange: its clearance is the contact table's ±25 mm.
     let mut scenario = Scenario::study("S_norm", 30.0, 100.0, 0).unwrap();
     let (wheel, rail) = conical_pair(0.1).unwrap();
     scenario.wheel = wheel;
@@ -186,11 +197,7 @@ fn free_conical_wheelset_rolls_round_a_curve_at_the_pure_rolling_offset() {
     // λ and l of this contact from its table: Δr/2y (the cone's slope as the wheelset rolls on
     // the rail crowns) and the contact points' half distance; r0 of the centred wheelset.
     let lambda = wr.table().lookup(1e-3).rolling_radius_difference() / 2e-3;
-    let l = wr.table().lookup(0.0).wheels[0]
-        .touching()
-        .unwrap()
-        .lateral
-        .abs();
+    let l = half_distance(&wr);
     let r0 = wr.centred_radius();
     let (lo, hi) = wr.table().y_range();
     for radius in [600.0, 1200.0, 3000.0] {
@@ -234,11 +241,7 @@ fn contact_coefficients(wr: &WheelRail, load: f64, speed: f64) -> (f64, f64, f64
     };
     let h = 1e-5;
     let f22 = (at(3, h, f64::INFINITY)[Y] - at(3, -h, f64::INFINITY)[Y]) / (4.0 * h);
-    let l = wr.table().lookup(0.0).wheels[0]
-        .touching()
-        .unwrap()
-        .lateral
-        .abs();
+    let l = half_distance(wr);
     let f11 = -(at(3, 0.0, 1.0 / h)[5] - at(3, 0.0, -1.0 / h)[5]) / (2.0 * h) / (2.0 * l * l);
     // The wheelset settles vertically and in roll at each lateral position.
     let fy = |y: f64| {
@@ -295,11 +298,7 @@ fn a_two_axle_bogie_takes_the_curve_as_the_linear_theory_gives() {
     let node_height = structure.layout.wheel_radius;
     let (f11, f22, kg) = contact_coefficients(&wr, load, speed);
     let lam = wr.table().lookup(1e-3).rolling_radius_difference() / 2e-3;
-    let l = wr.table().lookup(0.0).wheels[0]
-        .touching()
-        .unwrap()
-        .lateral
-        .abs();
+    let l = half_distance(&wr);
     let r0 = wr.centred_radius();
     println!("f11 {f11:.3e} N, f22 {f22:.3e} N, k_g {kg:.3e} N/m, λ {lam:.4}, l {l:.4} m");
     // Unknowns [y1, ψ1, y2, ψ2, y_f, ψ_f]; the equations are linear: J x = c.
@@ -382,11 +381,7 @@ fn load_difference(radius: f64, speed: f64) -> (f64, f64, f64) {
     // track plane, m·√(g² + (V²κ)²), at its centre of gravity; the knife-edge rails hold the
     // contact points at ±l from the centre line. Everything in the vehicle origin's frame,
     // where the centre line at distance x lies x²κ/2 inward.
-    let l = r.system.wheel_rail.table().lookup(0.0).wheels[0]
-        .touching()
-        .unwrap()
-        .lateral
-        .abs();
+    let l = half_distance(&r.system.wheel_rail);
     let g_n = (G * G + (speed * speed * kappa).powi(2)).sqrt();
     let (mut weights, mut spin) = (0.0, 0.0);
     for (i, b) in structure.bodies.iter().enumerate() {
