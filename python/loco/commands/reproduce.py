@@ -379,7 +379,8 @@ def reproduce(
         c = fsd_comparison.run_fsd_comparison(**fsd_args, threads=threads, progress=progress)
         return fsd_comparison.save_fsd_comparison(c, d)
 
-    design_sizes = fsd_design_stage.SIZES[sizes.name]
+    # A preset of its own name, else (a hand-made Sizes) the quick study.
+    design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
 
     def fsd_design(d: Path) -> StudyRecord:
         return fsd_design_stage.run_fsd_design(

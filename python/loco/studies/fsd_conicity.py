@@ -98,7 +98,7 @@ def worn_band_radius(conicity: float, *, tolerance: float = 1e-6) -> float:
     return radius
 
 
-def conicity_wheel(conicity: float) -> loco.Profile:
+def conicity_wheel(conicity: float) -> profiles.Profile:
     """The sweep's wheel of equivalent conicity ``conicity`` (–, in [:data:`MIN_CONICITY`,
     :data:`MAX_CONICITY`]) on the study's rail: a straight cone up to :data:`MAX_CONE`, the
     hollow-worn tread above (module documentation)."""
@@ -183,7 +183,7 @@ def sweep_summary(table: pd.DataFrame) -> pd.DataFrame:
     """Mean, min and max over the tracks of W_y and A_yb per (damper, conicity)."""
     g = table.groupby(["damper", "conicity"], sort=False)[list(METRICS)]
     out = g.agg(["mean", "min", "max"])
-    out.columns = [f"{m}_{s}" for m, s in out.columns]
+    out.columns = [f"{pair[0]}_{pair[1]}" for pair in out.columns]
     return out.reset_index().assign(n_tracks=g.size().to_numpy())
 
 

@@ -12,9 +12,9 @@ Objectives (minimised): W_y on S_low (metric ``wy_max``) and A_yb on S_high (``a
 at the study's speed, after :data:`loco.studies.fsd_comparison.LEAD_IN` of lead-in (the valve
 leaves its start state), on track 0 of the seed. Constraint: the linear critical speed on S_high
 above :data:`SPEED_MARGIN` × the running speed. The linearised model holds the valve in its start
-state (closed: c2 with the equivalent stiffness), so the constraint bounds c2's stability. A design whose valve
-cannot be derived (a cut-off the orifice cannot reach at that stroke: the core refuses it with a
-typed error) or whose run fails is infeasible, not dropped.
+state (closed: c2 with the equivalent stiffness), so the constraint bounds c2's stability. A
+design whose valve cannot be derived (the core refuses it with a typed error naming the field)
+or whose run fails is infeasible, not dropped.
 
 The picked designs (:func:`pick_designs`: the front's two ends and its knee) are re-simulated over
 the conicity sweep of :mod:`loco.studies.fsd_conicity`.
@@ -101,11 +101,18 @@ class DesignSetup:
         }
 
 
-def design_damper(x: Sequence[float]) -> dampers.Damper:
+def design_damper(x: Sequence[float] | FloatArray) -> dampers.Damper:
     """The hydraulic FSD of design vector ``x`` (:data:`VARIABLES` order); the core refuses a
     valve it cannot derive with :class:`loco.ParameterError` naming the field."""
-    values = dict(zip(VARIABLES, (float(v) for v in x), strict=True))
-    return dampers.fsd(trigger=TRIGGER, **values)
+    c1, c2, f_p, delay, stroke = (float(v) for v in x)
+    return dampers.fsd(
+        low_damping=c1,
+        high_damping=c2,
+        cutoff_frequency=f_p,
+        switching_delay=delay,
+        reference_stroke_amplitude=stroke,
+        trigger=TRIGGER,
+    )
 
 
 def parallel_map(fn: Callable[[Any], T], items: Sequence[Any], threads: int | None) -> list[T]:
@@ -202,7 +209,7 @@ class FsdDesignResult:
     def picked_dampers(self) -> dict[str, dampers.Damper]:
         """The picked designs as yaw damper laws, by label."""
         return {
-            label: design_damper(self.front.loc[i, list(VARIABLES)].to_numpy())
+            label: design_damper(self.front.loc[i, list(VARIABLES)].to_numpy(dtype=np.float64))
             for label, i in self.picks.items()
         }
 
@@ -239,7 +246,7 @@ def run_design_study(
     start = time.perf_counter()
     evaluated: list[pd.DataFrame] = []
 
-    class Design(Problem):  # type: ignore[misc]
+    class Design(Problem):
         def __init__(self) -> None:
             bounds = np.array(list(VARIABLES.values()))
             super().__init__(

@@ -45,7 +45,7 @@ class DesignSizes:
 
 
 SIZES: dict[str, DesignSizes] = {
-    "full": DesignSizes(16, 8, 500.0, LEAD_IN, (0.02, 0.05, 0.1, 0.2, 0.3, 0.45, 0.661), 3),
+    "full": DesignSizes(16, 6, 500.0, LEAD_IN, (0.02, 0.05, 0.1, 0.2, 0.3, 0.45, 0.661), 3),
     "quick": DesignSizes(8, 3, 500.0, LEAD_IN, (0.02, 0.1, 0.3, 0.661), 1),
     "tiny": DesignSizes(4, 1, 300.0, 0.0, (0.05, 0.661), 1, ("S_high",)),
 }
@@ -53,9 +53,7 @@ SIZES: dict[str, DesignSizes] = {
 REFERENCES: dict[str, dampers.Damper] = dict(dampers.PRESETS)
 
 
-def design_settings(
-    sizes: DesignSizes, *, speed_kmh: float, seed: int
-) -> dict[str, Any]:
+def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[str, Any]:
     """Everything the stage's numbers depend on, JSON-ready (its stage hash)."""
     setup = fsd_design.DesignSetup(
         speed_kmh=speed_kmh, distance=sizes.distance, lead_in=sizes.lead_in, seed=seed
@@ -88,7 +86,10 @@ def linear_critical_speeds(
 
     values = fsd_design.parallel_map(one, jobs, threads)
     return pd.DataFrame(
-        [{"scenario": s, "damper": n, "linear_kmh": v} for (s, n), v in zip(jobs, values)]
+        [
+            {"scenario": s, "damper": n, "linear_kmh": v}
+            for (s, n), v in zip(jobs, values, strict=True)
+        ]
     )
 
 
@@ -114,7 +115,9 @@ def run_fsd_design(
         seed=seed,
         threads=threads,
     )
-    study = fsd_design.run_design_study(setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed)
+    study = fsd_design.run_design_study(
+        setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed
+    )
     optimisation_seconds = time.perf_counter() - start
     laws = {**REFERENCES, **study.picked_dampers()}
     sweep = fsd_conicity.run_conicity_sweep(
@@ -130,7 +133,7 @@ def run_fsd_design(
     summary = fsd_conicity.sweep_summary(sweep)
     critical = linear_critical_speeds(laws, sizes.critical_scenarios, speed_kmh, threads)
     picks = {
-        label: {k: float(study.front.loc[i, k]) for k in [*fsd_design.VARIABLES, "W_y", "A_yb"]}
+        label: {k: float(study.front[k].iloc[i]) for k in [*fsd_design.VARIABLES, "W_y", "A_yb"]}
         for label, i in study.picks.items()
     }
     seconds = time.perf_counter() - start

@@ -283,7 +283,10 @@ mod tests {
             }
         }
         for bad in [0.0, 0.3, f64::NAN, -0.1] {
-            assert!(conical_tread(bad).unwrap_err().to_string().contains("slope"));
+            assert!(conical_tread(bad)
+                .unwrap_err()
+                .to_string()
+                .contains("slope"));
         }
     }
 }
