@@ -153,7 +153,7 @@ pub fn tread(state: &TreadState) -> Result<Profile> {
             format!("must be in [{MIN_CONE_SLOPE}, {MAX_CONE_SLOPE}], got {slope}"),
         ));
     }
-    if !(state.band_radius >= MIN_BAND_RADIUS) {
+    if state.band_radius.is_nan() || state.band_radius < MIN_BAND_RADIUS {
         return Err(LocoError::param(
             "band_radius",
             format!(
