@@ -125,6 +125,16 @@ def main() -> int:
         ax.plot(
             w["conicity"], w["linear_kmh"].clip(upper=cap), "s", ms=8, mfc="none", color=f"C{i}"
         )
+        if "nonlinear_kmh" in w:
+            # Nonlinear (ramp-down) critical speeds beside the linear squares.
+            ax.plot(
+                w["conicity"] * 1.04,
+                w["nonlinear_kmh"].clip(upper=cap),
+                "x",
+                ms=8,
+                color=f"C{i}",
+                label="nonlinear (ramp-down), all dampers" if i == 0 else None,
+            )
     for pair, g in wheels.groupby("scenario"):
         ax.annotate(str(pair), (g["conicity"].iloc[0], cap * 1.02), fontsize=8, ha="center")
     failed = sweep[sweep["error"] != ""]["conicity"]
@@ -137,8 +147,8 @@ def main() -> int:
         xscale="log",
         xlabel="equivalent conicity (–)",
         ylabel="linear critical speed (km/h)",
-        title="Cone on knife-edge rail (lines), built-in wheels on CN60 (squares); "
-        f"triangles: stable up to {HIGH * 3.6:.0f} km/h",
+        title="Cone on knife-edge rail (lines), built-in wheels on CN60 (squares: linear, "
+        f"crosses: nonlinear ramp-down); triangles: stable up to {HIGH * 3.6:.0f} km/h",
     )
     ax.title.set_fontsize(9)
     ax.set_xticks([0.02, 0.05, 0.1, 0.2, 0.5, 0.8], ["0.02", "0.05", "0.1", "0.2", "0.5", "0.8"])

@@ -18,7 +18,7 @@ import loco
 from loco import dampers
 from loco.cli import main
 from loco.commands.reproduce import TINY, reproduce
-from loco.studies import fsd_comparison, speed_sweep
+from loco.studies import fsd_comparison, fsd_design_stage, speed_sweep
 from loco.studies.parameters import names
 from loco.studies.stages import MARKER, settings_hash
 from loco.studies.surrogate_selection import CANDIDATES
@@ -39,6 +39,9 @@ STAGES = {
     "damper_bench": ["damper_bench.png", "damper_bench_summary.csv"],
     "fsd_comparison": ["fsd_time_histories.png", "fsd_psd.png", "fsd_peaks.png",
                        "fsd_valve.png", "fsd_summary.csv", "fsd_rankings.csv", "fsd_tracks.csv"],
+    "fsd_design": ["fsd_design.png", "fsd_design_population.csv", "fsd_design_front.csv",
+                   "fsd_design_conicity.csv", "fsd_design_conicity_summary.csv",
+                   "fsd_design_critical_speeds.csv", "fsd_design.json"],
 }  # fmt: skip
 ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
 
@@ -145,6 +148,17 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     tests = pd.read_csv(out / "fsd_comparison" / "fsd_rankings.csv")
     pairs = len(fsd_comparison.DAMPERS) * (len(fsd_comparison.DAMPERS) - 1) // 2
     assert len(tests) == 4 * pairs  # (scenario, metric) x damper pairs
+    design = fsd_design_stage.SIZES["tiny"]
+    population = pd.read_csv(out / "fsd_design" / "fsd_design_population.csv")
+    assert len(population) == design.pop_size * design.n_gen
+    front = pd.read_csv(out / "fsd_design" / "fsd_design_front.csv")
+    assert front["feasible"].all() and (front["v_crit_kmh"] >= 1.1 * TINY.speed_kmh).all()
+    sweep = pd.read_csv(out / "fsd_design" / "fsd_design_conicity.csv")
+    assert set(sweep["conicity"]) == set(design.conicities)
+    assert np.allclose(sweep["measured_conicity"], sweep["conicity"], atol=1e-3)
+    assert {"YD1", "YD2", "FSD"} <= set(sweep["damper"]) and (sweep["status"] == 0).all()
+    critical = pd.read_csv(out / "fsd_design" / "fsd_design_critical_speeds.csv")
+    assert set(critical["damper"]) == set(sweep["damper"])
 
 
 def test_rerun_skips_finished_stages(
@@ -199,3 +213,14 @@ def test_stage_hashes_cover_their_inputs() -> None:
     for change in ({"damper_set": fewer}, {"n_tracks": 3}, {"lead_in": 0.0}, {"seed": 1}):
         changed = fsd_comparison.comparison_settings(**{"n_tracks": 2, **change})
         assert settings_hash("fsd", changed) != reference, change
+    sizes = fsd_design_stage.SIZES["tiny"]
+    reference = settings_hash(
+        "fsd_design", fsd_design_stage.design_settings(sizes, speed_kmh=200.0, seed=0)
+    )
+    for size_change in ({"pop_size": 5}, {"conicities": (0.1,)}, {"lead_in": 10.0}):
+        changed = fsd_design_stage.design_settings(
+            dataclasses.replace(sizes, **size_change), speed_kmh=200.0, seed=0
+        )
+        assert settings_hash("fsd_design", changed) != reference, size_change
+    other_seed = fsd_design_stage.design_settings(sizes, speed_kmh=200.0, seed=1)
+    assert settings_hash("fsd_design", other_seed) != reference

@@ -52,6 +52,7 @@ __all__ += [
     "conical_profiles",
     "contact_geometry",
     "contact_setup_defaults",
+    "jm3_tread_profile",
     "load_profile_file",
     "rolling_radius_difference",
 ]
@@ -78,6 +79,9 @@ def load_profile_file(
 def builtin_profile_named(name: str) -> Profile: ...
 def builtin_profile_names() -> list[str]: ...
 def conical_profiles(conicity: float) -> tuple[Profile, Profile]: ...
+def jm3_tread_profile(
+    tread_slope: float, band_radius: float, flange_thickness: float
+) -> Profile: ...
 def contact_setup_defaults() -> list[tuple[str, float]]: ...
 def contact_geometry(
     left_wheel: Profile,

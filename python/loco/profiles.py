@@ -13,9 +13,15 @@ from __future__ import annotations
 
 import os
 
-from loco._loco import Profile, builtin_profile_named, builtin_profile_names, load_profile_file
+from loco._loco import (
+    Profile,
+    builtin_profile_named,
+    builtin_profile_names,
+    jm3_tread_profile,
+    load_profile_file,
+)
 
-__all__ = ["Profile", "builtin", "builtin_names", "load"]
+__all__ = ["Profile", "builtin", "builtin_names", "jm3", "load"]
 
 
 def load(
@@ -46,3 +52,16 @@ def builtin(name: str) -> Profile:
 def builtin_names() -> list[str]:
     """Names accepted by :func:`builtin`."""
     return builtin_profile_names()
+
+
+def jm3(
+    tread_slope: float = 1.0 / 20.0,
+    band_radius: float = 0.5,
+    flange_thickness: float = 0.033,
+) -> Profile:
+    """A JM3-type wheel (``loco_core::contact::builtin::jm3``: the family of the built-in
+    ``jm3-*`` wheels, whose flange height is 28 mm) with tread slope ``tread_slope`` (–) at the
+    taping line, tread band radius ``band_radius`` (m; ``math.inf`` for a straight cone, whose
+    equivalent conicity on any rail is its slope) and ``flange_thickness`` (m). The defaults are
+    ``jm3-new``. A bad field raises :class:`loco.ParameterError` naming it."""
+    return jm3_tread_profile(float(tread_slope), float(band_radius), float(flange_thickness))

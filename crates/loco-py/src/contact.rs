@@ -166,6 +166,24 @@ fn conical_profiles(conicity: f64) -> PyResult<(PyProfile, PyProfile)> {
     Ok((PyProfile { inner: wheel }, PyProfile { inner: rail }))
 }
 
+/// A JM3-type wheel of tread slope `tread_slope` (–), band radius `band_radius` (m, `inf`: a
+/// straight cone) and flange thickness `flange_thickness` (m); bad fields refused by name.
+#[pyfunction]
+fn jm3_tread_profile(
+    tread_slope: f64,
+    band_radius: f64,
+    flange_thickness: f64,
+) -> PyResult<PyProfile> {
+    let state = loco_core::contact::builtin::jm3::TreadState {
+        flange_thickness,
+        tread_slope,
+        band_radius,
+    };
+    let inner =
+        loco_core::contact::builtin::jm3::tread(&state).map_err(crate::errors::to_py_err)?;
+    Ok(PyProfile { inner })
+}
+
 /// Set-up of a wheelset on a track, copied from Python keyword arguments.
 #[derive(Clone)]
 struct Setup {
@@ -380,6 +398,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(builtin_profile_named, m)?)?;
     m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;
     m.add_function(wrap_pyfunction!(conical_profiles, m)?)?;
+    m.add_function(wrap_pyfunction!(jm3_tread_profile, m)?)?;
     m.add_function(wrap_pyfunction!(contact_geometry, m)?)?;
     m.add_function(wrap_pyfunction!(py_rolling_radius_difference, m)?)?;
     Ok(())

@@ -16,6 +16,9 @@ stage finished with the same settings is skipped on a rerun, ``--force`` runs it
 7. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
 8. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
    (the same for every damper), with paired tests of whether each ranking is significant.
+9. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
+   and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
+   preset in its ``SIZES``).
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
 
@@ -55,6 +58,7 @@ from loco.commands.arguments import UsageError, non_negative_int, output_dir, po
 from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import (
     fsd_comparison,
+    fsd_design_stage,
     parameter_stages,
     parameter_study,
     speed_sweep,
@@ -375,6 +379,14 @@ def reproduce(
         c = fsd_comparison.run_fsd_comparison(**fsd_args, threads=threads, progress=progress)
         return fsd_comparison.save_fsd_comparison(c, d)
 
+    # A preset of its own name, else (a hand-made Sizes) the quick study.
+    design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
+
+    def fsd_design(d: Path) -> StudyRecord:
+        return fsd_design_stage.run_fsd_design(
+            design_sizes, d, speed_kmh=sizes.speed_kmh, seed=seed, threads=threads
+        )
+
     stages: list[tuple[str, dict[str, Any], Callable[[Path], StudyRecord]]] = [
         ("speed_sweep", speed_sweep.sweep_settings(**sweep_args), sweep),
         ("monte_carlo", lhs, monte_carlo),
@@ -401,6 +413,11 @@ def reproduce(
         ),
         ("damper_bench", damper_bench.bench_settings(), damper_bench.bench_study),
         ("fsd_comparison", fsd_comparison.comparison_settings(**fsd_args), fsd),
+        (
+            "fsd_design",
+            fsd_design_stage.design_settings(design_sizes, speed_kmh=sizes.speed_kmh, seed=seed),
+            fsd_design,
+        ),
     ]
 
     def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:

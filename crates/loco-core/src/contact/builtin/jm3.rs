@@ -110,15 +110,91 @@ pub const WORN: TreadState = TreadState {
     band_radius: 0.124,
 };
 
+/// Largest slope of [`conical_tread`] (–): steeper cones meet the flange face above the depth
+/// where the flange thickness is measured, so the JM3 flange no longer fits (about 0.28).
+pub const MAX_CONE_SLOPE: f64 = 0.25;
+/// Smallest slope of [`conical_tread`] (–): flatter than any service tread.
+pub const MIN_CONE_SLOPE: f64 = 0.005;
+
+/// The new JM3-type wheel with its tread band replaced by a straight cone of slope `slope` (–)
+/// through the taping line (`band_radius` infinite): the flange, the 30 mm of band beyond the
+/// taping line and the return to the 1:20 outer tread as in [`NEW`]. While the contact stays on
+/// the cone, the contact point on a rail of any shape is where the rail's slope equals the
+/// cone's, so it does not move and EN 15302's Δr is exactly 2·slope·y: the equivalent conicity
+/// is the slope. Slopes in [[`MIN_CONE_SLOPE`], [`MAX_CONE_SLOPE`]].
+pub fn conical_tread(slope: f64) -> Result<Profile> {
+    if !(slope.is_finite() && (MIN_CONE_SLOPE..=MAX_CONE_SLOPE).contains(&slope)) {
+        return Err(LocoError::param(
+            "slope",
+            format!("must be in [{MIN_CONE_SLOPE}, {MAX_CONE_SLOPE}], got {slope}"),
+        ));
+    }
+    let state = TreadState {
+        tread_slope: slope,
+        band_radius: f64::INFINITY,
+        ..NEW
+    };
+    jm3(&format!("jm3-cone {slope}"), &state)
+}
+
+/// Smallest band radius of [`tread`], m: below it the band no longer fits between the flange
+/// root and the outer tread.
+pub const MIN_BAND_RADIUS: f64 = 0.1;
+
+/// A JM3-type wheel of any tread state (the family [`NEW`], [`THIN_FLANGE`] and [`WORN`] belong
+/// to), named after its state: `tread_slope` in [[`MIN_CONE_SLOPE`], [`MAX_CONE_SLOPE`]],
+/// `band_radius` ≥ [`MIN_BAND_RADIUS`] m or infinite (a straight cone), `flange_thickness` in
+/// [22, 34] mm (service limit to new). Each bad field is refused by name.
+pub fn tread(state: &TreadState) -> Result<Profile> {
+    let slope = state.tread_slope;
+    if !(slope.is_finite() && (MIN_CONE_SLOPE..=MAX_CONE_SLOPE).contains(&slope)) {
+        return Err(LocoError::param(
+            "tread_slope",
+            format!("must be in [{MIN_CONE_SLOPE}, {MAX_CONE_SLOPE}], got {slope}"),
+        ));
+    }
+    if state.band_radius.is_nan() || state.band_radius < MIN_BAND_RADIUS {
+        return Err(LocoError::param(
+            "band_radius",
+            format!(
+                "must be >= {MIN_BAND_RADIUS} m (or infinite), got {}",
+                state.band_radius
+            ),
+        ));
+    }
+    let t = state.flange_thickness;
+    if !(t.is_finite() && (0.022..=0.034).contains(&t)) {
+        return Err(LocoError::param(
+            "flange_thickness",
+            format!("must be in [0.022, 0.034] m, got {t}"),
+        ));
+    }
+    let name = format!(
+        "jm3 slope {slope:.4} band {:.4} m flange {t:.4} m",
+        state.band_radius
+    );
+    jm3(&name, state)
+}
+
+/// Appends the tread band of `state` turning by `length` m of path (a line when the band is
+/// straight, `band_radius` infinite).
+fn band(builder: ProfileBuilder, state: &TreadState, length: f64) -> ProfileBuilder {
+    if state.band_radius.is_finite() {
+        builder.arc(state.band_radius, -length / state.band_radius)
+    } else {
+        builder.line(length)
+    }
+}
+
 /// The path for a given face length and inner band length (m), origin at the back-side start.
 fn path(state: &TreadState, face: f64, inner_band: f64) -> ProfileBuilder {
     let at_taping = state.tread_slope.atan();
     let band_start = at_taping + inner_band / state.band_radius;
-    ProfileBuilder::new(0.0, 0.0, BACK_DIRECTION)
+    let to_band = ProfileBuilder::new(0.0, 0.0, BACK_DIRECTION)
         .arc(TIP_RADIUS, FLANGE_ANGLE - BACK_DIRECTION)
         .line(face)
-        .arc(ROOT_RADIUS, -(FLANGE_ANGLE - band_start))
-        .arc(state.band_radius, -(band_start - at_taping))
+        .arc(ROOT_RADIUS, -(FLANGE_ANGLE - band_start));
+    band(to_band, state, inner_band)
 }
 
 /// The JM3-type wheel profile `name` in state `state` (profile frame, origin at the taping line).
@@ -143,10 +219,14 @@ pub fn jm3(name: &str, state: &TreadState) -> Result<Profile> {
             // band does not leave an exaggerated false flange at the field side.
             let band_end = state.tread_slope.atan() - BAND_OUTER_LENGTH / state.band_radius;
             let outer_turn = OUTER_SLOPE.atan() - band_end;
-            let full = to_taping
-                .arc(state.band_radius, -BAND_OUTER_LENGTH / state.band_radius)
-                .arc(OUTER_RADIUS, outer_turn)
-                .line(OUTER_LENGTH);
+            let banded = band(to_taping, state, BAND_OUTER_LENGTH);
+            // A cone of exactly 1:20 needs no return arc.
+            let returned = if outer_turn.abs() > 1e-9 {
+                banded.arc(OUTER_RADIUS, outer_turn)
+            } else {
+                banded
+            };
+            let full = returned.line(OUTER_LENGTH);
             let (ys, zs) = full.points(SPACING)?;
             let (ys, zs): (Vec<f64>, Vec<f64>) =
                 ys.iter().zip(&zs).map(|(y, z)| (y - ty, z - tz)).unzip();
@@ -187,6 +267,26 @@ mod tests {
                 (slope - state.tread_slope).abs() < 2e-3,
                 "{name}: slope {slope}"
             );
+        }
+    }
+
+    #[test]
+    fn conical_tread_keeps_the_flange_and_is_straight() {
+        for slope in [MIN_CONE_SLOPE, 0.02, 0.05, 0.1, MAX_CONE_SLOPE] {
+            let wheel = conical_tread(slope).unwrap();
+            let tip = wheel.z().iter().copied().fold(f64::MAX, f64::min);
+            assert!((tip + FLANGE_HEIGHT).abs() < 1e-7, "{slope}: tip {tip}");
+            // Straight from 10 mm inside to 25 mm outside the taping line (the band ends at 30 mm).
+            for y in [-0.010, -0.005, 0.0, 0.01, 0.025] {
+                let s = wheel.slope(y).unwrap();
+                assert!((s - slope).abs() < 1e-4, "{slope}: slope {s} at {y}");
+            }
+        }
+        for bad in [0.0, 0.3, f64::NAN, -0.1] {
+            assert!(conical_tread(bad)
+                .unwrap_err()
+                .to_string()
+                .contains("slope"));
         }
     }
 }

@@ -1,0 +1,239 @@
+"""The ``fsd_design`` stage of ``loco reproduce``: the FSD design study
+(:mod:`loco.studies.fsd_design`), its picked designs and the reference yaw dampers over the
+conicity sweep (:mod:`loco.studies.fsd_conicity`), their linear critical speeds on the three
+scenarios, one figure.
+
+Sizes per preset (:data:`SIZES`): ``full`` is population 16 × 8 generations (128 designs, each
+two 1 000 m runs and one linear critical speed) and 7 conicities × 3 tracks for 6 dampers, about
+10 minutes on 2 idle cores (README, "FSD design study"); ``quick`` a small version, ``tiny`` the
+test's (300 m, no lead-in).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+import loco
+from loco import dampers
+from loco.studies import fsd_conicity, fsd_design
+from loco.studies.fsd_comparison import LEAD_IN
+from loco.studies.plotting import pyplot, save_figure
+from loco.studies.report import StudyRecord, save_json, save_table
+
+__all__ = ["SIZES", "DesignSizes", "design_settings", "run_fsd_design"]
+
+
+@dataclass(frozen=True)
+class DesignSizes:
+    """NSGA-II ``pop_size`` × ``n_gen``; each run records ``distance`` m after ``lead_in`` m; the
+    sweep's ``conicities`` (–) on ``n_tracks`` tracks; the linear critical speeds of every damper
+    on ``critical_scenarios``."""
+
+    pop_size: int
+    n_gen: int
+    distance: float
+    lead_in: float
+    conicities: tuple[float, ...]
+    n_tracks: int
+    critical_scenarios: tuple[str, ...] = ("S_low", "S_norm", "S_high")
+
+
+SIZES: dict[str, DesignSizes] = {
+    "full": DesignSizes(16, 6, 500.0, LEAD_IN, (0.02, 0.05, 0.1, 0.2, 0.3, 0.45, 0.661), 3),
+    "quick": DesignSizes(8, 3, 500.0, LEAD_IN, (0.02, 0.1, 0.3, 0.661), 1),
+    "tiny": DesignSizes(4, 1, 300.0, 0.0, (0.05, 0.661), 1, ("S_high",)),
+}
+#: The reference yaw dampers of the sweep: the study's (the paper's FSD is ``FSD``).
+REFERENCES: dict[str, dampers.Damper] = dict(dampers.PRESETS)
+
+
+def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[str, Any]:
+    """Everything the stage's numbers depend on, JSON-ready (its stage hash)."""
+    setup = fsd_design.DesignSetup(
+        speed_kmh=speed_kmh, distance=sizes.distance, lead_in=sizes.lead_in, seed=seed
+    )
+    return {
+        **setup.settings(),
+        **asdict(sizes),
+        "nsga2_seed": seed,
+        "references": {n: dampers.describe(d) for n, d in REFERENCES.items()},
+    }
+
+
+def linear_critical_speeds(
+    laws: dict[str, dampers.Damper],
+    scenarios: tuple[str, ...],
+    speed_kmh: float,
+    threads: int | None,
+) -> pd.DataFrame:
+    """Linear critical speed (km/h; ``inf`` above 540 km/h) of every law on ``scenarios``, with
+    the valve as the linearisation holds it (its start state, closed)."""
+    jobs = [(s, n) for s in scenarios for n in laws]
+    vehicle = loco.Locomotive.default()
+
+    def one(job: tuple[str, str]) -> float:
+        s = loco.Scenario(scenario=job[0], speed=speed_kmh / 3.6, distance=100.0)
+        v = loco.critical_speed(
+            vehicle, s.replace(yaw_damper=laws[job[1]]), high=fsd_design.SEARCH_HIGH
+        )
+        return float(v) * 3.6
+
+    values = fsd_design.parallel_map(one, jobs, threads)
+    return pd.DataFrame(
+        [
+            {"scenario": s, "damper": n, "linear_kmh": v}
+            for (s, n), v in zip(jobs, values, strict=True)
+        ]
+    )
+
+
+def run_fsd_design(
+    sizes: DesignSizes,
+    out_dir: str | Path,
+    *,
+    speed_kmh: float = 200.0,
+    seed: int = 0,
+    threads: int | None = None,
+) -> StudyRecord:
+    """Run the study into ``out_dir``; files: ``fsd_design_population.csv`` (every design and
+    generation), ``fsd_design_front.csv``, ``fsd_design_conicity.csv`` (every run of the sweep)
+    and ``..._summary.csv``, ``fsd_design_critical_speeds.csv``, ``fsd_design.png``,
+    ``fsd_design.json``."""
+    start = time.perf_counter()
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    setup = fsd_design.DesignSetup(
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        threads=threads,
+    )
+    study = fsd_design.run_design_study(
+        setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed
+    )
+    optimisation_seconds = time.perf_counter() - start
+    laws = {**REFERENCES, **study.picked_dampers()}
+    sweep = fsd_conicity.run_conicity_sweep(
+        laws,
+        sizes.conicities,
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        n_tracks=sizes.n_tracks,
+        threads=threads,
+    )
+    summary = fsd_conicity.sweep_summary(sweep)
+    critical = linear_critical_speeds(laws, sizes.critical_scenarios, speed_kmh, threads)
+    picks = {
+        label: {k: float(study.front[k].iloc[i]) for k in [*fsd_design.VARIABLES, "W_y", "A_yb"]}
+        for label, i in study.picks.items()
+    }
+    seconds = time.perf_counter() - start
+    settings = {
+        **design_settings(sizes, speed_kmh=speed_kmh, seed=seed),
+        "loco_version": loco.__version__,
+        "picked_designs": picks,
+        "designs_evaluated": len(study.population),
+        "feasible_designs": int(study.population["feasible"].sum()),
+        "optimisation_seconds": optimisation_seconds,
+        "seconds": seconds,
+    }
+    figure = plot_design(study, summary, out / "fsd_design.png", sizes, speed_kmh)
+    tables = [
+        save_table(study.population, out / "fsd_design_population.csv"),
+        save_table(study.front, out / "fsd_design_front.csv"),
+        save_table(sweep, out / "fsd_design_conicity.csv"),
+        save_table(summary, out / "fsd_design_conicity_summary.csv"),
+        save_table(critical, out / "fsd_design_critical_speeds.csv"),
+        save_json(settings, out / "fsd_design.json"),
+    ]
+    return StudyRecord(
+        name=out.name,
+        title="FSD design study: NSGA-II on the simulator, conicity sweep (issue 14)",
+        figures=[figure],
+        tables=tables,
+        parameters={k: v for k, v in settings.items() if k != "references"},
+        seconds=seconds,
+        notes=_notes(study, summary, critical, optimisation_seconds, speed_kmh),
+    )
+
+
+def _notes(
+    study: fsd_design.FsdDesignResult,
+    summary: pd.DataFrame,
+    critical: pd.DataFrame,
+    optimisation_seconds: float,
+    speed_kmh: float,
+) -> str:
+    pop = study.population
+    lines = [
+        f"{len(pop)} designs simulated ({int(pop['feasible'].sum())} feasible: linear critical "
+        f"speed on S_high with the valve closed ≥ {fsd_design.SPEED_MARGIN} × {speed_kmh:g} "
+        f"km/h and both runs finished) in {optimisation_seconds:.0f} s; front of "
+        f"{len(study.front)}: W_y {study.front['W_y'].min():.3f}–{study.front['W_y'].max():.3f},"
+        f" A_yb {study.front['A_yb'].min():.3f}–{study.front['A_yb'].max():.3f} m/s²."
+        if len(study.front)
+        else f"{len(pop)} designs simulated, none feasible."
+    ]
+    for label, i in study.picks.items():
+        row = study.front.loc[i]
+        lines.append(
+            f"{label}: c1 {row['low_damping'] / 1e3:.0f}, c2 {row['high_damping'] / 1e3:.0f} "
+            f"kN·s/m, f_p {row['cutoff_frequency']:.2f} Hz, delay {row['switching_delay']:.3f} s,"
+            f" reference stroke {row['reference_stroke_amplitude'] * 1e3:.2f} mm."
+        )
+    table = critical.pivot(index="damper", columns="scenario", values="linear_kmh")
+    scenarios = list(dict.fromkeys(critical["scenario"]))
+    lines.append(
+        f"Linear critical speed (km/h, valve closed) {' / '.join(scenarios)}: "
+        + "; ".join(
+            f"{d} " + " / ".join(f"{table.loc[d, s]:.0f}" for s in scenarios) for d in table.index
+        )
+        + "."
+    )
+    return " ".join(lines)
+
+
+def plot_design(
+    study: fsd_design.FsdDesignResult,
+    summary: pd.DataFrame,
+    path: Path,
+    sizes: DesignSizes,
+    speed_kmh: float,
+) -> Path:
+    """Designs in the objective plane (grey: infeasible), and W_y and A_yb against conicity for
+    every damper (mean and range over the tracks)."""
+    plt = pyplot()
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5), layout="constrained")
+    pop = study.population
+    ok = pop["feasible"].to_numpy()
+    axes[0].scatter(pop["W_y"][~ok], pop["A_yb"][~ok], s=10, color="0.7", label="infeasible")
+    axes[0].scatter(pop["W_y"][ok], pop["A_yb"][ok], s=12, color="C0", label="feasible")
+    if len(study.front):
+        axes[0].plot(study.front["W_y"], study.front["A_yb"], "o-", color="C3", label="front")
+    axes[0].set(xlabel="W_y, S_low", ylabel="A_yb peak, S_high (m/s²)", title="designs")
+    axes[0].legend(fontsize=7)
+    for ax, metric, label in ((axes[1], "wy_max", "W_y"), (axes[2], "ayb_peak_lp", "A_yb (m/s²)")):
+        for k, name in enumerate(dict.fromkeys(summary["damper"])):
+            c, mean, lo, hi = fsd_conicity.summary_array(summary, name, metric).T
+            err = np.vstack([mean - lo, hi - mean])
+            ax.errorbar(c, mean, yerr=err, fmt="o-", ms=4, capsize=3, color=f"C{k}", label=name)
+        ax.set(xscale="log", xlabel="equivalent conicity at 3 mm (–)", ylabel=label)
+        ticks = list(sizes.conicities)
+        ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
+        ax.minorticks_off()
+        ax.grid(True, alpha=0.3)
+    axes[1].legend(fontsize=7)
+    fig.suptitle(
+        f"FSD design (hydraulic valve): NSGA-II pop {sizes.pop_size} × {sizes.n_gen} gen, "
+        f"{speed_kmh:g} km/h; conicity sweep on {sizes.n_tracks} track(s); loco {loco.__version__}"
+    )
+    return save_figure(fig, path)
