@@ -39,6 +39,7 @@ STAGES = {
     "damper_bench": ["damper_bench.png", "damper_bench_summary.csv"],
     "fsd_comparison": ["fsd_time_histories.png", "fsd_psd.png", "fsd_peaks.png",
                        "fsd_valve.png", "fsd_summary.csv", "fsd_rankings.csv", "fsd_tracks.csv"],
+    "curving": ["curving.png", "curving.csv", "curving.json"],
 }  # fmt: skip
 ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
 
