@@ -111,16 +111,18 @@ def sliding_mean(
     n = int(np.floor((hi - lo - window) / spacing + 1e-9)) + 1
     if n <= 0:
         return np.empty(0), np.empty(0)
-    a = lo + spacing * np.arange(n)
+    a: FloatArray = lo + spacing * np.arange(n, dtype=np.float64)
     cumulative = np.concatenate([[0.0], np.cumsum(0.5 * (x[1:] + x[:-1]) * np.diff(s))])
 
     def integral(p: FloatArray) -> FloatArray:
         i = np.clip(np.searchsorted(s, p, side="right") - 1, 0, s.size - 2)
         frac = p - s[i]
         slope = (x[i + 1] - x[i]) / (s[i + 1] - s[i])
-        return cumulative[i] + frac * (x[i] + 0.5 * slope * frac)
+        out: FloatArray = cumulative[i] + frac * (x[i] + 0.5 * slope * frac)
+        return out
 
-    return a + 0.5 * window, (integral(a + window) - integral(a)) / window
+    means: FloatArray = (integral(a + window) - integral(a)) / window
+    return a + 0.5 * window, means
 
 
 @dataclass(frozen=True)
