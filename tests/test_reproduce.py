@@ -42,6 +42,7 @@ STAGES = {
     "fsd_design": ["fsd_design.png", "fsd_design_population.csv", "fsd_design_front.csv",
                    "fsd_design_conicity.csv", "fsd_design_conicity_summary.csv",
                    "fsd_design_critical_speeds.csv", "fsd_design.json"],
+    "curving": ["curving.png", "curving.csv", "curving.json"],
 }  # fmt: skip
 ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
 

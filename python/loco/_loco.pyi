@@ -458,6 +458,7 @@ __all__ += [
     "body_names",
     "default_vehicle_toml",
     "dof_names",
+    "flange_contact_angle",
     "linear_critical_speed",
     "linearise",
     "metric_channels",
@@ -465,6 +466,8 @@ __all__ += [
     "ramp_down",
     "simulate",
     "study_parameters",
+    "wheel_channels",
+    "wheelset_channels",
 ]
 
 @final
@@ -495,6 +498,9 @@ def study_parameters() -> list[tuple[str, str]]: ...
 def dof_names() -> list[str]: ...
 def body_names() -> list[str]: ...
 def metric_channels() -> dict[str, str]: ...
+def wheel_channels() -> dict[str, list[str]]: ...
+def wheelset_channels() -> dict[str, list[str]]: ...
+def flange_contact_angle() -> float: ...
 def body_motion_names() -> list[str]: ...
 def mode_energies(
     vehicle: Vehicle,

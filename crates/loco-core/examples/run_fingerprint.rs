@@ -6,13 +6,34 @@
 //! [S_high|S_low] [prepare|curve]` (`prepare`: build contact and track only, to subtract set-up
 //! cost; `curve`: the same run on the design of `scripts/curve_cost.py`, a 60 m transition into
 //! R = 1200 m with 100 mm cant, to count what the curve terms cost against the straight run).
+//!
+//! `fingerprint` hashes the channels recorded before the curving channels were added (so the
+//! number stays comparable across that change); `curving_fingerprint` hashes the curving
+//! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution.
 
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
 use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::wheel_channels::{
+    wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
+};
+use std::collections::HashSet;
 use std::sync::Arc;
+
+/// FNV-1a over the bits of every sample of `channels`.
+fn fnv<'a>(channels: impl Iterator<Item = &'a Vec<f64>>) -> u64 {
+    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    for channel in channels {
+        for v in channel {
+            for byte in v.to_bits().to_le_bytes() {
+                hash = (hash ^ byte as u64).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+    }
+    hash
+}
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -44,15 +65,24 @@ fn main() {
         return;
     }
     let result = simulate_prepared(structure, wheel_rail, track, &scenario, None).unwrap();
-    // FNV-1a over the bits of every sample of every channel.
-    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
-    for channel in &result.output.channels {
-        for v in channel {
-            for byte in v.to_bits().to_le_bytes() {
-                hash = (hash ^ byte as u64).wrapping_mul(0x0100_0000_01b3);
+    let mut curving: HashSet<String> = (0..4)
+        .map(|w| wheelset_channel(w, WheelsetQuantity::GuidingForce))
+        .collect();
+    for w in 0..4 {
+        for side in 0..2 {
+            for q in CURVING_WHEEL_QUANTITIES {
+                curving.insert(wheel_channel(w, side, q));
             }
         }
     }
+    let out = &result.output;
+    let is_curving = |i: &usize| curving.contains(&out.names[*i]);
+    let all = 0..out.channels.len();
+    let hash = fnv(all
+        .clone()
+        .filter(|i| !is_curving(i))
+        .map(|i| &out.channels[i]));
+    let curving_hash = fnv(all.filter(is_curving).map(|i| &out.channels[i]));
     let m = &result.metrics;
     println!("creep {} scenario {name}", creep.name());
     println!("wy_max {:.17e}", m.wy_max);
@@ -60,4 +90,5 @@ fn main() {
     println!("ayc_psd_peak {:.17e}", m.ayc_psd_peak);
     println!("rhs_evaluations {}", result.statistics.rhs_evaluations);
     println!("fingerprint {hash:016x}");
+    println!("curving_fingerprint {curving_hash:016x}");
 }

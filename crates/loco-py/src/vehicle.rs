@@ -17,6 +17,9 @@ use loco_core::vehicle::run::RunOutput;
 use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 use loco_core::vehicle::run_statistics::RunStatistics;
 use loco_core::vehicle::scenario::{linearised, simulate_cancellable};
+use loco_core::vehicle::wheel_channels::{
+    wheel_channel_table, wheelset_channel_table, FLANGE_CONTACT_ANGLE,
+};
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -51,6 +54,26 @@ fn metric_channels() -> BTreeMap<&'static str, &'static str> {
         ("A_zc", CARBODY_VERTICAL),
         ("A_yb", BOGIE_LATERAL),
     ])
+}
+
+/// The per-wheel channels by quantity (`Q`, `Y`, `YQ`, `dQQ`, `Tgamma`, `contact_angle`,
+/// `flange`), each a list of names wheelset by wheelset, left before right.
+#[pyfunction]
+fn wheel_channels() -> BTreeMap<&'static str, Vec<String>> {
+    wheel_channel_table().into_iter().collect()
+}
+
+/// The per-wheelset channels by quantity (`y`, `yaw` — the angle of attack on a curve — and
+/// `sumY`), each a list of names wheelset by wheelset.
+#[pyfunction]
+fn wheelset_channels() -> BTreeMap<&'static str, Vec<String>> {
+    wheelset_channel_table().into_iter().collect()
+}
+
+/// Contact angle above which a loaded point counts as flange contact (channel `flange`), rad.
+#[pyfunction]
+fn flange_contact_angle() -> f64 {
+    FLANGE_CONTACT_ANGLE
 }
 
 /// Names of the 25 bodies.
@@ -318,6 +341,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(dof_names, m)?)?;
     m.add_function(wrap_pyfunction!(body_names, m)?)?;
     m.add_function(wrap_pyfunction!(metric_channels, m)?)?;
+    m.add_function(wrap_pyfunction!(wheel_channels, m)?)?;
+    m.add_function(wrap_pyfunction!(wheelset_channels, m)?)?;
+    m.add_function(wrap_pyfunction!(flange_contact_angle, m)?)?;
     m.add_function(wrap_pyfunction!(body_motion_names, m)?)?;
     m.add_function(wrap_pyfunction!(mode_energies, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;

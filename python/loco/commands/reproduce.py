@@ -19,6 +19,9 @@ stage finished with the same settings is skipped on a rerun, ``--force`` runs it
 9. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
    and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
    preset in its ``SIZES``).
+10. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
+    600–7000 m at 0–150 mm cant deficiency, ΣY, Y/Q and Y_qst by EN 14363
+    (:mod:`loco.studies.curving`).
 
 Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
 
@@ -57,6 +60,7 @@ from loco.commands import damper_bench
 from loco.commands.arguments import UsageError, non_negative_int, output_dir, positive_int
 from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import (
+    curving,
     fsd_comparison,
     fsd_design_stage,
     parameter_stages,
@@ -86,7 +90,8 @@ class Sizes:
     scenario); ``surrogate_base`` the Saltelli N on the surrogate; ``kfold`` the folds of the R²;
     ``pop_size`` and ``n_gen`` NSGA-II; ``n_verify`` the Pareto points re-simulated;
     ``n_tracks`` the synthesised tracks every case of the speed sweep and the damper comparison
-    runs on (their tables give the mean and 95 % interval over them).
+    runs on (their tables give the mean and 95 % interval over them); ``curving_sizes`` the
+    curving stage's sizes (None: no curving stage).
     """
 
     name: str
@@ -102,6 +107,7 @@ class Sizes:
     n_gen: int
     n_verify: int
     n_tracks: int
+    curving_sizes: curving.CurvingSizes | None
 
     def runs(self) -> int:
         """Simulations of 'distance' at 'speed_kmh' this costs, about (the sweep's slower runs
@@ -112,7 +118,10 @@ class Sizes:
         fsd = 6 * (1 + fsd_comparison.LEAD_IN / self.distance)
         training = max(self.lhs_samples, self.surrogate_samples)
         parameters = n_obj * (training + saltelli + self.n_verify)
-        return round(self.n_tracks * (3 * sweep + fsd) + parameters)
+        # A curving run (lead-in and curve, about 0.85 km at 90-280 km/h) costs about two.
+        c = self.curving_sizes
+        curves = 0 if c is None else 2 * 3 * len(c.curves()) * len(c.deficiencies_mm)
+        return round(self.n_tracks * (3 * sweep + fsd) + parameters + curves)
 
 
 #: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples; the
@@ -132,6 +141,7 @@ FULL = Sizes(
     n_gen=100,
     n_verify=20,
     n_tracks=8,
+    curving_sizes=curving.FULL_SIZES,
 )
 #: The README's main job: < 15 min on 2 cores (about 1 300 runs of 500 m). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
@@ -147,6 +157,7 @@ QUICK = dataclasses.replace(
     surrogate_base=4096,
     n_verify=8,
     n_tracks=4,
+    curving_sizes=None,
 )
 #: For tests: every stage on a few short runs (300 m is the shortest record the metrics take at
 #: 200 km/h, and 10 RBF centres need 10 training samples in each of 3 folds).
@@ -164,6 +175,7 @@ TINY = dataclasses.replace(
     n_gen=4,
     n_verify=3,
     n_tracks=2,
+    curving_sizes=curving.TINY_SIZES,
 )
 PRESETS: dict[str, Sizes] = {s.name: s for s in (QUICK, FULL, TINY)}
 
@@ -419,6 +431,19 @@ def reproduce(
             fsd_design,
         ),
     ]
+    if sizes.curving_sizes is not None:
+        curving_args: dict[str, Any] = {
+            "curves": sizes.curving_sizes.curves(),
+            "deficiencies_mm": sizes.curving_sizes.deficiencies_mm,
+            "lead_in": sizes.curving_sizes.lead_in,
+            "seed": seed,
+        }
+
+        def curves(d: Path) -> StudyRecord:
+            study = curving.run_curving(**curving_args, threads=threads, progress=progress)
+            return curving.save_curving(study, d)
+
+        stages.append(("curving", curving.curving_settings(**curving_args), curves))
 
     def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:
         """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""

@@ -26,6 +26,8 @@
 //! - [`statics`]: the static equilibrium every run starts from; [`run_statistics`]: what a run
 //!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
 //!   scenario must keep (lowest speed, most steps and samples, largest creep grid).
+//! - [`wheel_channels`]: the per-wheel and per-wheelset channels (Q, Y, Y/Q, ΔQ/Q0, T·γ, contact
+//!   angle, flange contact, ΣY), named once.
 
 pub mod bodies;
 pub mod creep_model;
@@ -59,4 +61,5 @@ pub mod track_frame;
 pub mod track_input;
 pub mod track_limits;
 pub mod units;
+pub mod wheel_channels;
 pub mod wheel_rail;

@@ -4,8 +4,9 @@
 //! above each bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
 //! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
 //! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the force of every damper (N) and the
-//! frequency-valve scale factor of each yaw damper (0 open, 1 closed). [`channel_names`] lists
-//! them in the order [`run`] records them.
+//! frequency-valve scale factor of each yaw damper (0 open, 1 closed), then the curving channels
+//! (per wheel ΔQ/Q0, T·γ, contact angle, flange contact; per wheelset ΣY; named in
+//! [`super::wheel_channels`]). [`channel_names`] lists them in the order [`run`] records them.
 
 use super::integrator::{OdeSystem, Rk4Workspace};
 use super::kinematics::point_motion;
@@ -13,6 +14,10 @@ use super::layout::*;
 use super::simulation::VehicleSystem;
 use super::structure::VehicleStructure;
 use super::suspension::DamperRole;
+use super::wheel_channels::{
+    wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
+    WHEELSET_MOTION_QUANTITIES, WHEEL_FORCE_QUANTITIES,
+};
 use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -160,13 +165,14 @@ pub fn channel_names(structure: &VehicleStructure) -> Result<Vec<String>> {
 pub(crate) fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<String> {
     let mut names: Vec<String> = probes.acceleration.iter().map(|p| p.0.clone()).collect();
     for w in 0..N_WHEELSETS {
-        names.push(format!("wheelset{}_y", w + 1));
-        names.push(format!("wheelset{}_yaw", w + 1));
+        for q in WHEELSET_MOTION_QUANTITIES {
+            names.push(wheelset_channel(w, q));
+        }
     }
     for w in 0..N_WHEELSETS {
-        for side in ["left", "right"] {
-            for q in ["Q", "Y", "YQ"] {
-                names.push(format!("wheel{}_{side}_{q}", w + 1));
+        for side in 0..2 {
+            for q in WHEEL_FORCE_QUANTITIES {
+                names.push(wheel_channel(w, side, q));
             }
         }
     }
@@ -177,6 +183,17 @@ pub(crate) fn names_of(structure: &VehicleStructure, probes: &Probes) -> Vec<Str
             DamperQuantity::Valve => format!("{name}_valve"),
             DamperQuantity::Stroke => format!("{name}_stroke"),
         });
+    }
+    // The curving channels, appended so every older channel keeps its position.
+    for w in 0..N_WHEELSETS {
+        for side in 0..2 {
+            for q in CURVING_WHEEL_QUANTITIES {
+                names.push(wheel_channel(w, side, q));
+            }
+        }
+    }
+    for w in 0..N_WHEELSETS {
+        names.push(wheelset_channel(w, WheelsetQuantity::GuidingForce));
     }
     names
 }
@@ -327,15 +344,12 @@ pub(crate) fn sample(
         push(y[wheelset(w) + Y]);
         push(y[wheelset(w) + YAW]);
     }
+    let static_load = s.total_mass() * s.gravity / (2 * N_WHEELSETS) as f64;
     for w in 0..N_WHEELSETS {
         for f in &system.wheel_forces[w] {
-            push(f.vertical);
-            push(f.lateral);
-            push(if f.vertical > 0.0 {
-                f.lateral / f.vertical
-            } else {
-                0.0
-            });
+            for q in WHEEL_FORCE_QUANTITIES {
+                push(q.value(f, static_load));
+            }
         }
     }
     for &(i, quantity) in &probes.dampers {
@@ -351,5 +365,15 @@ pub(crate) fn sample(
                 system.dampers[i].stroke(states).0
             }
         });
+    }
+    for w in 0..N_WHEELSETS {
+        for f in &system.wheel_forces[w] {
+            for q in CURVING_WHEEL_QUANTITIES {
+                push(q.value(f, static_load));
+            }
+        }
+    }
+    for [left, right] in &system.wheel_forces {
+        push(left.lateral + right.lateral);
     }
 }

@@ -1,0 +1,380 @@
+"""The curving study (issue 17): guiding forces of YD1, YD2 and the FSD in curves.
+
+Each case is a designed curve (a straight, a clothoid transition with a linear cant run-off, a
+circular curve with cant) run at the speeds that give the cant deficiencies asked for; the
+circular curve is the EN 14363 section, assessed by :mod:`loco.studies.en14363`: ΣY per wheelset
+(99.85 % / 0.15 % percentiles of the 2 m sliding mean, the larger magnitude), Y/Q per wheel (the
+same), the quasi-static guiding force Y_qst (50 % percentile), and as descriptions the angle of
+attack of the leading wheelset, the share of the section the outer leading wheel runs in flange
+contact and the wear number T·γ of the outer leading wheel (medians in the section).
+
+Speed for cant deficiency d on a curve of radius R and cant c (rail-top heights over the
+distance 2·b0 between the nominal contact points, `track.contact_point_half_distance`; the core
+rolls the rails by atan(c / 2·b0)): the lateral acceleration in the track plane is
+g·d/(2·b0), so V = √(g·R·(c + d)/(2·b0)) (small cant angles). A case whose speed is above
+:data:`MAX_SPEED_KMH` is left out and listed.
+
+Curves (:data:`CURVES`): R = 600, 1200, 3000, 7000 m with cants a line designer could choose
+(EN 13803:2017 allows up to 160–180 mm; these give balanced speeds of 87–133 km/h) and
+transitions as long as the cant run-off needs at 1 mm/m (EN 13803's recommended run-off
+gradient for conventional lines is of that order), at least 60 m.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+import loco
+from loco import _loco, dampers
+from loco.studies import en14363, fsd_comparison
+from loco.studies.report import StudyRecord, save_json
+
+__all__ = [
+    "CANT_DEFICIENCIES_MM",
+    "CURVES",
+    "LEAD_IN",
+    "MAX_SPEED_KMH",
+    "CurveCase",
+    "CurvingSizes",
+    "CurvingStudy",
+    "curving_settings",
+    "run_curving",
+    "save_curving",
+    "speed_for_deficiency",
+]
+
+#: The per-wheel and per-wheelset channel names, by quantity, from the core.
+WHEEL = _loco.wheel_channels()
+WHEELSET = _loco.wheelset_channels()
+
+
+@dataclass(frozen=True)
+class CurveCase:
+    """A designed curve: radius (m), cant (mm), clothoid transition length (m), length of the
+    circular curve (m, the assessed section) and its direction."""
+
+    radius_m: float
+    cant_mm: float
+    transition_m: float
+    curve_m: float = 200.0
+    direction: str = "left"
+
+    def sections(self, straight_m: float) -> list[dict[str, float | str]]:
+        """The design: ``straight_m`` of straight, the transition, the circular curve."""
+        return [
+            {"kind": "straight", "length_m": straight_m},
+            {"kind": "transition", "length_m": self.transition_m},
+            {
+                "kind": "curve",
+                "length_m": self.curve_m,
+                "radius_m": self.radius_m,
+                "cant_mm": self.cant_mm,
+                "direction": self.direction,
+            },
+        ]
+
+
+def _case(radius: float, cant: float) -> CurveCase:
+    return CurveCase(radius_m=radius, cant_mm=cant, transition_m=max(60.0, cant * 1.0))
+
+
+#: The study's curves (module docstring).
+CURVES: tuple[CurveCase, ...] = (
+    _case(600.0, 150.0),
+    _case(1200.0, 120.0),
+    _case(3000.0, 60.0),
+    _case(7000.0, 30.0),
+)
+#: Cant deficiencies, mm.
+CANT_DEFICIENCIES_MM: tuple[float, ...] = (0.0, 50.0, 100.0, 150.0)
+#: Highest speed run, km/h (the top of the study's speed sweep, SPEC §6).
+MAX_SPEED_KMH = 300.0
+#: Straight run before the record, m: the damper comparison's, so that the FSD has left its start
+#: state (valve closed) as it has there (:data:`loco.studies.fsd_comparison.LEAD_IN`).
+LEAD_IN: float = fsd_comparison.LEAD_IN
+#: Straight before the transition beyond the lead-in, m (the static equilibrium is found on it).
+RUN_IN = 20.0
+
+
+@dataclass(frozen=True)
+class CurvingSizes:
+    """How big the curving stage of ``loco reproduce`` is: the radii (m, of :data:`CURVES`), the
+    cant deficiencies (mm), the lead-in (m) and the assessed circular curve's length (m)."""
+
+    radii_m: tuple[float, ...]
+    deficiencies_mm: tuple[float, ...]
+    lead_in: float
+    curve_m: float
+
+    def curves(self) -> list[CurveCase]:
+        """The study's curves of these radii, with this circular length."""
+        return [
+            dataclasses.replace(c, curve_m=self.curve_m)
+            for c in CURVES
+            if c.radius_m in self.radii_m
+        ]
+
+
+#: The whole study (``loco reproduce --full``): 4 curves × 4 deficiencies × 3 dampers, 45 runs
+#: of 0.8–0.9 km (one deficiency on the 7000 m curve is above :data:`MAX_SPEED_KMH`).
+FULL_SIZES = CurvingSizes(
+    radii_m=tuple(c.radius_m for c in CURVES),
+    deficiencies_mm=CANT_DEFICIENCIES_MM,
+    lead_in=LEAD_IN,
+    curve_m=200.0,
+)
+#: For tests: one curve, two deficiencies, no lead-in, a short circular curve (6 runs of 0.13 km).
+TINY_SIZES = CurvingSizes(
+    radii_m=(1200.0,), deficiencies_mm=(0.0, 100.0), lead_in=0.0, curve_m=40.0
+)
+
+
+def speed_for_deficiency(
+    radius: float, cant_mm: float, deficiency_mm: float, vehicle: loco.Locomotive
+) -> float:
+    """Speed (m/s) giving cant deficiency ``deficiency_mm`` on a curve of ``radius`` (m) and
+    ``cant_mm``: V = √(g·R·(c + d)/(2·b0))."""
+    g = vehicle["track.gravity"]
+    two_b0 = 2.0 * vehicle["track.contact_point_half_distance"]
+    return math.sqrt(g * radius * (cant_mm + deficiency_mm) * 1e-3 / two_b0)
+
+
+def wheelset_offsets(vehicle: loco.Locomotive) -> list[float]:
+    """How far each wheelset runs behind the leading one, m (0, 2·b, 2·a, 2·a + 2·b with a the
+    half bogie distance and b the half wheelbase)."""
+    a = vehicle["layout.bogie_half_distance"]
+    b = vehicle["layout.half_wheelbase"]
+    return [0.0, 2 * b, 2 * a, 2 * a + 2 * b]
+
+
+@dataclass
+class CurvingStudy:
+    """Result of :func:`run_curving`: ``table`` one row per (curve, deficiency, damper) with the
+    EN 14363 values (forces in kN, angle of attack in mrad), ``skipped`` the cases above
+    :data:`MAX_SPEED_KMH` or failed (with why), ``settings`` and ``seconds``."""
+
+    table: pd.DataFrame
+    skipped: list[str]
+    settings: dict[str, Any]
+    seconds: float
+    axle_load: float
+
+
+def curving_settings(
+    *,
+    curves: Sequence[CurveCase] = CURVES,
+    deficiencies_mm: Sequence[float] = CANT_DEFICIENCIES_MM,
+    damper_set: Mapping[str, dampers.Damper] = dampers.PRESETS,
+    lead_in: float = LEAD_IN,
+    irregular: bool = False,
+    seed: int = 0,
+    vehicle: loco.Locomotive | None = None,
+) -> dict[str, Any]:
+    """Everything the study's numbers depend on (the stage's hash)."""
+    vehicle = vehicle or loco.Locomotive.default()
+    return {
+        "curves": [dataclasses.asdict(c) for c in curves],
+        "deficiencies_mm": list(deficiencies_mm),
+        "dampers": {n: repr(d) for n, d in damper_set.items()},
+        "lead_in": lead_in,
+        "irregular": irregular,
+        "seed": seed,
+        "max_speed_kmh": MAX_SPEED_KMH,
+        "vehicle": repr(vehicle),
+    }
+
+
+def _assess(
+    result: loco.SimulationResult,
+    case: CurveCase,
+    straight: float,
+    lead_in: float,
+    speed: float,
+    offsets: Sequence[float],
+) -> dict[str, float]:
+    """The EN 14363 values of one run in the circular curve."""
+    start = straight + case.transition_m
+    end = start + case.curve_m
+    lead = lead_in + speed * result.time
+    sum_y, yq, yqst = [], [], []
+    for w, offset in enumerate(offsets):
+        s = lead - offset
+        sum_y.append(
+            en14363.section_values(s, result.channel(WHEELSET["sumY"][w]), start, end).extreme
+        )
+        for side in range(2):
+            i = 2 * w + side
+            yq.append(en14363.section_values(s, result.channel(WHEEL["YQ"][i]), start, end).extreme)
+            yqst.append(
+                abs(en14363.section_values(s, result.channel(WHEEL["Y"][i]), start, end).median)
+            )
+    inside = (lead >= start) & (lead <= end)
+    # The outer wheel of a left curve is the right one.
+    outer = 1 if case.direction == "left" else 0
+    return {
+        "sumY_kN": max(sum_y) / 1e3,
+        "YQ": max(yq),
+        "Yqst_kN": max(yqst) / 1e3,
+        "aoa_lead_mrad": float(np.median(result.channel(WHEELSET["yaw"][0])[inside])) * 1e3,
+        "flange_lead_outer": float(np.mean(result.channel(WHEEL["flange"][outer])[inside])),
+        "Tgamma_lead_outer_N": float(np.median(result.channel(WHEEL["Tgamma"][outer])[inside])),
+        "dQQ_max": float(max(np.max(result.channel(c)[inside]) for c in WHEEL["dQQ"])),
+    }
+
+
+def run_curving(
+    *,
+    curves: Sequence[CurveCase] = CURVES,
+    deficiencies_mm: Sequence[float] = CANT_DEFICIENCIES_MM,
+    damper_set: Mapping[str, dampers.Damper] = dampers.PRESETS,
+    lead_in: float = LEAD_IN,
+    irregular: bool = False,
+    seed: int = 0,
+    vehicle: loco.Locomotive | None = None,
+    threads: int | None = None,
+    progress: bool = False,
+) -> CurvingStudy:
+    """Run every curve at every deficiency with every yaw damper of ``damper_set``.
+
+    ``lead_in`` (m) of straight is run and not recorded before the design's run-in (the FSD
+    leaves its start state there, :data:`loco.studies.fsd_comparison.LEAD_IN`); ``irregular``
+    puts the S_norm irregularities (seed ``seed``) on the design, otherwise the track is perfect.
+    Each (curve, damper) is one batch over its speeds.
+    """
+    started = time.perf_counter()
+    vehicle = vehicle or loco.Locomotive.default()
+    settings = curving_settings(
+        curves=curves,
+        deficiencies_mm=deficiencies_mm,
+        damper_set=damper_set,
+        lead_in=lead_in,
+        irregular=irregular,
+        seed=seed,
+        vehicle=vehicle,
+    )
+    offsets = wheelset_offsets(vehicle)
+    straight = lead_in + RUN_IN
+    rows: list[dict[str, Any]] = []
+    skipped: list[str] = []
+    for case in curves:
+        speeds, kept = [], []
+        for d in deficiencies_mm:
+            v = speed_for_deficiency(case.radius_m, case.cant_mm, d, vehicle)
+            if v * 3.6 > MAX_SPEED_KMH:
+                skipped.append(
+                    f"R = {case.radius_m:g} m, d = {d:g} mm: {v * 3.6:.0f} km/h is above "
+                    f"{MAX_SPEED_KMH:g} km/h"
+                )
+                continue
+            speeds.append(v)
+            kept.append(d)
+        if not speeds:
+            continue
+        # Recorded: until the last wheelset has run the whole circular curve.
+        distance = RUN_IN + case.transition_m + case.curve_m + offsets[-1] + 1.0
+        for name, law in damper_set.items():
+            # Perfect track, or the S_norm irregularities of `seed`.
+            track: dict[str, Any] = {"seed": seed} if irregular else {"track": "perfect"}
+            scenario = loco.Scenario(
+                scenario="S_norm",
+                speed=speeds[0],
+                distance=distance,
+                lead_in=lead_in,
+                yaw_damper=law,
+                curve=case.sections(straight),
+                **track,
+            )
+            batch = loco.run_batch(
+                np.array(speeds)[:, None],
+                ["speed"],
+                vehicle,
+                scenario,
+                threads=threads,
+                progress=progress,
+                histories=range(len(speeds)),
+            )
+            for i, (v, d) in enumerate(zip(speeds, kept, strict=True)):
+                label = f"R = {case.radius_m:g} m, d = {d:g} mm, {name}"
+                if batch.status[i] != 0 or i not in batch.histories:
+                    skipped.append(f"{label}: {batch.messages[i] or int(batch.status[i])}")
+                    continue
+                rows.append(
+                    {
+                        "radius_m": case.radius_m,
+                        "cant_mm": case.cant_mm,
+                        "deficiency_mm": d,
+                        "speed_kmh": v * 3.6,
+                        "damper": name,
+                        **_assess(batch.histories[i], case, straight, lead_in, v, offsets),
+                    }
+                )
+    axle_load = vehicle_axle_load(vehicle)
+    return CurvingStudy(
+        table=pd.DataFrame(rows),
+        skipped=skipped,
+        settings=settings,
+        seconds=time.perf_counter() - started,
+        axle_load=axle_load,
+    )
+
+
+def vehicle_axle_load(vehicle: loco.Locomotive) -> float:
+    """Mean static axle load 2·Q0 of the vehicle, N (its weight over its four wheelsets)."""
+    return float(vehicle.total_mass() * vehicle["track.gravity"] / 4.0)
+
+
+def save_curving(study: CurvingStudy, out_dir: str | Path) -> StudyRecord:
+    """Write ``curving.csv`` (every case), ``curving.png`` (ΣY and Y/Q against cant deficiency
+    per damper, with the limits) and ``curving.json`` (settings); return the record."""
+    from loco.studies.curving_figures import plot_curving
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    table = out / "curving.csv"
+    study.table.to_csv(table, index=False, float_format="%.6g")
+    figure = plot_curving(study.table, study.axle_load, out / "curving.png")
+    save_json(
+        {"loco_version": loco.__version__, "settings": study.settings, "skipped": study.skipped},
+        out / "curving.json",
+    )
+    return StudyRecord(
+        name="curving",
+        title="Curving: guiding forces against cant deficiency (EN 14363 processing)",
+        figures=[figure],
+        tables=[table],
+        parameters=study.settings,
+        seconds=study.seconds,
+        notes=curving_notes(study),
+    )
+
+
+def curving_notes(study: CurvingStudy) -> str:
+    """The report paragraph: the limits, the largest values per damper, what was left out."""
+    limit = en14363.sum_y_limit(study.axle_load) / 1e3
+    parts = [
+        f"ΣY is the 99.85 % / 0.15 % percentile of the 2 m sliding mean (every 0.5 m) in the "
+        f"circular curve, the largest over the wheelsets; Y/Q the same over the wheels; Y_qst the "
+        f"50 % value. Limits: ΣY {limit:.1f} kN (Prud'homme, α = {en14363.ALPHA_LOCOMOTIVE:g}, "
+        f"axle load {study.axle_load / 1e3:.1f} kN), Y/Q {en14363.YQ_LIMIT:g} (Nadal, R ≥ 250 m), "
+        f"Y_qst {en14363.YQST_LIMIT / 1e3:g} kN (a reference: EN 14363 assesses it for "
+        f"250 m ≤ R < 400 m)."
+    ]
+    if not study.table.empty:
+        worst = study.table.groupby("damper")[["sumY_kN", "YQ", "Yqst_kN"]].max()
+        for name, row in worst.iterrows():
+            parts.append(
+                f"{name}: largest ΣY {row['sumY_kN']:.1f} kN, Y/Q {row['YQ']:.3f}, "
+                f"Y_qst {row['Yqst_kN']:.1f} kN."
+            )
+    if study.skipped:
+        parts.append("Left out: " + "; ".join(study.skipped) + ".")
+    return " ".join(parts)
