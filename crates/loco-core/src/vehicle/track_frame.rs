@@ -78,6 +78,33 @@ pub struct CurvedTrack {
     station_of: Vec<usize>,
 }
 
+/// What the frames are at one vehicle position and speed: none of it depends on the state, so
+/// it is kept for the RK stages that share a time (stages 2 and 3, stage 4 and the step's end, and
+/// usually the next step's start) and computed twice per step instead of five times.
+#[derive(Debug, Clone)]
+struct FrameSlot {
+    /// The track it was computed for (its address: a system given another track recomputes), and
+    /// the bits of the origin's distance (m) and of the speed (m/s).
+    key: Option<(usize, u64, u64)>,
+    /// Each body's frame offset (its rotation part, rad) from the reference frame.
+    offset_states: BodyStates,
+    /// The design at each body's distance.
+    points: [DesignPoint; N_BODIES],
+    /// sin θ and cos θ of each body's track roll.
+    roll_sin_cos: [(f64, f64); N_BODIES],
+}
+
+impl Default for FrameSlot {
+    fn default() -> Self {
+        Self {
+            key: None,
+            offset_states: BodyStates::default(),
+            points: [DesignPoint::default(); N_BODIES],
+            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+        }
+    }
+}
+
 /// Workspaces and the last evaluation's frame data (no allocation in the time loop).
 #[derive(Debug, Clone)]
 pub struct FrameWork {
@@ -86,12 +113,9 @@ pub struct FrameWork {
     rates: Vec<f64>,
     /// Body states in the reference frame (what the suspension sees).
     pub states: BodyStates,
-    /// Each body's frame offset (its rotation part, rad) from the reference frame.
-    offset_states: BodyStates,
-    /// The design at each body's distance.
-    pub points: [DesignPoint; N_BODIES],
-    /// sin θ and cos θ of each body's track roll.
-    roll_sin_cos: [(f64, f64); N_BODIES],
+    /// The frames at the last two (distance, speed) pairs; `active` is the last evaluation's.
+    slots: [FrameSlot; 2],
+    active: usize,
     /// The design at each station (`CurvedTrack::stations`; at most one per body and the
     /// origin) and sin θ, cos θ of its roll.
     station_points: [DesignPoint; N_BODIES + 1],
@@ -104,12 +128,23 @@ impl Default for FrameWork {
             offsets: vec![0.0; N_DOF],
             rates: vec![0.0; N_DOF],
             states: BodyStates::default(),
-            offset_states: BodyStates::default(),
-            points: [DesignPoint::default(); N_BODIES],
-            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            slots: [FrameSlot::default(), FrameSlot::default()],
+            active: 0,
             station_points: [DesignPoint::default(); N_BODIES + 1],
             station_roll: [(0.0, 1.0); N_BODIES + 1],
         }
+    }
+}
+
+impl FrameWork {
+    /// The frames of the last [`CurvedTrack::prepare`].
+    fn slot(&self) -> &FrameSlot {
+        &self.slots[self.active]
+    }
+
+    /// The design at each body's distance in the last [`CurvedTrack::prepare`].
+    pub fn points(&self) -> &[DesignPoint; N_BODIES] {
+        &self.slot().points
     }
 }
 
@@ -164,14 +199,57 @@ impl CurvedTrack {
         relative: &BodyStates,
         work: &mut FrameWork,
     ) {
+        let key = Some((self as *const Self as usize, s_r.to_bits(), speed.to_bits()));
+        if let Some(k) = work.slots.iter().position(|slot| slot.key == key) {
+            work.active = k;
+        } else {
+            // Replace the older slot, keep the last one (the stage before may come back).
+            work.active = 1 - work.active;
+            self.compute_frames(structure, s_r, speed, work);
+            work.slots[work.active].key = key;
+        }
+        let offset_states = &work.slots[work.active].offset_states;
+        // The motion maps are linear: a body's state in the reference frame is its state
+        // relative to its own frame plus its frame's offset (no second pass over the maps).
+        let pairs = [
+            (
+                &mut work.states.position,
+                &relative.position,
+                &offset_states.position,
+            ),
+            (
+                &mut work.states.velocity,
+                &relative.velocity,
+                &offset_states.velocity,
+            ),
+        ];
+        for (sum, own, offset) in pairs {
+            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
+                for k in 0..6 {
+                    s[k] = a[k] + b[k];
+                }
+            }
+        }
+    }
+
+    /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
+    /// each body's frame offset from the reference frame.
+    fn compute_frames(
+        &self,
+        structure: &VehicleStructure,
+        s_r: f64,
+        speed: f64,
+        work: &mut FrameWork,
+    ) {
         let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
         for ((point, roll), x) in stations.zip(&self.stations) {
             *point = self.design.at(s_r + x);
             *roll = point.roll.sin_cos();
         }
+        let slot = &mut work.slots[work.active];
         for (i, &k) in self.station_of.iter().enumerate() {
-            work.points[i] = work.station_points[k];
-            work.roll_sin_cos[i] = work.station_roll[k];
+            slot.points[i] = work.station_points[k];
+            slot.roll_sin_cos[i] = work.station_roll[k];
         }
         let r = work.station_points[0];
         let (st, ct) = work.station_roll[0];
@@ -179,7 +257,7 @@ impl CurvedTrack {
         work.offsets.fill(0.0);
         work.rates.fill(0.0);
         for (first, body) in free_bodies() {
-            let p = &work.points[body];
+            let p = &slot.points[body];
             let x = self.bodies[body].position;
             let d_psi = p.heading - r.heading;
             let lateral = p.heading_integral - r.heading_integral - r.heading * x[0];
@@ -213,28 +291,7 @@ impl CurvedTrack {
                 work.rates[rotary_arm(w, side)] = work.rates[wheelset(w) + PITCH];
             }
         }
-        structure.body_states(&work.offsets, &work.rates, &mut work.offset_states);
-        // The motion maps are linear: a body's state in the reference frame is its state
-        // relative to its own frame plus its frame's offset (no second pass over the maps).
-        let pairs = [
-            (
-                &mut work.states.position,
-                &relative.position,
-                &work.offset_states.position,
-            ),
-            (
-                &mut work.states.velocity,
-                &relative.velocity,
-                &work.offset_states.velocity,
-            ),
-        ];
-        for (sum, own, offset) in pairs {
-            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
-                for k in 0..6 {
-                    s[k] = a[k] + b[k];
-                }
-            }
-        }
+        structure.body_states(&work.offsets, &work.rates, &mut slot.offset_states);
     }
 
     /// Turns the wrenches formed in the reference frame (gravity, structure, dampers) into each
@@ -250,16 +307,17 @@ impl CurvedTrack {
     ) {
         let v2 = speed * speed;
         let g = self.gravity;
+        let slot = work.slot();
         for (i, body) in self.bodies.iter().enumerate() {
-            let o = &work.offset_states.position[i];
+            let o = &slot.offset_states.position[i];
             let rot = [o[3], o[4], o[5]];
             let w = &mut wrenches[i];
             let f = [w[0], w[1], w[2]];
             let m = [w[3], w[4], w[5]];
             let f = sub(f, cross(rot, f));
             let m = sub(m, cross(rot, m));
-            let p = &work.points[i];
-            let (s, c) = work.roll_sin_cos[i];
+            let p = &slot.points[i];
+            let (s, c) = slot.roll_sin_cos[i];
             let a = v2 * p.curvature;
             let mg = body.mass * g;
             // Gravity in the own frame less the reference frame's vertical turned into it.
@@ -289,8 +347,8 @@ impl CurvedTrack {
     /// [`Self::prepare`].
     #[inline]
     pub fn wheelset_frame_yaw_rate(&self, speed: f64, work: &FrameWork, w: usize) -> f64 {
-        let p = &work.points[body_wheelset(w)];
-        speed * p.curvature * work.roll_sin_cos[body_wheelset(w)].1
+        let slot = work.slot();
+        speed * slot.points[body_wheelset(w)].curvature * slot.roll_sin_cos[body_wheelset(w)].1
     }
 }
 
