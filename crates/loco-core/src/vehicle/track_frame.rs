@@ -31,10 +31,8 @@
 use super::elements::{BodyStates, Wrenches};
 use super::kinematics::{add, cross, sub};
 use super::layout::{body_frame, body_motor, BODY_CARBODY, CARBODY};
-use super::layout::{
-    body_wheelset, frame, motor, rotary_arm, wheelset, N_BODIES, N_BOGIES, N_DOF, N_WHEELSETS,
-    PITCH, YAW,
-};
+use super::layout::{body_hollow_shaft, body_rotary_arm, body_traction_rod};
+use super::layout::{body_wheelset, frame, motor, wheelset, N_BODIES, N_BOGIES, N_WHEELSETS, YAW};
 use super::structure::VehicleStructure;
 use crate::track::{DesignPoint, TrackDesign};
 use std::sync::Arc;
@@ -76,6 +74,8 @@ pub struct CurvedTrack {
     stations: Vec<f64>,
     /// Each body's index into `stations`.
     station_of: Vec<usize>,
+    /// The bodies attached to a free one: (body, parent, nominal x_body − x_parent in m).
+    attached: Vec<(usize, usize, [f64; 3])>,
 }
 
 /// What the frames are at one vehicle position and speed: none of it depends on the state, so
@@ -108,9 +108,6 @@ impl Default for FrameSlot {
 /// Workspaces and the last evaluation's frame data (no allocation in the time loop).
 #[derive(Debug, Clone)]
 pub struct FrameWork {
-    /// Coordinates and velocities of the frame offsets.
-    offsets: Vec<f64>,
-    rates: Vec<f64>,
     /// Body states in the reference frame (what the suspension sees).
     pub states: BodyStates,
     /// The frames at the last two (distance, speed) pairs; `active` is the last evaluation's.
@@ -125,8 +122,6 @@ pub struct FrameWork {
 impl Default for FrameWork {
     fn default() -> Self {
         Self {
-            offsets: vec![0.0; N_DOF],
-            rates: vec![0.0; N_DOF],
             states: BodyStates::default(),
             slots: [FrameSlot::default(), FrameSlot::default()],
             active: 0,
@@ -179,21 +174,41 @@ impl CurvedTrack {
                 }
             })
             .collect();
+        let mut parents = Vec::new();
+        for w in 0..N_WHEELSETS {
+            parents.push((body_hollow_shaft(w), body_wheelset(w)));
+            for side in 0..2 {
+                parents.push((body_rotary_arm(w, side), body_wheelset(w)));
+            }
+        }
+        for b in 0..N_BOGIES {
+            parents.push((body_traction_rod(b), BODY_CARBODY));
+        }
+        let attached = parents
+            .into_iter()
+            .map(|(body, parent)| {
+                let (x, x0) = (bodies[body].position, bodies[parent].position);
+                (body, parent, [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]])
+            })
+            .collect();
         Self {
             design,
             bodies,
             gravity: structure.gravity,
             stations,
             station_of,
+            attached,
         }
     }
 
     /// Fills `work` for the vehicle origin at distance `s_r` (m) running at `speed` (m/s): the
     /// design at every body and the body states seen in the reference frame, from the states
     /// `relative` to the bodies' own frames (`structure.body_states` of the coordinates).
+    /// (`_structure`: the bodies are this track's own copy since the offsets no longer go
+    /// through the motion maps; kept so callers need not change.)
     pub fn prepare(
         &self,
-        structure: &VehicleStructure,
+        _structure: &VehicleStructure,
         s_r: f64,
         speed: f64,
         relative: &BodyStates,
@@ -205,7 +220,7 @@ impl CurvedTrack {
         } else {
             // Replace the older slot, keep the last one (the stage before may come back).
             work.active = 1 - work.active;
-            self.compute_frames(structure, s_r, speed, work);
+            self.compute_frames(s_r, speed, work);
             work.slots[work.active].key = key;
         }
         let offset_states = &work.slots[work.active].offset_states;
@@ -234,13 +249,7 @@ impl CurvedTrack {
 
     /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
     /// each body's frame offset from the reference frame.
-    fn compute_frames(
-        &self,
-        structure: &VehicleStructure,
-        s_r: f64,
-        speed: f64,
-        work: &mut FrameWork,
-    ) {
+    fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
         let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
         for ((point, roll), x) in stations.zip(&self.stations) {
             *point = self.design.at(s_r + x);
@@ -254,9 +263,7 @@ impl CurvedTrack {
         let r = work.station_points[0];
         let (st, ct) = work.station_roll[0];
         let roll_rate_r = speed * r.roll_rate;
-        work.offsets.fill(0.0);
-        work.rates.fill(0.0);
-        for (first, body) in free_bodies() {
+        for (_, body) in free_bodies() {
             let p = &slot.points[body];
             let x = self.bodies[body].position;
             let d_psi = p.heading - r.heading;
@@ -279,19 +286,32 @@ impl CurvedTrack {
                 ],
                 cross(rot_rate, arm),
             );
-            work.offsets[first..first + 3].copy_from_slice(&trans);
-            work.offsets[first + 3..first + 6].copy_from_slice(&rot);
-            work.rates[first..first + 3].copy_from_slice(&trans_rate);
-            work.rates[first + 3..first + 6].copy_from_slice(&rot_rate);
+            // A free body's map is the identity on its coordinates: the offset is its state.
+            slot.offset_states.position[body] =
+                [trans[0], trans[1], trans[2], rot[0], rot[1], rot[2]];
+            slot.offset_states.velocity[body] = [
+                trans_rate[0],
+                trans_rate[1],
+                trans_rate[2],
+                rot_rate[0],
+                rot_rate[1],
+                rot_rate[2],
+            ];
         }
-        // Rotary arms pitch with their wheelset (a rigid motion sets them to its pitch).
-        for w in 0..N_WHEELSETS {
-            for side in 0..2 {
-                work.offsets[rotary_arm(w, side)] = work.offsets[wheelset(w) + PITCH];
-                work.rates[rotary_arm(w, side)] = work.rates[wheelset(w) + PITCH];
+        // The attached bodies (hollow shafts, traction rods, rotary arms with their wheelset's
+        // pitch) take their parent's rigid motion: their maps applied to the offsets' coordinates
+        // give u = u_parent + θ_parent × (x_body − x_parent), evaluated here directly (the maps'
+        // sparse rows cost five times as much; tests compare both).
+        for &(body, parent, arm) in &self.attached {
+            for states in [
+                &mut slot.offset_states.position,
+                &mut slot.offset_states.velocity,
+            ] {
+                let u = states[parent];
+                let t = add([u[0], u[1], u[2]], cross([u[3], u[4], u[5]], arm));
+                states[body] = [t[0], t[1], t[2], u[3], u[4], u[5]];
             }
         }
-        structure.body_states(&work.offsets, &work.rates, &mut slot.offset_states);
     }
 
     /// Turns the wrenches formed in the reference frame (gravity, structure, dampers) into each
