@@ -22,11 +22,7 @@ macro_rules! lane_op {
             type Output = Self;
             #[inline(always)]
             fn $method(self, rhs: Self) -> Self {
-                let mut out = self.0;
-                for (o, r) in out.iter_mut().zip(rhs.0) {
-                    *o = *o $op r;
-                }
-                Self(out)
+                self.map2(rhs, |a, b| a $op b)
             }
         }
     };
