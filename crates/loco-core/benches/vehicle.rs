@@ -1,8 +1,11 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
-//! creep model), with FaStrip and with the FASTSIM table, and one evaluation of its right-hand
-//! side.
+//! creep model), with FaStrip and with the FASTSIM table, the same FASTSIM run on a curved track
+//! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m
+//! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), and one
+//! evaluation of its right-hand side.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::integrator::OdeSystem;
 use loco_core::vehicle::parameters::ParameterSet;
@@ -65,6 +68,36 @@ fn bench_vehicle(c: &mut Criterion) {
                 table_contact.clone(),
                 track.clone(),
                 black_box(&table),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    let curved = Scenario {
+        curve: vec![
+            DesignSection::Straight { length: 10.0 },
+            DesignSection::Transition {
+                length: 60.0,
+                cant_run_off: None,
+            },
+            DesignSection::Curve {
+                length: 1000.0,
+                radius: 1200.0,
+                cant: 0.1,
+                direction: CurveDirection::Left,
+            },
+        ],
+        ..scenario.clone()
+    };
+    let curved_contact = Arc::new(build_wheel_rail(&structure.parameters, &curved).unwrap());
+    let curved_track = Arc::new(build_track(&curved, &structure).unwrap());
+    group.bench_function("run_500m_200kmh_curve", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                curved_contact.clone(),
+                curved_track.clone(),
+                black_box(&curved),
                 None,
             )
             .unwrap()

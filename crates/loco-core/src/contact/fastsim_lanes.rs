@@ -1,27 +1,28 @@
-//! FASTSIM's strip integration, two strips per SIMD register.
+//! FASTSIM's strip integration, two strips per SIMD register (four with AVX).
 //!
 //! Strips are independent, so the elements of several strips are integrated in lockstep. Written
 //! as arrays of strips, the compiler packed each strip's (p_x, p_y) pair into one register and
 //! took the square root and the division of every strip one at a time (`sqrtsd`, `divsd`): the
-//! serial chain that bounds FASTSIM's cost. Here a value of two strips is one [`F64x2`], whose
+//! serial chain that bounds FASTSIM's cost. Here a value of two strips is one `Lanes<2>`, whose
 //! lane-wise operations the compiler turns into packed ones (`sqrtpd`, `divpd` with SSE2, the
-//! x86_64 baseline). Every lane does the scalar code's IEEE operations in the scalar code's order
+//! x86_64 baseline); where the processor has AVX (detected at run time) four strips are one
+//! `Lanes<4>` (`vsqrtpd`, `vdivpd` on 256-bit registers). Every lane does the scalar code's IEEE operations in the scalar code's order
 //! (no fused multiply-add, no reordering), so the forces are bit for bit those of one strip at a
 //! time, on any machine.
 
 use std::ops::{Add, Mul, Sub};
 
-/// The same quantity of two strips.
+/// The same quantity of `W` strips: two fill an SSE2 register, four an AVX one.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct F64x2([f64; 2]);
+struct Lanes<const W: usize>([f64; W]);
 
 macro_rules! lane_op {
     ($trait:ident, $method:ident, $op:tt) => {
-        impl $trait for F64x2 {
+        impl<const W: usize> $trait for Lanes<W> {
             type Output = Self;
             #[inline(always)]
             fn $method(self, rhs: Self) -> Self {
-                Self([self.0[0] $op rhs.0[0], self.0[1] $op rhs.0[1]])
+                self.map2(rhs, |a, b| a $op b)
             }
         }
     };
@@ -30,32 +31,48 @@ lane_op!(Add, add, +);
 lane_op!(Sub, sub, -);
 lane_op!(Mul, mul, *);
 
-impl F64x2 {
+impl<const W: usize> Lanes<W> {
     #[inline(always)]
     fn splat(v: f64) -> Self {
-        Self([v, v])
+        Self([v; W])
+    }
+    #[inline(always)]
+    fn map2(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+        let mut out = self.0;
+        for (o, r) in out.iter_mut().zip(rhs.0) {
+            *o = f(*o, r);
+        }
+        Self(out)
     }
     #[inline(always)]
     fn div(self, rhs: Self) -> Self {
-        Self([self.0[0] / rhs.0[0], self.0[1] / rhs.0[1]])
+        self.map2(rhs, |a, b| a / b)
     }
     #[inline(always)]
     fn sqrt(self) -> Self {
-        Self([self.0[0].sqrt(), self.0[1].sqrt()])
+        let mut out = self.0;
+        for o in &mut out {
+            *o = o.sqrt();
+        }
+        Self(out)
     }
     #[inline(always)]
     fn max(self, floor: Self) -> Self {
-        Self([self.0[0].max(floor.0[0]), self.0[1].max(floor.0[1])])
+        self.map2(floor, f64::max)
     }
     #[inline(always)]
     fn min(self, cap: Self) -> Self {
-        Self([self.0[0].min(cap.0[0]), self.0[1].min(cap.0[1])])
+        self.map2(cap, f64::min)
     }
 }
 
 /// Pairs of lanes integrated together: every element step of all of them is independent, which
 /// hides the latency of the square root and the division.
 pub(super) const PAIRS: usize = 5;
+/// Strips of one pass.
+const STRIPS: usize = 2 * PAIRS;
+/// Groups of four lanes of the AVX pass: the ten strips padded to twelve with empty strips.
+const QUADS: usize = STRIPS.div_ceil(4);
 
 /// The per-strip inputs of one lockstep pass, `2·PAIRS` strips (SI units as in `fastsim`).
 #[derive(Debug, Clone, Copy)]
@@ -78,7 +95,8 @@ pub(super) struct StripSums {
 
 /// Integrates the strips of `inputs` over `elements` (`(x_k/a_j, p_n shape factor)` from the
 /// leading edge); p_y's slope is `eta_l2 + φ·x·inv_l3` with `eta_l2 = η/L2` (Pa/m), spin φ
-/// (1/m) and `inv_l3 = 1/L3` (Pa/m).
+/// (1/m) and `inv_l3 = 1/L3` (Pa/m). On a processor with AVX four strips share a register
+/// (checked once at run time, then a cached flag); the bits are the same either way.
 #[inline(always)]
 pub(super) fn integrate_strips(
     inputs: &StripInputs,
@@ -87,25 +105,95 @@ pub(super) fn integrate_strips(
     phi: f64,
     inv_l3: f64,
 ) -> StripSums {
-    let lanes = |a: &[f64; 2 * PAIRS]| -> [F64x2; PAIRS] {
-        std::array::from_fn(|p| F64x2([a[2 * p], a[2 * p + 1]]))
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the processor has just been found to support AVX, the only feature the
+        // function enables.
+        return unsafe { integrate_strips_avx(inputs, elements, eta_l2, phi, inv_l3) };
+    }
+    integrate_strips_sse2(inputs, elements, eta_l2, phi, inv_l3)
+}
+
+/// [`integrate_strips`] two strips per register (the x86_64 baseline, SSE2).
+#[inline(always)]
+fn integrate_strips_sse2(
+    inputs: &StripInputs,
+    elements: &[(f64, f64)],
+    eta_l2: f64,
+    phi: f64,
+    inv_l3: f64,
+) -> StripSums {
+    let (sx, sy, sxpy) = integrate::<2, PAIRS, STRIPS>(
+        &inputs.a_j,
+        &inputs.slope_x,
+        &inputs.bound,
+        elements,
+        (eta_l2, phi, inv_l3),
+    );
+    StripSums { sx, sy, sxpy }
+}
+
+/// [`integrate_strips`] four strips per register; the two padding strips are empty (a_j = 0,
+/// bound 0: their tractions stay 0) and dropped.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn integrate_strips_avx(
+    inputs: &StripInputs,
+    elements: &[(f64, f64)],
+    eta_l2: f64,
+    phi: f64,
+    inv_l3: f64,
+) -> StripSums {
+    let pad = |a: &[f64; STRIPS]| -> [f64; 4 * QUADS] {
+        std::array::from_fn(|l| if l < STRIPS { a[l] } else { 0.0 })
     };
-    let a_j = lanes(&inputs.a_j);
-    let slope_x = lanes(&inputs.slope_x);
-    let bound_j = lanes(&inputs.bound);
-    let (eta_l2, half) = (F64x2::splat(eta_l2), F64x2::splat(0.5));
-    let (phi, inv_l3) = (F64x2::splat(phi), F64x2::splat(inv_l3));
-    let (one, floor) = (F64x2::splat(1.0), F64x2::splat(f64::MIN_POSITIVE));
-    let zero = F64x2::splat(0.0);
-    let mut px = [zero; PAIRS];
-    let mut py = [zero; PAIRS];
-    let mut sx = [zero; PAIRS];
-    let mut sy = [zero; PAIRS];
-    let mut sxpy = [zero; PAIRS];
+    let sums = integrate::<4, QUADS, { 4 * QUADS }>(
+        &pad(&inputs.a_j),
+        &pad(&inputs.slope_x),
+        &pad(&inputs.bound),
+        elements,
+        (eta_l2, phi, inv_l3),
+    );
+    let cut = |a: [f64; 4 * QUADS]| -> [f64; STRIPS] { std::array::from_fn(|l| a[l]) };
+    StripSums {
+        sx: cut(sums.0),
+        sy: cut(sums.1),
+        sxpy: cut(sums.2),
+    }
+}
+
+/// Per-strip sums (Σ p_x, Σ p_y, Σ x·p_y) of `N = W·G` strips.
+type Sums<const N: usize> = ([f64; N], [f64; N], [f64; N]);
+
+/// The lockstep integration of `N = W·G` strips in `G` groups of `W` lanes; `c` is
+/// `(eta_l2, phi, inv_l3)`. Every lane does the scalar code's IEEE operations in its order.
+#[inline(always)]
+fn integrate<const W: usize, const G: usize, const N: usize>(
+    a_j: &[f64; N],
+    slope_x: &[f64; N],
+    bound_j: &[f64; N],
+    elements: &[(f64, f64)],
+    c: (f64, f64, f64),
+) -> Sums<N> {
+    let lanes = |a: &[f64; N]| -> [Lanes<W>; G] {
+        std::array::from_fn(|p| Lanes(std::array::from_fn(|l| a[W * p + l])))
+    };
+    let a_j = lanes(a_j);
+    let slope_x = lanes(slope_x);
+    let bound_j = lanes(bound_j);
+    let (eta_l2, half) = (Lanes::splat(c.0), Lanes::splat(0.5));
+    let (phi, inv_l3) = (Lanes::splat(c.1), Lanes::splat(c.2));
+    let (one, floor) = (Lanes::splat(1.0), Lanes::splat(f64::MIN_POSITIVE));
+    let zero = Lanes::splat(0.0);
+    let mut px = [zero; G];
+    let mut py = [zero; G];
+    let mut sx = [zero; G];
+    let mut sy = [zero; G];
+    let mut sxpy = [zero; G];
     let mut x_prev = a_j;
     for &(u_k, shape_k) in elements {
-        let (u_k, shape_k) = (F64x2::splat(u_k), F64x2::splat(shape_k));
-        for p in 0..PAIRS {
+        let (u_k, shape_k) = (Lanes::splat(u_k), Lanes::splat(shape_k));
+        for p in 0..G {
             let x = u_k * a_j[p];
             let h = x_prev[p] - x;
             let x_mid = half * (x_prev[p] + x);
@@ -124,13 +212,8 @@ pub(super) fn integrate_strips(
             x_prev[p] = x;
         }
     }
-    let unpack =
-        |v: [F64x2; PAIRS]| -> [f64; 2 * PAIRS] { std::array::from_fn(|l| v[l / 2].0[l % 2]) };
-    StripSums {
-        sx: unpack(sx),
-        sy: unpack(sy),
-        sxpy: unpack(sxpy),
-    }
+    let unpack = |v: [Lanes<W>; G]| -> [f64; N] { std::array::from_fn(|l| v[l / W].0[l % W]) };
+    (unpack(sx), unpack(sy), unpack(sxpy))
 }
 
 #[cfg(test)]
@@ -194,21 +277,32 @@ mod tests {
                 slope_x: std::array::from_fn(|_| (next() - 0.5) * 1e9),
                 bound: std::array::from_fn(|l| if l == 5 { 0.0 } else { 1e9 * next().powi(4) }),
             };
-            let sums = integrate_strips(&inputs, &elements, c.0, c.1, c.2);
-            for l in 0..2 * PAIRS {
-                let want = one_strip(
-                    inputs.a_j[l],
-                    inputs.slope_x[l],
-                    inputs.bound[l],
-                    &elements,
-                    c,
-                );
-                let got = [sums.sx[l], sums.sy[l], sums.sxpy[l]];
-                assert_eq!(
-                    got.map(f64::to_bits),
-                    want.map(f64::to_bits),
-                    "case {case} lane {l}"
-                );
+            let mut paths = vec![(
+                "sse2",
+                integrate_strips_sse2(&inputs, &elements, c.0, c.1, c.2),
+            )];
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx") {
+                // SAFETY: AVX was just detected.
+                let avx = unsafe { integrate_strips_avx(&inputs, &elements, c.0, c.1, c.2) };
+                paths.push(("avx", avx));
+            }
+            for (path, sums) in paths {
+                for l in 0..2 * PAIRS {
+                    let want = one_strip(
+                        inputs.a_j[l],
+                        inputs.slope_x[l],
+                        inputs.bound[l],
+                        &elements,
+                        c,
+                    );
+                    let got = [sums.sx[l], sums.sy[l], sums.sxpy[l]];
+                    assert_eq!(
+                        got.map(f64::to_bits),
+                        want.map(f64::to_bits),
+                        "{path} case {case} lane {l}"
+                    );
+                }
             }
         }
     }

@@ -31,10 +31,8 @@
 use super::elements::{BodyStates, Wrenches};
 use super::kinematics::{add, cross, sub};
 use super::layout::{body_frame, body_motor, BODY_CARBODY, CARBODY};
-use super::layout::{
-    body_wheelset, frame, motor, rotary_arm, wheelset, N_BODIES, N_BOGIES, N_DOF, N_WHEELSETS,
-    PITCH, YAW,
-};
+use super::layout::{body_hollow_shaft, body_rotary_arm, body_traction_rod};
+use super::layout::{body_wheelset, frame, motor, wheelset, N_BODIES, N_BOGIES, N_WHEELSETS, YAW};
 use super::structure::VehicleStructure;
 use crate::track::{DesignPoint, TrackDesign};
 use std::sync::Arc;
@@ -76,22 +74,45 @@ pub struct CurvedTrack {
     stations: Vec<f64>,
     /// Each body's index into `stations`.
     station_of: Vec<usize>,
+    /// The bodies attached to a free one: (body, parent, nominal x_body − x_parent in m).
+    attached: Vec<(usize, usize, [f64; 3])>,
+}
+
+/// What the frames are at one vehicle position and speed: none of it depends on the state, so
+/// it is kept for the RK stages that share a time (stages 2 and 3, stage 4 and the step's end, and
+/// usually the next step's start) and computed twice per step instead of five times.
+#[derive(Debug, Clone)]
+struct FrameSlot {
+    /// The track it was computed for (its address: a system given another track recomputes), and
+    /// the bits of the origin's distance (m) and of the speed (m/s).
+    key: Option<(usize, u64, u64)>,
+    /// Each body's frame offset (its rotation part, rad) from the reference frame.
+    offset_states: BodyStates,
+    /// The design at each body's distance.
+    points: [DesignPoint; N_BODIES],
+    /// sin θ and cos θ of each body's track roll.
+    roll_sin_cos: [(f64, f64); N_BODIES],
+}
+
+impl Default for FrameSlot {
+    fn default() -> Self {
+        Self {
+            key: None,
+            offset_states: BodyStates::default(),
+            points: [DesignPoint::default(); N_BODIES],
+            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+        }
+    }
 }
 
 /// Workspaces and the last evaluation's frame data (no allocation in the time loop).
 #[derive(Debug, Clone)]
 pub struct FrameWork {
-    /// Coordinates and velocities of the frame offsets.
-    offsets: Vec<f64>,
-    rates: Vec<f64>,
     /// Body states in the reference frame (what the suspension sees).
     pub states: BodyStates,
-    /// Each body's frame offset (its rotation part, rad) from the reference frame.
-    offset_states: BodyStates,
-    /// The design at each body's distance.
-    pub points: [DesignPoint; N_BODIES],
-    /// sin θ and cos θ of each body's track roll.
-    roll_sin_cos: [(f64, f64); N_BODIES],
+    /// The frames at the last two (distance, speed) pairs; `active` is the last evaluation's.
+    slots: [FrameSlot; 2],
+    active: usize,
     /// The design at each station (`CurvedTrack::stations`; at most one per body and the
     /// origin) and sin θ, cos θ of its roll.
     station_points: [DesignPoint; N_BODIES + 1],
@@ -101,15 +122,24 @@ pub struct FrameWork {
 impl Default for FrameWork {
     fn default() -> Self {
         Self {
-            offsets: vec![0.0; N_DOF],
-            rates: vec![0.0; N_DOF],
             states: BodyStates::default(),
-            offset_states: BodyStates::default(),
-            points: [DesignPoint::default(); N_BODIES],
-            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            slots: [FrameSlot::default(), FrameSlot::default()],
+            active: 0,
             station_points: [DesignPoint::default(); N_BODIES + 1],
             station_roll: [(0.0, 1.0); N_BODIES + 1],
         }
+    }
+}
+
+impl FrameWork {
+    /// The frames of the last [`CurvedTrack::prepare`].
+    fn slot(&self) -> &FrameSlot {
+        &self.slots[self.active]
+    }
+
+    /// The design at each body's distance in the last [`CurvedTrack::prepare`].
+    pub fn points(&self) -> &[DesignPoint; N_BODIES] {
+        &self.slot().points
     }
 }
 
@@ -144,42 +174,97 @@ impl CurvedTrack {
                 }
             })
             .collect();
+        let mut parents = Vec::new();
+        for w in 0..N_WHEELSETS {
+            parents.push((body_hollow_shaft(w), body_wheelset(w)));
+            for side in 0..2 {
+                parents.push((body_rotary_arm(w, side), body_wheelset(w)));
+            }
+        }
+        for b in 0..N_BOGIES {
+            parents.push((body_traction_rod(b), BODY_CARBODY));
+        }
+        let attached = parents
+            .into_iter()
+            .map(|(body, parent)| {
+                let (x, x0) = (bodies[body].position, bodies[parent].position);
+                (body, parent, [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]])
+            })
+            .collect();
         Self {
             design,
             bodies,
             gravity: structure.gravity,
             stations,
             station_of,
+            attached,
         }
     }
 
     /// Fills `work` for the vehicle origin at distance `s_r` (m) running at `speed` (m/s): the
     /// design at every body and the body states seen in the reference frame, from the states
     /// `relative` to the bodies' own frames (`structure.body_states` of the coordinates).
+    /// (`_structure`: the bodies are this track's own copy since the offsets no longer go
+    /// through the motion maps; kept so callers need not change.)
     pub fn prepare(
         &self,
-        structure: &VehicleStructure,
+        _structure: &VehicleStructure,
         s_r: f64,
         speed: f64,
         relative: &BodyStates,
         work: &mut FrameWork,
     ) {
+        let key = Some((self as *const Self as usize, s_r.to_bits(), speed.to_bits()));
+        if let Some(k) = work.slots.iter().position(|slot| slot.key == key) {
+            work.active = k;
+        } else {
+            // Replace the older slot, keep the last one (the stage before may come back).
+            work.active = 1 - work.active;
+            self.compute_frames(s_r, speed, work);
+            work.slots[work.active].key = key;
+        }
+        let offset_states = &work.slots[work.active].offset_states;
+        // The motion maps are linear: a body's state in the reference frame is its state
+        // relative to its own frame plus its frame's offset (no second pass over the maps).
+        let pairs = [
+            (
+                &mut work.states.position,
+                &relative.position,
+                &offset_states.position,
+            ),
+            (
+                &mut work.states.velocity,
+                &relative.velocity,
+                &offset_states.velocity,
+            ),
+        ];
+        for (sum, own, offset) in pairs {
+            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
+                for k in 0..6 {
+                    s[k] = a[k] + b[k];
+                }
+            }
+        }
+    }
+
+    /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
+    /// each body's frame offset from the reference frame.
+    fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
         let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
         for ((point, roll), x) in stations.zip(&self.stations) {
             *point = self.design.at(s_r + x);
             *roll = point.roll.sin_cos();
         }
+        let slot = &mut work.slots[work.active];
         for (i, &k) in self.station_of.iter().enumerate() {
-            work.points[i] = work.station_points[k];
-            work.roll_sin_cos[i] = work.station_roll[k];
+            slot.points[i] = work.station_points[k];
+            slot.roll_sin_cos[i] = work.station_roll[k];
         }
         let r = work.station_points[0];
         let (st, ct) = work.station_roll[0];
         let roll_rate_r = speed * r.roll_rate;
-        work.offsets.fill(0.0);
-        work.rates.fill(0.0);
-        for (first, body) in free_bodies() {
-            let p = &work.points[body];
+        for (_, body) in free_bodies() {
+            let p = &slot.points[body];
             let x = self.bodies[body].position;
             let d_psi = p.heading - r.heading;
             let lateral = p.heading_integral - r.heading_integral - r.heading * x[0];
@@ -201,38 +286,30 @@ impl CurvedTrack {
                 ],
                 cross(rot_rate, arm),
             );
-            work.offsets[first..first + 3].copy_from_slice(&trans);
-            work.offsets[first + 3..first + 6].copy_from_slice(&rot);
-            work.rates[first..first + 3].copy_from_slice(&trans_rate);
-            work.rates[first + 3..first + 6].copy_from_slice(&rot_rate);
+            // A free body's map is the identity on its coordinates: the offset is its state.
+            slot.offset_states.position[body] =
+                [trans[0], trans[1], trans[2], rot[0], rot[1], rot[2]];
+            slot.offset_states.velocity[body] = [
+                trans_rate[0],
+                trans_rate[1],
+                trans_rate[2],
+                rot_rate[0],
+                rot_rate[1],
+                rot_rate[2],
+            ];
         }
-        // Rotary arms pitch with their wheelset (a rigid motion sets them to its pitch).
-        for w in 0..N_WHEELSETS {
-            for side in 0..2 {
-                work.offsets[rotary_arm(w, side)] = work.offsets[wheelset(w) + PITCH];
-                work.rates[rotary_arm(w, side)] = work.rates[wheelset(w) + PITCH];
-            }
-        }
-        structure.body_states(&work.offsets, &work.rates, &mut work.offset_states);
-        // The motion maps are linear: a body's state in the reference frame is its state
-        // relative to its own frame plus its frame's offset (no second pass over the maps).
-        let pairs = [
-            (
-                &mut work.states.position,
-                &relative.position,
-                &work.offset_states.position,
-            ),
-            (
-                &mut work.states.velocity,
-                &relative.velocity,
-                &work.offset_states.velocity,
-            ),
-        ];
-        for (sum, own, offset) in pairs {
-            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
-                for k in 0..6 {
-                    s[k] = a[k] + b[k];
-                }
+        // The attached bodies (hollow shafts, traction rods, rotary arms with their wheelset's
+        // pitch) take their parent's rigid motion: their maps applied to the offsets' coordinates
+        // give u = u_parent + θ_parent × (x_body − x_parent), evaluated here directly (the maps'
+        // sparse rows cost five times as much; tests compare both).
+        for &(body, parent, arm) in &self.attached {
+            for states in [
+                &mut slot.offset_states.position,
+                &mut slot.offset_states.velocity,
+            ] {
+                let u = states[parent];
+                let t = add([u[0], u[1], u[2]], cross([u[3], u[4], u[5]], arm));
+                states[body] = [t[0], t[1], t[2], u[3], u[4], u[5]];
             }
         }
     }
@@ -250,16 +327,17 @@ impl CurvedTrack {
     ) {
         let v2 = speed * speed;
         let g = self.gravity;
+        let slot = work.slot();
         for (i, body) in self.bodies.iter().enumerate() {
-            let o = &work.offset_states.position[i];
+            let o = &slot.offset_states.position[i];
             let rot = [o[3], o[4], o[5]];
             let w = &mut wrenches[i];
             let f = [w[0], w[1], w[2]];
             let m = [w[3], w[4], w[5]];
             let f = sub(f, cross(rot, f));
             let m = sub(m, cross(rot, m));
-            let p = &work.points[i];
-            let (s, c) = work.roll_sin_cos[i];
+            let p = &slot.points[i];
+            let (s, c) = slot.roll_sin_cos[i];
             let a = v2 * p.curvature;
             let mg = body.mass * g;
             // Gravity in the own frame less the reference frame's vertical turned into it.
@@ -289,8 +367,8 @@ impl CurvedTrack {
     /// [`Self::prepare`].
     #[inline]
     pub fn wheelset_frame_yaw_rate(&self, speed: f64, work: &FrameWork, w: usize) -> f64 {
-        let p = &work.points[body_wheelset(w)];
-        speed * p.curvature * work.roll_sin_cos[body_wheelset(w)].1
+        let slot = work.slot();
+        speed * slot.points[body_wheelset(w)].curvature * slot.roll_sin_cos[body_wheelset(w)].1
     }
 }
 
