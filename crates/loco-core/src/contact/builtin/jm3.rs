@@ -176,11 +176,12 @@ pub fn tread(state: &TreadState) -> Result<Profile> {
     jm3(&name, state)
 }
 
-/// Appends the tread band of `state` turning by `length` m of path (a line when the band is
-/// straight, `band_radius` infinite).
-fn band(builder: ProfileBuilder, state: &TreadState, length: f64) -> ProfileBuilder {
+/// Appends `length` m of the tread band of `state`, turning by `turn` rad on its arc (a line when
+/// the band is straight, `band_radius` infinite). The turn is passed as the caller computes it,
+/// not re-derived from the length, so the built-in wheels keep their bits.
+fn band(builder: ProfileBuilder, state: &TreadState, length: f64, turn: f64) -> ProfileBuilder {
     if state.band_radius.is_finite() {
-        builder.arc(state.band_radius, -length / state.band_radius)
+        builder.arc(state.band_radius, turn)
     } else {
         builder.line(length)
     }
@@ -194,7 +195,7 @@ fn path(state: &TreadState, face: f64, inner_band: f64) -> ProfileBuilder {
         .arc(TIP_RADIUS, FLANGE_ANGLE - BACK_DIRECTION)
         .line(face)
         .arc(ROOT_RADIUS, -(FLANGE_ANGLE - band_start));
-    band(to_band, state, inner_band)
+    band(to_band, state, inner_band, -(band_start - at_taping))
 }
 
 /// The JM3-type wheel profile `name` in state `state` (profile frame, origin at the taping line).
@@ -219,7 +220,12 @@ pub fn jm3(name: &str, state: &TreadState) -> Result<Profile> {
             // band does not leave an exaggerated false flange at the field side.
             let band_end = state.tread_slope.atan() - BAND_OUTER_LENGTH / state.band_radius;
             let outer_turn = OUTER_SLOPE.atan() - band_end;
-            let banded = band(to_taping, state, BAND_OUTER_LENGTH);
+            let banded = band(
+                to_taping,
+                state,
+                BAND_OUTER_LENGTH,
+                -BAND_OUTER_LENGTH / state.band_radius,
+            );
             // A cone of exactly 1:20 needs no return arc.
             let returned = if outer_turn.abs() > 1e-9 {
                 banded.arc(OUTER_RADIUS, outer_turn)
