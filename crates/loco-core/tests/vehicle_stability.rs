@@ -5,7 +5,7 @@
 use loco_core::dampers::Damper;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
 use loco_core::vehicle::linearise::{
-    least_damped, linear_critical_speed, LinearSearch, LinearisationSettings, HALF_TABLE_CELL,
+    least_damped, linear_critical_speed, LinearSearch, LinearisationSettings,
 };
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{linearised, simulate, Scenario, TrackSpec};
@@ -120,8 +120,9 @@ fn hunting_survives_below_the_linear_critical_speed_down_to_the_ramp_result() {
 }
 
 /// Linear critical speeds of the three study scenarios with YD1 and YD2 (the README's table)
-/// with the one-cell linearisation step (`HALF_TABLE_CELL`) and the default 1e-7: how much the
-/// linear stability results depend on the step (run with `--ignored --nocapture`).
+/// with the candidate two groups of linearisation steps and with the default one step of 1e-7
+/// (`vehicle::linearise`): how much the linear stability results depend on the steps (run with
+/// `--ignored --nocapture`).
 #[test]
 #[ignore = "prints a table for the README (about a minute on 2 cores)"]
 fn linear_critical_speeds_against_the_linearisation_step() {
@@ -130,21 +131,23 @@ fn linear_critical_speeds_against_the_linearisation_step() {
             let mut s = Scenario::study(name, 50.0, 50.0, 0).unwrap();
             s.track = TrackSpec::Perfect;
             s.yaw_damper = Some(damper);
-            let speeds: Vec<f64> = [HALF_TABLE_CELL, LinearisationSettings::default().step]
-                .iter()
-                .map(|&step| {
-                    let search = LinearSearch {
-                        high: 150.0,
-                        tolerance: 0.1,
-                        linearisation: LinearisationSettings { step },
-                        ..LinearSearch::default()
-                    };
-                    linear_critical_speed(ParameterSet::default_vehicle(), &s, &search).unwrap()
-                })
-                .collect();
+            let speeds: Vec<f64> = [
+                LinearisationSettings::two_groups(),
+                LinearisationSettings::default(),
+            ]
+            .iter()
+            .map(|&linearisation| {
+                let search = LinearSearch {
+                    high: 150.0,
+                    tolerance: 0.1,
+                    linearisation,
+                    ..LinearSearch::default()
+                };
+                linear_critical_speed(ParameterSet::default_vehicle(), &s, &search).unwrap()
+            })
+            .collect();
             println!(
-                "{name} {label}: step {:e}: {:.2} m/s, step 1e-7: {:.2} m/s ({:+.2} %)",
-                HALF_TABLE_CELL,
+                "{name} {label}: two groups: {:.2} m/s, default (1e-7): {:.2} m/s ({:+.2} %)",
                 speeds[0],
                 speeds[1],
                 100.0 * (speeds[0] / speeds[1] - 1.0)

@@ -8,27 +8,46 @@
 //! damping ratios `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses
 //! numpy/LAPACK.
 //!
-//! The difference step ([`LinearisationSettings`]). The contact table stores the wheel–rail
-//! contact on a uniform grid of lateral displacements (0.1 mm) and interpolates linearly between
-//! grid points, so below one cell it is piecewise linear: a central difference much smaller than
-//! a cell (the default 1e-7) returns the slope of the one cell the equilibrium falls in, which
-//! jumps from cell to cell and differs from the slope of the smooth contact geometry by
-//! O(cell × curvature). A central difference spanning exactly one cell (±half a cell, 5e-5) is
-//! the derivative of the table smoothed by a one-cell box, i.e. of the quadratic B-spline through
-//! the table points: continuous in the equilibrium position and second-order accurate for the
-//! smooth geometry the table samples. That is the usual rule for differencing a function known to
-//! a finite resolution: the increment must exceed the scale of its small-scale structure (Kelley,
-//! *Implicit Filtering*, SIAM 2011; Nocedal and Wright, *Numerical Optimization*, 2nd ed., §8.1).
-//! A larger step is a secant, an amplitude-dependent equivalent linearisation, as equivalent
-//! conicity is defined at a stated lateral amplitude (EN 15302) and a describing function at a
-//! stated input amplitude (Gelb and Vander Velde, *Multiple-Input Describing Functions*, 1968).
-//! Measured on the S_norm YD1 alignment case at 20 m (README, "Frequency response"): −11.4 % /
-//! −5.4° (carbody) against the time domain with 1e-7, −3.5 % / +0.9° with 5e-5. The default is
-//! still 1e-7: the full matrix with half a cell ([`HALF_TABLE_CELL`]) passes every alignment case
-//! but takes S_low cross level at 150 m out of the 5 % band (+5.7 %, README), and it raises the
-//! S_high linear critical speeds by 3.7–4.6 %.
+//! The difference steps ([`LinearisationSettings`]). A central difference is the derivative the
+//! time domain sees only if its step lies on a plateau of the right-hand side along that
+//! coordinate: larger than its small-scale structure, smaller than the scale of its smooth
+//! nonlinearity (Kelley, *Implicit Filtering*, SIAM 2011; Nocedal and Wright, *Numerical
+//! Optimization*, 2nd ed., §8.1). The coordinates fall into two groups:
+//!
+//! - Through the Hertz approach (81 µm at the static load): a wheelset's vertical position and
+//!   roll, the rails' heights. `N ∝ δ^1.5` is smooth; the columns agree within 1e-4 for steps up
+//!   to 1e-5 and move by 1.3–1.7 % at 5e-5 (9–11 % at 2e-4), a secant over 60 % of δ, while the
+//!   time domain's approach varies by micrometres. These, and every other displacement (linear
+//!   suspension), take `step` = 1e-7: the tangent. A roll step of 5e-5 alone moves the S_low cross
+//!   level response at 150 m by +15 %.
+//! - Across the contact and through the creepages: a wheelset's lateral position (read from the
+//!   contact table on 0.1 mm cells) and yaw (lateral creepage, contact lead), the rails' lateral
+//!   positions, and every velocity (creepages `v/V`). The table is piecewise linear and FASTSIM's
+//!   discrete stick/slip elements make the creep forces piecewise smooth at the rolling
+//!   equilibrium (spin creepage from the contact angle): on S_norm the longitudinal, spin-rate
+//!   and yaw-rate columns take one value for steps up to 1e-6 and another, 2.5–2.7 % away, for
+//!   5e-5 … 1e-3 (which agree within 0.3 %). The time domain's lateral amplitudes (0.06–0.9 mm)
+//!   span several cells and its creepages (about 1e-4) that structure, so these would take
+//!   `contact_step` = [`HALF_TABLE_CELL`] (5e-5: one table cell, a creepage of 1e-6 at 200 km/h).
+//!
+//! Measured against the time domain (0.2 mm sinusoids, `tests/frequency_response.rs`, README
+//! "Frequency response"): one step of 1e-7 for everything puts S_norm + YD1 alignment at 20 m at
+//! −11.4 % / −5.4° (carbody); one step of 5e-5 for everything passes it but takes S_low cross
+//! level at 150 m to +5.7 % (the Hertz secant of the roll columns: a roll step of 5e-5 alone gives
+//! +15 %). The two groups ([`LinearisationSettings::two_groups`]) pass both (+1.2 % / +2.5°,
+//! −4.5 % / −0.1°; S_low cross level 150 m +0.0 %) and every alignment and cross-level case of
+//! YD1/YD2 but one: S_high + YD2 cross level at 40 m, carbody −6.3 % / +2.9° (a small response,
+//! 1.6e-3 m/s²; +1.2 % with 1e-7), and S_high cross level at 150 m moves from 0.0 to −1.6 %.
+//! Not understood yet, and a lead: with y₀ on a grid point a central difference of the piecewise
+//! linear table gives the same slope for any step up to half a cell, yet the lateral column's step
+//! matters (S_norm + YD1 20 m: −11.4 → −7.3 % from that column alone); half a cell is exactly
+//! where a contact slot present at only one neighbouring grid point switches on (the lookup's
+//! lone-slot rule), so a step of 5e-5 may be reading a second contact point, which is physics at
+//! 0.9 mm of amplitude but an accident of the step. So the default stays one step of 1e-7 (the
+//! README's linear results), and `two_groups` is the candidate.
 
 use super::integrator::OdeSystem;
+use super::layout::{wheelset, N_DOF, N_WHEELSETS, Y, YAW};
 use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
@@ -37,33 +56,72 @@ use crate::error::{check_positive, LocoError, Result};
 use nalgebra::linalg::balancing::balance_parlett_reinsch;
 use nalgebra::{Complex, DMatrix, Schur};
 
-/// Half the default contact table's grid step, m (5e-5): the central-difference step that spans
-/// one table cell (module documentation).
+/// Half the default contact table's grid step, m (5e-5): a central difference of this half-width
+/// spans one table cell; the default `contact_step`.
 pub const HALF_TABLE_CELL: f64 = 0.5 * 1e-4;
 
-/// How the model is linearised: the central-difference step of the state and input matrices
-/// (module documentation).
+/// Default `step` of the Hertz-side coordinates and the rest, m, rad or m/m.
+pub const HERTZ_STEP: f64 = 1e-7;
+
+/// How the model is linearised: the central-difference steps of the state and input matrices
+/// (module documentation). Each is scaled by `1 + |y₀|` for a state of equilibrium value `y₀`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinearisationSettings {
-    /// Half-width of the central differences, in each state's unit (m, rad, m/s, rad/s) and for
-    /// the rail inputs (m, m/m), scaled by `1 + |y₀|` for a state of equilibrium value `y₀`.
-    /// Default 1e-7 (the step the README's linear results were computed with);
-    /// [`HALF_TABLE_CELL`] is the one-cell secant.
+    /// Half-width of the differences of the wheelsets' vertical positions and rolls, every other
+    /// displacement (m, rad), the dampers' internal states and the rails' heights and slopes
+    /// (m, m/m). Default [`HERTZ_STEP`].
     pub step: f64,
+    /// Half-width of the differences of the wheelsets' lateral positions and yaws (m, rad), the
+    /// rails' lateral positions (m) and every velocity (m/s, rad/s). Default [`HERTZ_STEP`];
+    /// [`HALF_TABLE_CELL`] in [`Self::two_groups`].
+    pub contact_step: f64,
 }
 
 impl Default for LinearisationSettings {
+    /// One step of [`HERTZ_STEP`] for every coordinate (module documentation: why not yet
+    /// [`Self::two_groups`]).
     fn default() -> Self {
-        Self { step: 1e-7 }
+        Self::uniform(HERTZ_STEP)
     }
 }
 
 impl LinearisationSettings {
-    /// The settings with `step` checked (finite, > 0).
+    /// The two groups of the module documentation: [`HERTZ_STEP`] on the Hertz side,
+    /// [`HALF_TABLE_CELL`] across the contact and for the velocities.
+    pub fn two_groups() -> Self {
+        Self {
+            step: HERTZ_STEP,
+            contact_step: HALF_TABLE_CELL,
+        }
+    }
+
+    /// One step for every state and input.
+    pub fn uniform(step: f64) -> Self {
+        Self {
+            step,
+            contact_step: step,
+        }
+    }
+
+    /// The settings with both steps checked (finite, > 0).
     pub fn checked(&self) -> Result<Self> {
         Ok(Self {
             step: check_positive("step", self.step)?,
+            contact_step: check_positive("contact_step", self.contact_step)?,
         })
+    }
+
+    /// Half-width of the difference of state `j` (layout: displacements, then velocities from
+    /// `N_DOF`, then the dampers' states) about its equilibrium value `y0`.
+    pub fn state_step(&self, j: usize, y0: f64) -> f64 {
+        let across_contact = (wheelset(0)..wheelset(N_WHEELSETS)).contains(&j)
+            && matches!((j - wheelset(0)) % 6, Y | YAW);
+        let base = if across_contact || (N_DOF..2 * N_DOF).contains(&j) {
+            self.contact_step
+        } else {
+            self.step
+        };
+        base * (1.0 + y0.abs())
     }
 }
 
@@ -78,7 +136,7 @@ pub fn linearise_with(
     system: &mut VehicleSystem,
     settings: &LinearisationSettings,
 ) -> Result<(Vec<f64>, Vec<f64>)> {
-    let step = settings.checked()?.step;
+    let settings = settings.checked()?;
     let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
     let n = system.dimension();
     let mut a = vec![0.0; n * n];
@@ -86,7 +144,7 @@ pub fn linearise_with(
     let mut plus = vec![0.0; n];
     let mut minus = vec![0.0; n];
     for j in 0..n {
-        let h = step * (1.0 + y0[j].abs());
+        let h = settings.state_step(j, y0[j]);
         y[j] = y0[j] + h;
         system.derivatives(0.0, &y, &mut plus);
         y[j] = y0[j] - h;

@@ -9,8 +9,9 @@
 //!
 //! All four matrices are central finite differences of the full nonlinear right-hand side and of
 //! the recording function about the equilibrium, as [`super::linearise`] forms `A` for the
-//! eigenvalue analysis, with the same [`LinearisationSettings`] (the rail inputs are perturbed by
-//! the same step in m and m/m). Discrete damper states (a frequency valve) stay
+//! eigenvalue analysis, with the same [`LinearisationSettings`]: the rails' lateral positions by
+//! `contact_step` (they move the contact across the wheel as the wheelset's lateral position
+//! does), their heights and slopes by `step` (m, m/m; heights act through the Hertz approach). Discrete damper states (a frequency valve) stay
 //! at their start state, as in the eigenvalue analysis: an FSD is linearised with its valve in the
 //! `start_closed` position.
 
@@ -89,7 +90,7 @@ pub fn track_input_model_with(
     system: &mut VehicleSystem,
     settings: &LinearisationSettings,
 ) -> Result<TrackInputModel> {
-    let step = settings.checked()?.step;
+    let settings = settings.checked()?;
     let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
     let probes = probes(&system.structure)?;
     let outputs = names_of(&system.structure, &probes);
@@ -102,7 +103,7 @@ pub fn track_input_model_with(
     system.rail_inputs = Some(perfect);
     let mut y = y0.clone();
     for j in 0..n {
-        let h = step * (1.0 + y0[j].abs());
+        let h = settings.state_step(j, y0[j]);
         y[j] = y0[j] + h;
         evaluate(system, &probes, &y, &mut plus, &mut z_plus);
         y[j] = y0[j] - h;
@@ -118,7 +119,13 @@ pub fn track_input_model_with(
     for w in 0..N_WHEELSETS {
         for k in 0..RAIL_INPUTS {
             let col = w * RAIL_INPUTS + k;
-            let h = step;
+            // The rails' lateral positions move the contact across the wheel, as the wheelset's
+            // lateral position does; heights and slopes act through the Hertz approach.
+            let h = if k == 0 || k == 2 {
+                settings.contact_step
+            } else {
+                settings.step
+            };
             let mut rails = perfect;
             *rail_field(&mut rails[w], k) = h;
             system.rail_inputs = Some(rails);
