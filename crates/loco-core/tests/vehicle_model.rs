@@ -170,8 +170,12 @@ fn an_absurdly_stiff_primary_spring_is_refused_for_the_step() {
         "{e}"
     );
     assert!(e.to_string().contains(key), "{e}");
-    // The wheelset's vertical mode: 25 kHz in the message (ω = √(2·1.5e13/2000) ≈ 1.2e5 rad/s).
-    assert!(e.to_string().contains("wheelset"), "{e}");
+    // A mode of the bodies the springs join (frame on its wheelsets), tens of kHz.
+    let e = e.to_string();
+    assert!(
+        e.contains("mostly `frame") || e.contains("mostly `wheelset"),
+        "{e}"
+    );
 }
 
 #[test]
