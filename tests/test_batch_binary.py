@@ -198,3 +198,27 @@ def test_the_same_scenario_keys_mean_the_same_run_in_both_front_ends(tmp_path: P
         progress=False,
     )
     assert not np.array_equal(default.metrics, expected.metrics, equal_nan=True)
+
+
+def test_a_bad_curve_section_in_a_study_file_is_named_with_its_field(tmp_path: Path) -> None:
+    """`[[scenario.curve]]` tables are read section by section: the error names the section and
+    the field (an untagged enum's "did not match any variant" named neither), at the file's line."""
+    _, samples = _write_inputs(tmp_path)
+    study = tmp_path / "curve.toml"
+    head = "[scenario]\nname = 'S_norm'\nspeed = 50.0\ndistance = 10.0\ntrack = 'perfect'\n"
+    straight = "[[scenario.curve]]\nkind = 'straight'\nlength_m = 20.0\n"
+    for section, field, expected in [
+        ("kind = 'curve'\nlength_m = 50.0\nradius_m = 'x'\ndirection = 'left'\n",
+         "curve section 2 (radius_m)", "invalid type"),
+        ("kind = 'curve'\nlength_m = 50.0\nradius = 800.0\ndirection = 'left'\n",
+         "curve section 2 (radius)", "unknown field"),
+        ("length_m = 50.0\n", "curve section 2", "missing field `kind`"),
+    ]:  # fmt: skip
+        study.write_text(head + straight + "[[scenario.curve]]\n" + section, encoding="utf-8")
+        done = _batch(study, samples, "--quiet")
+        assert done.returncode != 0
+        assert f"`{field}`" in done.stderr and expected in done.stderr, done.stderr
+        assert f"{study}:" in done.stderr, done.stderr
+    study.write_text(head + "curve = 3\n", encoding="utf-8")
+    done = _batch(study, samples, "--quiet")
+    assert done.returncode != 0 and "`curve`" in done.stderr and "list of sections" in done.stderr

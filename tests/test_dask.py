@@ -88,6 +88,13 @@ def test_local_cluster_bit_identical_to_threads(
     with pytest.raises(loco.ParameterError, match=r"row 6, column 1 'K_py'"):
         loco.run_batch(bad, names(), VEHICLE, scenario=SCENARIO, executor=cluster,
                        chunk_size=4, progress=False)  # fmt: skip
+    # Its class too: a value outside the range is a `ParameterRangeError` on the driver, from
+    # local threads and from the cluster alike (K_py is not allowed out of range in VEHICLE).
+    bad[6, 1] = 1e30
+    for executor in (None, cluster):
+        with pytest.raises(loco.ParameterRangeError, match=r"row 6\b.*K_py|K_py.*row 6\b"):
+            loco.run_batch(bad, names(), VEHICLE, scenario=SCENARIO, executor=executor,
+                           chunk_size=4, progress=False)  # fmt: skip
     # Histories come back from the workers too.
     kept = loco.run_batch(design[:2], names(), scenario=SCENARIO, executor=cluster,
                           histories=[1], progress=False)  # fmt: skip

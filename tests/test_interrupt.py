@@ -40,3 +40,82 @@ def test_sigint_stops_a_long_simulation() -> None:
         # 50 km would take about half a minute; an honoured Ctrl-C ends it within a few
         # seconds even on a loaded machine (the set-up before the loop is not interruptible).
         assert waited < 10.0, waited
+
+
+#: Repeated Ctrl-C at random moments of every long call of the bindings, in one subprocess: each
+#: call must end as KeyboardInterrupt within a few seconds of its SIGINT (never a panic, never a
+#: silent finish), and an interrupted campaign keeps every chunk it reported finished.
+MANY = r"""
+import json, os, random, signal, sys, tempfile, threading, time
+import numpy as np
+import loco
+from loco.campaign import run_campaign
+
+random.seed(int(sys.argv[1]))
+vehicle = loco.Locomotive.default()
+long_run = loco.Scenario(scenario="S_high", distance=50_000.0, track="perfect")
+short = loco.Scenario(scenario="S_high", distance=300.0, seed=3)
+# Hunting at 396 km/h, a ramp of ~7 s on an idle machine down to where it dies out.
+hunting = loco.Scenario(scenario="S_high", speed=110.0, distance=100.0, track="perfect")
+finished = []
+calls = {
+    "simulate": lambda: loco.simulate(vehicle, long_run),
+    "run_batch": lambda: loco.run_batch(np.full((16, 1), 8e5), ["C_sx"], scenario=long_run,
+                                        threads=2, progress=False),
+    "critical_speed_nonlinear": lambda: loco.critical_speed(vehicle, hunting, method="nonlinear",
+                                                            deceleration=0.2),
+    "campaign": lambda: run_campaign(np.linspace(2e5, 9e5, 8)[:, None], ["C_sx"], scenario=short,
+                                     store=store, chunk_size=2, threads=2, progress=False,
+                                     on_chunk=lambda idx: finished.extend(int(i) for i in idx)),
+}
+for name in sys.argv[2:]:
+    if name == "campaign":  # a fresh store: the campaign runs from nothing
+        store = tempfile.mkdtemp()
+        finished.clear()
+    delay = random.uniform(0.05, 2.5)
+    timer = threading.Timer(delay, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.perf_counter()
+    timer.start()
+    try:
+        calls[name]()
+        outcome = "finished"
+    except KeyboardInterrupt:
+        outcome = "interrupted"
+    except BaseException as e:
+        outcome = f"{type(e).__name__}: {e}"
+    timer.cancel()
+    late = time.perf_counter() - start - delay
+    answer = {"call": name, "delay": delay, "late": late, "outcome": outcome}
+    if name == "campaign" and outcome == "interrupted":
+        again = run_campaign(np.linspace(2e5, 9e5, 8)[:, None], ["C_sx"], scenario=short,
+                             store=store, chunk_size=2, threads=2, progress=False)
+        answer |= {"finished_before": len(set(finished)), "reused": int(again.n_reused),
+                   "complete": bool((again.status == 0).all())}
+    print(json.dumps(answer), flush=True)
+"""
+
+
+def test_many_sigints_across_the_bindings() -> None:
+    import json
+
+    calls = ["simulate", "run_batch", "critical_speed_nonlinear", "campaign"] * 2
+    done = subprocess.run(
+        [sys.executable, "-c", MANY, "13", *calls],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert "Panic" not in done.stderr and "panicked" not in done.stderr, done.stderr
+    answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
+    assert [a["call"] for a in answers] == calls
+    for a in answers:
+        # Every call takes far longer than its delay: a Ctrl-C that is not honoured shows.
+        assert a["outcome"] == "interrupted", a
+        # Within a step or a sample of the signal (the set-up before a run is not
+        # interruptible: a contact table, ~1 s on a loaded machine).
+        assert a["late"] < 8.0, a
+        if a["call"] == "campaign":
+            # Every chunk reported finished was stored: the rerun reads them back.
+            assert a["reused"] >= a["finished_before"] and a["complete"], a

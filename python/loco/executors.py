@@ -126,9 +126,10 @@ def run_chunk(
             progress=progress,
         )
     except _loco.ParameterError as e:
-        # The native message numbers rows within the chunk; name the campaign's row instead.
+        # The native message numbers rows within the chunk; name the campaign's row instead,
+        # keeping the class (a `ParameterRangeError` stays one on the driver).
         text = re.sub(r"\brow (\d+)", lambda m: f"row {chunk.indices[int(m[1])]}", str(e))
-        raise _loco.ParameterError(text) from None
+        raise type(e)(text) from None
     return ChunkResult(
         indices=chunk.indices,
         metric_names=list(metric_names),

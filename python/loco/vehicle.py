@@ -15,6 +15,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
+from loco.field_types import real, wrong_type
 
 __all__ = ["STUDY_PARAMETERS", "Locomotive", "Parameter", "body_names", "dof_names"]
 
@@ -49,7 +50,7 @@ class Locomotive:
     native: _loco.Vehicle = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        overrides = {k: float(v) for k, v in self.overrides.items()}
+        overrides = _checked(self.overrides)
         object.__setattr__(self, "overrides", overrides)
         object.__setattr__(self, "native", _loco.Vehicle(self.toml_text, self.origin, overrides))
 
@@ -90,7 +91,7 @@ class Locomotive:
         """A copy with parameters overridden, by key (``{"secondary.yaw_damper_damping": 2e5}``)
         or as keywords for names without dots (study aliases: ``replace(C_sx=2e5)``). The file
         is not parsed again; the new vehicle is built once."""
-        given = {k: float(v) for k, v in {**(overrides or {}), **kw}.items()}
+        given = _checked({**(overrides or {}), **kw})
         return Locomotive._wrap(self.native.replace(given))
 
     def parameters(self) -> dict[str, Parameter]:
@@ -112,6 +113,20 @@ class Locomotive:
     def default_toml(self) -> str:
         """The embedded default parameter file (a template for one's own)."""
         return _loco.default_vehicle_toml()
+
+
+def _checked(overrides: Mapping[str, float]) -> dict[str, float]:
+    """Overrides as floats by key; a key that is not a string or a value that is not a real number
+    (a bool, a string, a complex number, None) is a :class:`loco.ParameterError` naming the key,
+    not a raw ``TypeError`` or a silent conversion (``True`` read as 1, ``"2e5"`` as 2e5)."""
+    if not isinstance(overrides, Mapping):
+        raise wrong_type("overrides", "a mapping of parameter keys to values", overrides)
+    out: dict[str, float] = {}
+    for key, value in overrides.items():
+        if not isinstance(key, str):
+            raise wrong_type("overrides", "parameter keys (str)", key)
+        out[key] = real(key, value)
+    return out
 
 
 def dof_names() -> list[str]:

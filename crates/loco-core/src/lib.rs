@@ -19,6 +19,7 @@ pub mod csv_table;
 pub mod dampers;
 pub mod error;
 pub mod metrics;
+pub mod toml_fields;
 pub mod track;
 pub mod vehicle;
 

@@ -157,13 +157,25 @@ fn same_inputs_give_bit_identical_results() {
 }
 
 #[test]
-fn an_absurdly_stiff_primary_spring_diverges() {
+fn an_absurdly_stiff_primary_spring_is_refused_for_the_step() {
     // 1.5e13 N/m per axle box (a million times the real spring) puts the wheelset's vertical mode
-    // near 25 kHz, far outside RK4's stability region at 1 ms: the run blows up within steps.
+    // near 25 kHz, far outside RK4's stability region at 1 ms: the run would blow up within
+    // steps, so it is refused at the equilibrium, naming the step and the suspect.
+    let key = "primary.axle_box_spring_vertical_stiffness";
     let mut p = ParameterSet::default_vehicle();
-    research(&mut p, "primary.axle_box_spring_vertical_stiffness", 1.5e13);
+    research(&mut p, key, 1.5e13);
     let e = simulate(p, &perfect("S_norm", 200.0 / 3.6, 100.0)).unwrap_err();
-    assert!(matches!(e, LocoError::Diverged { .. }), "{e}");
+    assert!(
+        matches!(&e, LocoError::InvalidParameter { name, .. } if name == "step"),
+        "{e}"
+    );
+    assert!(e.to_string().contains(key), "{e}");
+    // A mode of the bodies the springs join (frame on its wheelsets), tens of kHz.
+    let e = e.to_string();
+    assert!(
+        e.contains("mostly `frame") || e.contains("mostly `wheelset"),
+        "{e}"
+    );
 }
 
 #[test]

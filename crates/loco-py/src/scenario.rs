@@ -5,7 +5,7 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
-use loco_core::track::design_input::SectionSetting;
+use loco_core::toml_fields::read_table;
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::presets::SCENARIOS;
 use loco_core::vehicle::scenario::Scenario;
@@ -14,7 +14,6 @@ use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
 use loco_core::LocoError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use serde::de::DeserializeOwned;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -86,26 +85,6 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
     Err(bad())
 }
 
-/// `table` read as a `T`; an error names the first key refused on its own, added to `base` (a
-/// table `T` accepts), as `name(key)`, else `whole`: serde's message names only the type.
-fn read_table<T: DeserializeOwned>(
-    table: &toml::Table,
-    base: &toml::Table,
-    whole: &str,
-    name: impl Fn(&str) -> String,
-) -> PyResult<T> {
-    let read = |table: toml::Table| toml::Value::Table(table).try_into::<T>();
-    read(table.clone()).map_err(|e| {
-        let key = table.iter().find(|(k, v)| {
-            let mut one = base.clone();
-            one.insert((*k).clone(), (*v).clone());
-            read(one).is_err()
-        });
-        let field = key.map_or_else(|| whole.to_string(), |(k, _)| name(k));
-        to_py_err(LocoError::param(field, e.message().to_string()))
-    })
-}
-
 /// The settings of a Python dict, checked as the study file's `[scenario]` section is.
 fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSettings> {
     let mut table = toml::Table::new();
@@ -119,44 +98,14 @@ fn settings_of(settings: Option<&Bound<'_, PyDict>>) -> PyResult<ScenarioSetting
         }
     }
     // The sections are read one by one, so that an error names the section and its field.
-    let curve = table.remove("curve").map(curve_setting).transpose()?;
+    let curve = table
+        .remove("curve")
+        .map(CurveSetting::from_toml)
+        .transpose()
+        .map_err(to_py_err)?;
     let settings: ScenarioSettings =
-        read_table(&table, &toml::Table::new(), "scenario", str::to_string)?;
+        read_table(&table, &toml::Table::new(), "scenario", str::to_string).map_err(to_py_err)?;
     Ok(ScenarioSettings { curve, ..settings })
-}
-
-/// The `curve` setting: a CSV path, or a list of tables with the fields of [`SectionSetting`]
-/// (`kind`, `length_m`, `radius_m`, `cant_mm`, `direction`, `cant_run_off_m`).
-fn curve_setting(curve: toml::Value) -> PyResult<CurveSetting> {
-    let bad = |name: String, reason: &str| to_py_err(LocoError::param(name, reason));
-    let sections = match curve {
-        toml::Value::String(path) => return Ok(CurveSetting::File(path)),
-        toml::Value::Array(sections) => sections,
-        _ => {
-            return Err(bad(
-                "curve".into(),
-                "expected a CSV path or a list of sections (dicts)",
-            ))
-        }
-    };
-    // A section the deserialiser accepts, to which each field is added on its own.
-    let base = toml::Table::try_from(SectionSetting::default())
-        .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
-    sections
-        .into_iter()
-        .enumerate()
-        .map(|(i, section)| {
-            let whole = format!("curve section {}", i + 1);
-            let toml::Value::Table(table) = section else {
-                return Err(bad(
-                    whole,
-                    "expected a dict of kind, length_m, radius_m, cant_mm, direction, cant_run_off_m",
-                ));
-            };
-            read_table(&table, &base, &whole, |k| format!("{whole} ({k})"))
-        })
-        .collect::<PyResult<Vec<SectionSetting>>>()
-        .map(CurveSetting::Sections)
 }
 
 #[pymethods]

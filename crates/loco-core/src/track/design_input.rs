@@ -10,6 +10,7 @@
 use super::design::{CurveDirection, DesignSection};
 use crate::csv_table::CsvTable;
 use crate::error::{LocoError, Result};
+use crate::toml_fields::read_table;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -29,7 +30,36 @@ fn field(i: usize, name: &str) -> String {
     format!("curve section {} ({name})", i + 1)
 }
 
+/// The fields of a section, in the order the docs give them.
+pub const SECTION_FIELDS: [&str; 6] = [
+    "kind",
+    "length_m",
+    "radius_m",
+    "cant_mm",
+    "direction",
+    "cant_run_off_m",
+];
+
 impl SectionSetting {
+    /// Section `i` (0-based) from a TOML value (a `[[scenario.curve]]` table, a Python dict):
+    /// an error names the section and the field that is wrong, unknown or of the wrong type,
+    /// or the section when a required field is missing.
+    pub fn from_toml(i: usize, value: toml::Value) -> Result<Self> {
+        let whole = format!("curve section {}", i + 1);
+        let toml::Value::Table(table) = value else {
+            return Err(LocoError::param(
+                whole,
+                format!(
+                    "expected a table of {}, got a {}",
+                    SECTION_FIELDS.join(", "),
+                    value.type_str()
+                ),
+            ));
+        };
+        let base = toml::Table::try_from(Self::default()).unwrap_or_default();
+        read_table(&table, &base, &whole, |k| field(i, k))
+    }
+
     /// The section, checked for the fields its kind needs and allows; `i` is its 0-based index.
     pub fn resolve(&self, i: usize) -> Result<DesignSection> {
         let refuse = |name: &str, given: bool| {
@@ -96,14 +126,7 @@ pub fn resolve_sections(settings: &[SectionSetting]) -> Result<Vec<DesignSection
 /// Sections from CSV text (header row of field names); `path` names the file in errors.
 pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>> {
     let table = CsvTable::parse(text, path)?;
-    let known = [
-        "kind",
-        "length_m",
-        "radius_m",
-        "cant_mm",
-        "direction",
-        "cant_run_off_m",
-    ];
+    let known = SECTION_FIELDS;
     let header = table.header_line;
     if let Some(bad) = table.names.iter().find(|n| !known.contains(n)) {
         return Err(table.error(

@@ -34,7 +34,7 @@ use super::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
 use super::run::{integrate, Flow};
 use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use super::simulation::{SpeedProfile, VehicleSystem};
-use super::statics::{static_equilibrium, StaticsSettings};
+use super::statics::{check_step, static_equilibrium, StaticsSettings};
 use super::structure::IntoVehicle;
 use crate::error::{check_positive, LocoError, Result};
 use std::collections::VecDeque;
@@ -171,7 +171,10 @@ pub fn nonlinear_critical_speed(
     let mut system = PerfectTrackVehicle::new(vehicle, &perfect)?.system(start_speed)?;
     // The ramp starts when the hunting has settled (below); until then V stays V0.
     system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
-    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;
+    let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
+    check_step(&equilibrium, dt)
+        .map_err(|e| super::suspects::with_suspects(e, &system.structure.parameters))?;
+    let mut y = equilibrium.state;
     disturb(&system, &mut y, settings.disturbance);
 
     let steps_per_window = (settings.window / dt).round().max(2.0) as usize;

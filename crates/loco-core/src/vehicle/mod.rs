@@ -23,7 +23,9 @@
 //!   with the only defaults ([`scenario_settings::ScenarioSettings::defaults`]); [`presets`]: the
 //!   study's scenarios and yaw dampers by name;
 //!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
-//! - [`statics`]: the static equilibrium every run starts from; [`run_statistics`]: what a run
+//! - [`statics`]: the static equilibrium every run starts from (and the explicit step its
+//!   stiffest mode allows); [`suspects`]: the out-of-range parameters a model failure names;
+//!   [`run_statistics`]: what a run
 //!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
 //!   scenario must keep (lowest speed, most steps and samples, largest creep grid).
 //! - [`wheel_channels`]: the per-wheel and per-wheelset channels (Q, Y, Y/Q, ΔQ/Q0, T·γ, contact
@@ -56,6 +58,7 @@ pub mod shifted_hessenberg;
 pub mod simulation;
 pub mod statics;
 pub mod structure;
+pub mod suspects;
 pub mod suspension;
 pub mod track_frame;
 pub mod track_input;

@@ -6,8 +6,9 @@ use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
-use super::statics::{static_equilibrium, StaticsSettings};
+use super::statics::{check_step, static_equilibrium, StaticsSettings};
 use super::structure::{IntoVehicle, VehicleStructure};
+use super::suspects::with_suspects;
 use super::track_frame::CurvedTrack;
 use super::track_limits::TrackLimits;
 use super::wheel_rail::{WheelRail, WheelRailSettings};
@@ -235,6 +236,10 @@ impl ContactParameters {
 
 /// Builds the wheel-rail contact (contact table and FASTSIM) of a scenario for a vehicle.
 pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
+    wheel_rail_of(parameters, scenario).map_err(|e| with_suspects(e, parameters))
+}
+
+fn wheel_rail_of(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
     let c = ContactParameters::from_parameters(parameters)?;
     let r0 = c.nominal_radius;
     let half = c.contact_half_distance;
@@ -353,7 +358,10 @@ pub fn simulate_prepared(
             &system.structure,
         )));
     }
-    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())?.state;
+    let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
+    check_step(&equilibrium, scenario.run.step)
+        .map_err(|e| with_suspects(e, &system.structure.parameters))?;
+    let mut y = equilibrium.state;
     if scenario.initial_lateral_offset != 0.0 {
         // On the rails: rise and roll follow the contact table, as in the critical-speed ramp.
         super::critical_speed::disturb(&system, &mut y, scenario.initial_lateral_offset);

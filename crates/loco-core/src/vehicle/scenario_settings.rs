@@ -92,15 +92,45 @@ pub const SYNTHETIC: &str = "synthetic";
 /// The `track` setting of a perfect (irregularity-free) track.
 pub const PERFECT: &str = "perfect";
 
-/// The `curve` setting: sections in place, or a CSV file of them.
-#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+/// The `curve` setting: sections in place, or a CSV file of them. Read by
+/// [`CurveSetting::from_toml`] (also as serde's `Deserialize`), so that a bad section in a study
+/// file is named with its field, not with an untagged enum's "did not match any variant".
+#[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum CurveSetting {
     File(String),
     Sections(Vec<SectionSetting>),
 }
 
+impl<'de> Deserialize<'de> for CurveSetting {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let value = toml::Value::deserialize(d)?;
+        Self::from_toml(value).map_err(serde::de::Error::custom)
+    }
+}
+
 impl CurveSetting {
+    /// The setting from its TOML value: a string is the path of a CSV file, an array the
+    /// sections ([`SectionSetting::from_toml`]); anything else is an error naming `curve`.
+    pub fn from_toml(value: toml::Value) -> Result<Self> {
+        match value {
+            toml::Value::String(path) => Ok(Self::File(path)),
+            toml::Value::Array(sections) => sections
+                .into_iter()
+                .enumerate()
+                .map(|(i, s)| SectionSetting::from_toml(i, s))
+                .collect::<Result<Vec<_>>>()
+                .map(Self::Sections),
+            other => Err(LocoError::param(
+                "curve",
+                format!(
+                    "expected the path of a CSV file or a list of sections, got a {}",
+                    other.type_str()
+                ),
+            )),
+        }
+    }
+
     /// The sections, a file relative to `dir`.
     pub fn sections(&self, dir: &Path) -> Result<Vec<DesignSection>> {
         match self {

@@ -319,8 +319,9 @@ impl VehicleSystem {
     /// step's evaluations (a wheel leaving its contact table) is returned.
     pub fn finish_step(&mut self, t: f64, y: &[f64]) -> Result<()> {
         let stage_error = self.error.take();
-        self.check_state(t, y)?;
-        stage_error.map_or(Ok(()), Err)
+        let blame = |e| super::suspects::with_suspects(e, &self.structure.parameters);
+        self.check_state(t, y).map_err(blame)?;
+        stage_error.map_or(Ok(()), |e| Err(blame(e)))
     }
 
     /// Checks a state after a step; errors say when and where. A non-finite value or a runaway

@@ -6,10 +6,18 @@
 //! which also fixes the otherwise free longitudinal position of the vehicle. The equilibrium is
 //! that on perfect track (runs start before the irregularities' run-in). Dampers carry no static
 //! force: their elongation in equilibrium becomes their reference. A search that does not
-//! converge is a [`LocoError::Equilibrium`] with its iterations and residual.
+//! converge, whose Jacobian is singular or whose equilibrium lies beyond the bounds a run may
+//! reach is a [`LocoError::Equilibrium`] with its iterations, residual and the coordinate
+//! concerned; out-of-range parameters of the vehicle are named as suspects
+//! ([`super::suspects`]).
+//!
+//! The Jacobian at the equilibrium with the mass matrix also gives the vehicle's stiffest mode,
+//! `ω = √|λ|max(M⁻¹ ∂Q/∂q)`: the fixed RK4 step of a run must keep `ω·h` inside RK4's stability
+//! limit on the imaginary axis, 2√2 ([`check_step`]), or the run blows up within steps.
 
-use super::layout::{wheelset, N_DOF, N_WHEELSETS, Z};
+use super::layout::{dof_names, wheelset, N_DOF, N_WHEELSETS, Z};
 use super::simulation::VehicleSystem;
+use super::suspects::with_suspects;
 use super::wheel_rail::ContactMode;
 use crate::error::{check_positive, LocoError, Result};
 use nalgebra::{DMatrix, DVector};
@@ -79,6 +87,43 @@ pub struct Equilibrium {
     pub iterations: usize,
     /// Norm of the residual generalized forces at the equilibrium, N (and N·m).
     pub residual: f64,
+    /// The stiffest mode about the equilibrium (with the patches held, no damping).
+    pub stiffest: StiffestMode,
+}
+
+/// The highest undamped natural frequency of the vehicle about its equilibrium and the
+/// coordinate that moves most in it (by kinetic energy).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StiffestMode {
+    /// Angular frequency `√|λ|max(M⁻¹ ∂Q/∂q)`, rad/s.
+    pub omega: f64,
+    /// The coordinate (`body.coordinate`) with the largest share of the mode.
+    pub coordinate: String,
+}
+
+/// RK4's stability limit on the imaginary axis, `|λ h| ≤ 2√2` (Hairer and Wanner, Solving ODEs
+/// II, §IV.2: the stability region of the classical 4-stage method).
+pub const RK4_IMAGINARY_LIMIT: f64 = 2.0 * std::f64::consts::SQRT_2;
+
+/// Checks that a fixed RK4 step `step` (s) is stable for the stiffest mode of `equilibrium`:
+/// an error naming `step`, with the mode's frequency, coordinate and the longest stable step.
+pub fn check_step(equilibrium: &Equilibrium, step: f64) -> Result<()> {
+    let mode = &equilibrium.stiffest;
+    if mode.omega * step <= RK4_IMAGINARY_LIMIT {
+        return Ok(());
+    }
+    Err(LocoError::param(
+        "step",
+        format!(
+            "{step} s is too long for the vehicle's stiffest mode ({:.0} rad/s, {:.0} Hz, mostly \
+             `{}`): RK4 is stable for steps up to 2√2/ω = {:.2e} s; shorten the step or check the \
+             stiffness and inertia parameters of that body",
+            mode.omega,
+            mode.omega / (2.0 * std::f64::consts::PI),
+            mode.coordinate,
+            RK4_IMAGINARY_LIMIT / mode.omega
+        ),
+    ))
 }
 
 /// Initial guess of a wheel's static penetration into the rail, m (Hertz, ≈ 100 kN per wheel).
@@ -91,32 +136,111 @@ fn residual(system: &mut VehicleSystem, q: &[f64], y: &mut [f64], out: &mut [f64
 }
 
 /// Solves `J d = r` by LU with partial pivoting; a pivot below 1e-14 of the largest entry means a
-/// body or coordinate the contact and suspension leave unrestrained.
-fn newton_step(jacobian: DMatrix<f64>, r: &[f64]) -> Result<Vec<f64>> {
+/// coordinate the contact and suspension leave unrestrained, or restrained 1e14 times less than
+/// the stiffest one (the reason names it).
+fn newton_step(jacobian: &DMatrix<f64>, r: &[f64]) -> std::result::Result<Vec<f64>, String> {
     let scale = jacobian.amax();
-    let lu = jacobian.lu();
+    let lu = jacobian.clone().lu();
     let pivots = lu.u().diagonal();
+    // The pivot's row of U is a combination of the rows of J in the permuted order; its column
+    // is the coordinate (columns are not permuted).
     if let Some(k) = pivots
         .iter()
         .position(|p| p.is_nan() || p.abs() <= 1e-14 * scale)
     {
-        return Err(LocoError::input(
-            "static equilibrium Jacobian",
-            format!("matrix is singular (column {k}): a body or coordinate is unrestrained"),
+        return Err(format!(
+            "the Jacobian is singular at coordinate `{}`: it is unrestrained, or its stiffness is \
+             below 1e-14 of the largest entry ({scale:.3e} N/m or N·m/rad)",
+            dof_names()[k]
         ));
     }
     let step = lu
         .solve(&DVector::from_column_slice(r))
-        .ok_or_else(|| LocoError::input("static equilibrium Jacobian", "matrix is singular"))?;
+        .ok_or_else(|| "the Jacobian is singular".to_string())?;
     Ok(step.as_slice().to_vec())
 }
 
+/// The largest eigenvalue modulus of `a` by power iteration (200 steps from a uniform vector).
+fn power_iteration(a: &DMatrix<f64>) -> f64 {
+    let mut x = DVector::from_element(a.nrows(), 1.0);
+    let mut growth = 0.0;
+    for _ in 0..200 {
+        let next = a * &x;
+        growth = next.norm() / x.norm();
+        if !(growth.is_finite() && growth > 0.0) {
+            break;
+        }
+        x = &next / next.norm();
+    }
+    growth
+}
+
+/// The stiffest mode of `jacobian` (∂Q/∂q, N/m and N·m/rad) with the vehicle's mass matrix.
+fn stiffest_mode(system: &VehicleSystem, jacobian: &DMatrix<f64>) -> Result<StiffestMode> {
+    let mass = DMatrix::from_fn(N_DOF, N_DOF, |i, j| system.structure.mass.get(i, j));
+    let lu = mass.clone().lu();
+    let a = lu.solve(jacobian).ok_or_else(|| {
+        LocoError::input("mass matrix", "singular: a body without mass or inertia")
+    })?;
+    let row_major: Vec<f64> = a.transpose().as_slice().to_vec();
+    let largest = match super::linearise::eigenvalues(&row_major, N_DOF) {
+        Ok(lambdas) => lambdas.into_iter().map(|l| l.norm()).fold(0.0, f64::max),
+        // A QR that does not converge (nearly equal stiff modes of the four quills): the growth
+        // rate of power iteration, which converges to the largest modulus all the same.
+        Err(_) => power_iteration(&a),
+    };
+    // Where the mode is: a few steps of inverse iteration with the shift -|λ| (the stiffest mode
+    // of a restoring Jacobian is real and negative), weighted by the kinetic energy.
+    let shifted = &a - DMatrix::identity(N_DOF, N_DOF) * (-largest * (1.0 + 1e-9));
+    let shifted = shifted.lu();
+    let mut x = DVector::from_element(N_DOF, 1.0);
+    for _ in 0..4 {
+        match shifted.solve(&x) {
+            Some(next) if next.amax().is_finite() && next.amax() > 0.0 => {
+                x = &next / next.amax();
+            }
+            _ => break,
+        }
+    }
+    let share = |i: usize| x[i].abs() * mass[(i, i)].sqrt();
+    let k = (0..N_DOF)
+        .max_by(|&i, &j| share(i).total_cmp(&share(j)))
+        .unwrap_or(0);
+    Ok(StiffestMode {
+        omega: largest.sqrt(),
+        coordinate: dof_names()[k].clone(),
+    })
+}
+
 /// Finds the static equilibrium with `settings`; sets the dampers' static elongations and the
-/// system's Newton iteration count ([`super::run_statistics::RunStatistics`]).
+/// system's Newton iteration count ([`super::run_statistics::RunStatistics`]). An error names
+/// the vehicle's out-of-range parameters as suspects.
 pub fn static_equilibrium(
     system: &mut VehicleSystem,
     settings: &StaticsSettings,
 ) -> Result<Equilibrium> {
+    let found = search(system, settings);
+    system.contact_mode = ContactMode::Rolling;
+    found.map_err(|e| with_suspects(e, &system.structure.parameters))
+}
+
+fn jacobian(system: &mut VehicleSystem, q: &[f64], r: &[f64], h: f64) -> DMatrix<f64> {
+    let mut y = vec![0.0; system.len_states()];
+    let mut r_trial = vec![0.0; N_DOF];
+    let mut jac = DMatrix::zeros(N_DOF, N_DOF);
+    let mut q_pert = q.to_vec();
+    for j in 0..N_DOF {
+        q_pert[j] = q[j] + h;
+        residual(system, &q_pert, &mut y, &mut r_trial);
+        q_pert[j] = q[j];
+        for i in 0..N_DOF {
+            jac[(i, j)] = (r_trial[i] - r[i]) / h;
+        }
+    }
+    jac
+}
+
+fn search(system: &mut VehicleSystem, settings: &StaticsSettings) -> Result<Equilibrium> {
     settings.validate()?;
     let n = system.len_states();
     let mut y = vec![0.0; n];
@@ -132,25 +256,16 @@ pub fn static_equilibrium(
     let h = settings.difference_step;
 
     let mut iterations = 0;
+    let mut last_jacobian = None;
     let mut converged = norm < settings.tolerance * weight;
     while !converged && iterations < settings.max_iterations {
-        let mut jac = DMatrix::zeros(N_DOF, N_DOF);
-        let mut q_pert = q.clone();
-        for j in 0..N_DOF {
-            q_pert[j] = q[j] + h;
-            residual(system, &q_pert, &mut y, &mut r_trial);
-            q_pert[j] = q[j];
-            for i in 0..N_DOF {
-                jac[(i, j)] = (r_trial[i] - r[i]) / h;
-            }
-        }
-        let step = match newton_step(jac, &r) {
-            Ok(step) => step,
-            Err(e) => {
-                system.contact_mode = ContactMode::Rolling;
-                return Err(e);
-            }
-        };
+        let jac = jacobian(system, &q, &r, h);
+        let step = newton_step(&jac, &r).map_err(|reason| LocoError::Equilibrium {
+            iterations,
+            residual: norm,
+            reason,
+        })?;
+        last_jacobian = Some(jac);
         let mut alpha = 1.0;
         loop {
             let trial: Vec<f64> = q.iter().zip(&step).map(|(a, d)| a - alpha * d).collect();
@@ -166,7 +281,6 @@ pub fn static_equilibrium(
         iterations += 1;
         converged = norm < settings.tolerance * weight;
     }
-    system.contact_mode = ContactMode::Rolling;
     system.statistics.newton_iterations += iterations as u64;
     if !converged {
         return Err(LocoError::Equilibrium {
@@ -183,6 +297,28 @@ pub fn static_equilibrium(
     }
     y.fill(0.0);
     y[..N_DOF].copy_from_slice(&q);
+    // An equilibrium a run would call divergence at its first step: the suspension does not
+    // carry the weight (a body sinks or tilts beyond the bounds).
+    if let Err(
+        LocoError::Diverged {
+            location, reason, ..
+        }
+        | LocoError::Derailed {
+            location, reason, ..
+        },
+    ) = system.check_state(0.0, &y)
+    {
+        return Err(LocoError::Equilibrium {
+            iterations,
+            residual: norm,
+            reason: format!(
+                "the equilibrium lies beyond the bounds of a run at `{location}` ({reason}): the \
+                 suspension does not hold the body there"
+            ),
+        });
+    }
+    let jac = last_jacobian.unwrap_or_else(|| jacobian(system, &q, &r, h));
+    let stiffest = stiffest_mode(system, &jac)?;
     // Dampers: the equilibrium elongation is their rest length.
     let qd = vec![0.0; N_DOF];
     system
@@ -197,5 +333,6 @@ pub fn static_equilibrium(
         state: y,
         iterations,
         residual: norm,
+        stiffest,
     })
 }

@@ -54,7 +54,8 @@ impl VehicleStructure {
                 .iter()
                 .map(|b| (&b.map, b.mass, b.inertia))
                 .collect::<Vec<_>>(),
-        )?;
+        )
+        .map_err(|e| super::suspects::with_suspects(e, &parameters))?;
         let suspension = build_suspension(&parameters, &layout, &bodies)?;
         let gravity = check_positive("track.gravity", parameters.get("track.gravity")?)?;
         Ok(Self {

@@ -1,0 +1,95 @@
+//! Failures of the model name what caused them: the RK4 step against the vehicle's stiffest mode
+//! (the predicted limit separates steps that run from steps that are refused), and parameters
+//! allowed outside their physical range as suspects of an equilibrium or a divergence.
+
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
+};
+use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings, RK4_IMAGINARY_LIMIT};
+use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::LocoError;
+use std::sync::Arc;
+
+fn scenario(step: f64) -> Scenario {
+    let mut s = Scenario::study("S_norm", 200.0 / 3.6, 3.0, 0).unwrap();
+    s.track = TrackSpec::Perfect;
+    s.run.step = step;
+    s
+}
+
+fn research(key: &str, value: f64) -> ParameterSet {
+    let mut set = ParameterSet::default_vehicle();
+    set.allow_out_of_range(key).unwrap();
+    set.set(key, value).unwrap();
+    set
+}
+
+fn stiffest(set: ParameterSet) -> (f64, String) {
+    let s = scenario(1e-3);
+    let structure = Arc::new(VehicleStructure::new(set).unwrap());
+    let wr = Arc::new(build_wheel_rail(&structure.parameters, &s).unwrap());
+    let track = Arc::new(build_track(&s, &structure).unwrap());
+    let start = start_distance(&structure);
+    let mut sys = VehicleSystem::new(structure, wr, track, s.speed, start, None, 1e-3).unwrap();
+    let eq = static_equilibrium(&mut sys, &StaticsSettings::default()).unwrap();
+    (eq.stiffest.omega, eq.stiffest.coordinate)
+}
+
+#[test]
+fn the_default_vehicle_is_stable_at_the_default_step() {
+    let (omega, _) = stiffest(ParameterSet::default_vehicle());
+    // Its stiffest mode is well above the study's band and inside RK4's limit at 1 ms.
+    assert!(omega > 2.0 * std::f64::consts::PI * 50.0, "{omega}");
+    assert!(omega * 1e-3 < RK4_IMAGINARY_LIMIT, "{omega}");
+    assert!(simulate(ParameterSet::default_vehicle(), &scenario(1e-3)).is_ok());
+}
+
+#[test]
+fn a_step_beyond_the_stiffest_modes_limit_is_refused_naming_step_and_a_shorter_one_runs() {
+    // Quill bearings 20 times the default stiffness: the hollow shafts' bearing mode.
+    let key = "hollow_shaft.bearing_radial_stiffness";
+    let set = research(key, 2e10);
+    let (omega, coordinate) = stiffest(set.clone());
+    assert!(omega * 1e-3 > RK4_IMAGINARY_LIMIT, "{omega}");
+    assert!(
+        coordinate.starts_with("hollow_shaft") || coordinate.starts_with("motor"),
+        "{coordinate}"
+    );
+    let e = simulate(set.clone(), &scenario(1e-3))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("`step`") && e.contains(&coordinate), "{e}");
+    assert!(
+        e.contains(key),
+        "the out-of-range stiffness is the suspect: {e}"
+    );
+    // Half the predicted limit (a whole number of steps per 500 Hz output sample) runs.
+    let limit = RK4_IMAGINARY_LIMIT / omega;
+    let step = 2e-3 / (2e-3 / (0.5 * limit)).ceil();
+    let run = simulate(set, &scenario(step)).unwrap();
+    assert!(run.output.channels.iter().flatten().all(|v| v.is_finite()));
+}
+
+#[test]
+fn an_unrestrained_coordinate_is_an_equilibrium_error_naming_it_and_the_suspect() {
+    let key = "traction_rod.carbody_bushing_stiffness_y";
+    let e = simulate(research(key, 1e-30), &scenario(1e-3)).unwrap_err();
+    assert!(matches!(e, LocoError::Equilibrium { .. }), "{e:?}");
+    let e = e.to_string();
+    assert!(
+        e.contains("singular at coordinate `") && e.contains(key),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_failure_of_the_run_names_the_out_of_range_parameter() {
+    // A motor of no mass: its mode is far beyond any step (or the run diverges).
+    let key = "traction_motor.mass";
+    let e = simulate(research(key, 1e-30), &scenario(1e-3))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(&format!("`{key}` = 1e-30 kg")), "{e}");
+}
