@@ -74,19 +74,7 @@ fn bench_vehicle(c: &mut Criterion) {
         })
     });
     let curved = Scenario {
-        curve: vec![
-            DesignSection::Straight { length: 10.0 },
-            DesignSection::Transition {
-                length: 60.0,
-                cant_run_off: None,
-            },
-            DesignSection::Curve {
-                length: 1000.0,
-                radius: 1200.0,
-                cant: 0.1,
-                direction: CurveDirection::Left,
-            },
-        ],
+        curve: DesignSection::reference_curve(0.1, CurveDirection::Left),
         ..scenario.clone()
     };
     let curved_contact = Arc::new(build_wheel_rail(&structure.parameters, &curved).unwrap());

@@ -44,19 +44,7 @@ fn main() {
         ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
     };
     if args.get(3).is_some_and(|a| a == "curve") {
-        scenario.curve = vec![
-            DesignSection::Straight { length: 10.0 },
-            DesignSection::Transition {
-                length: 60.0,
-                cant_run_off: None,
-            },
-            DesignSection::Curve {
-                length: 1000.0,
-                radius: 1200.0,
-                cant: 0.1,
-                direction: CurveDirection::Left,
-            },
-        ];
+        scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left);
     }
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());

@@ -2,48 +2,21 @@
 //! `vehicle::track_frame`) against independent results: balanced cant, cant deficiency, steady
 //! state, mirror symmetry, bad input.
 
+use loco_core::track::design::REFERENCE_CURVE_RADIUS;
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::layout::*;
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::{run, RunOutput, RunSettings};
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, curve_design, start_distance, Scenario, TrackSpec,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::scenario::{build_wheel_rail, Scenario, TrackSpec};
 use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_frame::CurvedTrack;
 use std::sync::Arc;
+
+mod curve_support;
+use curve_support::{run_on_curve, CurveRun};
 
 const G: f64 = 9.81;
 /// Half the distance between the nominal contact points, m (parameter file, SPEC §1).
 const B: f64 = 0.7465;
-const RADIUS: f64 = 1200.0;
-
-/// 10 m straight, 60 m clothoid with linear cant run-off, then the steady curve.
-fn sections(cant: f64, direction: CurveDirection) -> Vec<DesignSection> {
-    vec![
-        DesignSection::Straight { length: 10.0 },
-        DesignSection::Transition {
-            length: 60.0,
-            cant_run_off: None,
-        },
-        DesignSection::Curve {
-            length: 1000.0,
-            radius: RADIUS,
-            cant,
-            direction,
-        },
-    ]
-}
-
-struct CurveRun {
-    output: RunOutput,
-    /// Final state (coordinates, velocities, damper states).
-    y: Vec<f64>,
-    /// Final derivatives.
-    dy: Vec<f64>,
-}
+const RADIUS: f64 = REFERENCE_CURVE_RADIUS;
 
 /// Runs the S_norm locomotive on perfect track over `distance` m of `sections` at `speed`.
 fn run_curve(sections: Vec<DesignSection>, speed: f64, distance: f64) -> CurveRun {
@@ -51,32 +24,7 @@ fn run_curve(sections: Vec<DesignSection>, speed: f64, distance: f64) -> CurveRu
     scenario.track = TrackSpec::Perfect;
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
     let wr = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
-    let track = Arc::new(build_track(&scenario, &structure).unwrap());
-    let design = Arc::new(curve_design(&wr, &sections).unwrap());
-    let start = start_distance(&structure);
-    let mut system = VehicleSystem::new(
-        structure.clone(),
-        wr,
-        track,
-        speed,
-        start,
-        None,
-        scenario.run.step,
-    )
-    .unwrap();
-    system.curve = Some(Arc::new(CurvedTrack::new(design, &structure)));
-    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())
-        .unwrap()
-        .state;
-    let settings = RunSettings {
-        duration: distance / speed,
-        ..scenario.run
-    };
-    let output = run(&mut system, &mut y, &settings, None).unwrap();
-    let mut dy = vec![0.0; y.len()];
-    use loco_core::vehicle::integrator::OdeSystem;
-    system.derivatives(settings.duration, &y, &mut dy);
-    CurveRun { output, y, dy }
+    run_on_curve(structure, wr, &scenario, &sections, speed, distance)
 }
 
 fn last(run: &CurveRun, name: &str) -> f64 {
@@ -99,7 +47,11 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     let cant = 0.1;
     let speed = balanced_speed(cant);
     // 200 m of steady curve after the transition ends under the last wheelset.
-    let r = run_curve(sections(cant, CurveDirection::Left), speed, 300.0);
+    let r = run_curve(
+        DesignSection::reference_curve(cant, CurveDirection::Left),
+        speed,
+        300.0,
+    );
     // The carbody, frames, wheelsets, motors and hollow shafts at rest in the track frame:
     // accelerations below 1e-3 m/s² (rad/s²), except along the track: with no traction the
     // curving resistance slows the whole vehicle against the frame moving at V (every body by
@@ -202,7 +154,11 @@ fn cant_deficiency_gives_its_lateral_acceleration_and_load_transfer() {
     // 50 mm cant at the speed that balances 150 mm: 100 mm deficiency.
     let (cant, deficiency) = (0.05, 0.1);
     let speed = balanced_speed(cant + deficiency);
-    let r = run_curve(sections(cant, CurveDirection::Left), speed, 300.0);
+    let r = run_curve(
+        DesignSection::reference_curve(cant, CurveDirection::Left),
+        speed,
+        300.0,
+    );
     let relative = last(&r, "carbody_floor_ay_front");
     let lateral = track_plane_lateral(speed, cant, relative);
     let expected = G * deficiency / (2.0 * B);
@@ -228,8 +184,16 @@ fn cant_deficiency_gives_its_lateral_acceleration_and_load_transfer() {
 #[test]
 fn a_right_curve_is_the_mirror_image_of_a_left_one() {
     let speed = balanced_speed(0.15);
-    let l = run_curve(sections(0.05, CurveDirection::Left), speed, 120.0);
-    let r = run_curve(sections(0.05, CurveDirection::Right), speed, 120.0);
+    let l = run_curve(
+        DesignSection::reference_curve(0.05, CurveDirection::Left),
+        speed,
+        120.0,
+    );
+    let r = run_curve(
+        DesignSection::reference_curve(0.05, CurveDirection::Right),
+        speed,
+        120.0,
+    );
     let scale = l
         .output
         .channel("wheelset1_y")

@@ -9,16 +9,13 @@ use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::elements::BodyStates;
 use loco_core::vehicle::layout::*;
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::{run, RunSettings};
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, curve_design, start_distance, Scenario, TrackSpec,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::scenario::{build_wheel_rail, Scenario, TrackSpec};
 use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_frame::CurvedTrack;
 use loco_core::vehicle::wheel_rail::{ContactMode, WheelForces, WheelRail};
 use std::sync::Arc;
+
+mod curve_support;
+use curve_support::{run_on_curve, CurveRun};
 
 const G: f64 = 9.81;
 
@@ -26,12 +23,6 @@ const G: f64 = 9.81;
 fn research(p: &mut ParameterSet, key: &str, value: f64) {
     p.allow_out_of_range(key).unwrap();
     p.set(key, value).unwrap();
-}
-
-/// The vehicle after a run: its system (contact, last wheel forces) and final state.
-struct CurveRun {
-    system: VehicleSystem,
-    y: Vec<f64>,
 }
 
 /// Runs the locomotive `p` on perfect track with the conical wheel of conicity `lambda` on
@@ -63,29 +54,7 @@ fn run_cone(p: ParameterSet, lambda: f64, radius: f64, speed: f64, distance: f64
             direction: CurveDirection::Left,
         },
     ];
-    let track = Arc::new(build_track(&scenario, &structure).unwrap());
-    let design = Arc::new(curve_design(&wr, &sections).unwrap());
-    let start = start_distance(&structure);
-    let mut system = VehicleSystem::new(
-        structure.clone(),
-        wr,
-        track,
-        speed,
-        start,
-        None,
-        scenario.run.step,
-    )
-    .unwrap();
-    system.curve = Some(Arc::new(CurvedTrack::new(design, &structure)));
-    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())
-        .unwrap()
-        .state;
-    let settings = RunSettings {
-        duration: distance / speed,
-        ..scenario.run
-    };
-    run(&mut system, &mut y, &settings, None).unwrap();
-    CurveRun { system, y }
+    run_on_curve(structure, wr, &scenario, &sections, speed, distance)
 }
 
 /// The wheel-rail wrench (N, N·m, on the wheelset about its centre, track frame) of wheelset 1

@@ -51,6 +51,9 @@ impl CurveDirection {
     }
 }
 
+/// Radius of [`DesignSection::reference_curve`], m.
+pub const REFERENCE_CURVE_RADIUS: f64 = 1200.0;
+
 /// One section of the design as a user gives it (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum DesignSection {
@@ -72,6 +75,25 @@ pub enum DesignSection {
 }
 
 impl DesignSection {
+    /// The curve the speed benchmarks, the run fingerprints and the curving tests share: 10 m
+    /// straight, a 60 m clothoid with linear cant run-off, then 1000 m of R = [`REFERENCE_CURVE_RADIUS`] with `cant`
+    /// (m) toward `direction` (the benchmark: 0.1 m, left).
+    pub fn reference_curve(cant: f64, direction: CurveDirection) -> Vec<Self> {
+        vec![
+            Self::Straight { length: 10.0 },
+            Self::Transition {
+                length: 60.0,
+                cant_run_off: None,
+            },
+            Self::Curve {
+                length: 1000.0,
+                radius: REFERENCE_CURVE_RADIUS,
+                cant,
+                direction,
+            },
+        ]
+    }
+
     /// Length of the section, m.
     pub fn length(&self) -> f64 {
         match *self {

@@ -1,0 +1,67 @@
+//! Test support shared by the curving integration tests: the locomotive run on a designed
+//! alignment from its static equilibrium, with the system and final state kept for inspection
+//! (`vehicle::scenario::simulate` keeps neither).
+
+use loco_core::track::DesignSection;
+use loco_core::vehicle::integrator::OdeSystem;
+use loco_core::vehicle::run::{run, RunOutput, RunSettings};
+use loco_core::vehicle::scenario::{build_track, curve_design, start_distance, Scenario};
+use loco_core::vehicle::simulation::VehicleSystem;
+use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::track_frame::CurvedTrack;
+use loco_core::vehicle::wheel_rail::WheelRail;
+use std::sync::Arc;
+
+/// A run on a curve: its recorded output, the system after it (contact, last wheel forces), its
+/// final state (coordinates, velocities, damper states) and that state's derivatives.
+// Each test binary that includes this module reads only some of the fields.
+#[allow(dead_code)]
+pub struct CurveRun {
+    pub output: RunOutput,
+    pub system: VehicleSystem,
+    pub y: Vec<f64>,
+    pub dy: Vec<f64>,
+}
+
+/// Runs `structure` on `wr` and `scenario`'s track along `sections` at `speed` (m/s) over
+/// `distance` (m), from the static equilibrium at the start.
+pub fn run_on_curve(
+    structure: Arc<VehicleStructure>,
+    wr: Arc<WheelRail>,
+    scenario: &Scenario,
+    sections: &[DesignSection],
+    speed: f64,
+    distance: f64,
+) -> CurveRun {
+    let track = Arc::new(build_track(scenario, &structure).unwrap());
+    let design = Arc::new(curve_design(&wr, sections).unwrap());
+    let start = start_distance(&structure);
+    let mut system = VehicleSystem::new(
+        structure.clone(),
+        wr,
+        track,
+        speed,
+        start,
+        None,
+        scenario.run.step,
+    )
+    .unwrap();
+    system.curve = Some(Arc::new(CurvedTrack::new(design, &structure)));
+    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())
+        .unwrap()
+        .state;
+    let settings = RunSettings {
+        duration: distance / speed,
+        ..scenario.run
+    };
+    let output = run(&mut system, &mut y, &settings, None).unwrap();
+    let mut dy = vec![0.0; y.len()];
+    system.derivatives(settings.duration, &y, &mut dy);
+    CurveRun {
+        output,
+        system,
+        y,
+        dy,
+    }
+}
