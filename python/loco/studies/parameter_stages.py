@@ -12,10 +12,10 @@ simulator and on the surrogates trained from the Latin hypercube Monte Carlo of
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -317,16 +317,40 @@ def run_optimisation(
 
 
 @dataclass(frozen=True)
-class SensitivityStage(Stage):
+class _OnSurrogates(Stage):
+    """A stage on the surrogates of ``training`` that also simulates on ``setup``; ``seed``
+    seeds its designs and the networks."""
+
+    setup: StudySetup
+    training: Training
+    seed: int
+
+    def _study(
+        self, study: Callable[..., StudyRecord], out_dir: Path, runtime: Runtime, **sizes: Any
+    ) -> StudyRecord:
+        x, y, chosen = self.training.fitted()
+        return study(
+            self.setup,
+            x,
+            y,
+            out_dir,
+            seed=self.seed,
+            log_target=self.training.log_target,
+            models=[c.model for c in chosen],
+            surrogate_name=surrogate_label(chosen),
+            runtime=runtime,
+            **sizes,
+        )
+
+
+@dataclass(frozen=True)
+class SensitivityStage(_OnSurrogates):
     """The stage ``sensitivity`` of ``loco reproduce``: :func:`run_sensitivity` on ``setup``
     with the surrogates of ``training``."""
 
     name: ClassVar[str] = "sensitivity"
-    setup: StudySetup
-    training: Training
     convergence_bases: tuple[int, ...]
     surrogate_base: int
-    seed: int = 0
 
     def demand(self) -> Demand:
         """Both objectives on the largest Saltelli design, N·(6 + 2) points."""
@@ -334,34 +358,24 @@ class SensitivityStage(Stage):
 
     def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
         """:func:`run_sensitivity` into ``out_dir``."""
-        x, y, chosen = self.training.fitted()
-        return run_sensitivity(
-            self.setup,
-            x,
-            y,
+        return self._study(
+            run_sensitivity,
             out_dir,
+            runtime,
             convergence_bases=self.convergence_bases,
             surrogate_base=self.surrogate_base,
-            seed=self.seed,
-            log_target=self.training.log_target,
-            models=[c.model for c in chosen],
-            surrogate_name=surrogate_label(chosen),
-            runtime=runtime,
         )
 
 
 @dataclass(frozen=True)
-class OptimisationStage(Stage):
+class OptimisationStage(_OnSurrogates):
     """The stage ``optimisation`` of ``loco reproduce``: :func:`run_optimisation` on the
     surrogates of ``training``, ``n_verify`` Pareto points re-simulated on ``setup``."""
 
     name: ClassVar[str] = "optimisation"
-    setup: StudySetup
-    training: Training
     pop_size: int
     n_gen: int
     n_verify: int
-    seed: int = 0
 
     def demand(self) -> Demand:
         """At most: both objectives on ``n_verify`` Pareto points (fewer when the front has
@@ -370,18 +384,5 @@ class OptimisationStage(Stage):
 
     def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
         """:func:`run_optimisation` into ``out_dir``."""
-        x, y, chosen = self.training.fitted()
-        return run_optimisation(
-            self.setup,
-            x,
-            y,
-            out_dir,
-            pop_size=self.pop_size,
-            n_gen=self.n_gen,
-            n_verify=self.n_verify,
-            seed=self.seed,
-            log_target=self.training.log_target,
-            models=[c.model for c in chosen],
-            surrogate_name=surrogate_label(chosen),
-            runtime=runtime,
-        )
+        sizes = {"pop_size": self.pop_size, "n_gen": self.n_gen, "n_verify": self.n_verify}
+        return self._study(run_optimisation, out_dir, runtime, **sizes)
