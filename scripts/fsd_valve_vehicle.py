@@ -29,7 +29,7 @@ def main() -> int:
     args = parser.parse_args()
     tables, openings = [], []
     for seed in args.seeds:
-        cmp = fc.run_fsd_comparison(seed=seed, damper_set=LAWS)
+        cmp = fc.run_fsd_comparison(fc.FsdComparisonStage(seed=seed, damper_set=LAWS))
         tables.append(cmp.table().assign(seed=seed))
         openings.append(fc.valve_open_fractions(cmp).assign(seed=seed))
     table = pd.concat(tables, ignore_index=True)

@@ -42,6 +42,7 @@ from loco.executors import LocalExecutor
 from loco.studies.parameter_study import OBJECTIVES, StudySetup, labels
 from loco.studies.parameters import bounds_si, names
 from loco.studies.plotting import pyplot, save_figure
+from loco.studies.stages import Runtime
 from loco.studies.surrogate_samples import training_design
 from loco.studies.surrogate_selection import CANDIDATES, R2_REQUIRED, select_surrogate
 
@@ -52,8 +53,8 @@ def _noise(args: argparse.Namespace, x: np.ndarray) -> pd.DataFrame:
     points = np.arange(args.noise_points)
     rows = []
     for s in args.noise_seeds:
-        setup = StudySetup(track_seed=s, progress=False, threads=args.threads)
-        ys = setup.evaluator()(x[points], names())
+        setup = StudySetup(track_seed=s)
+        ys = setup.evaluator(Runtime(args.threads, progress=False))(x[points], names())
         rows += [{"point": int(i), "kind": "track_seed", "value": s,
                   **dict(zip(labels(), v, strict=True))}
                  for i, v in zip(points, ys, strict=True)]  # fmt: skip
@@ -66,7 +67,7 @@ def _noise(args: argparse.Namespace, x: np.ndarray) -> pd.DataFrame:
         # Reflect at the box's faces so that every perturbed point stays inside it.
         xp = np.where(xp < lo, 2 * lo - xp, xp)
         xp = np.where(xp > hi, 2 * hi - xp, xp)
-        yp = StudySetup(progress=False, threads=args.threads).evaluator()(xp, names())
+        yp = StudySetup().evaluator(Runtime(args.threads, progress=False))(xp, names())
         rows += [{"point": int(i), "kind": "step", "value": step,
                   **dict(zip(labels(), v, strict=True))}
                  for i, v in zip(points, yp, strict=True)]  # fmt: skip
@@ -86,7 +87,7 @@ def simulate(args: argparse.Namespace, out: Path) -> tuple[pd.DataFrame, pd.Data
     t0 = time.perf_counter()
     with campaign.using(LocalExecutor(args.threads), out / "store"):
         for a, b in itertools.pairwise(edges):
-            y = StudySetup(progress=False, threads=args.threads).evaluator()(x[a:b], names())
+            y = StudySetup().evaluator(Runtime(args.threads, progress=False))(x[a:b], names())
             frames.append(pd.DataFrame(x[a:b], columns=names()).assign(
                 **{k: y[:, j] for j, k in enumerate(labels())}))  # fmt: skip
             pd.concat(frames, ignore_index=True).to_csv(out / "samples.csv", index=False)

@@ -13,7 +13,9 @@ import subprocess
 import sys
 import time
 import warnings
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
@@ -26,7 +28,7 @@ from loco.store import CampaignStore, CorruptStoreWarning, atomic_write, find_ca
 from loco.studies.parameters import names
 from loco.studies.report import StudyRecord, save_table
 from loco.studies.sampling import latin_hypercube
-from loco.studies.stages import StageRunner
+from loco.studies.stages import Runtime, Stage, StageRunner
 
 SCENARIO = loco.Scenario(scenario="S_high", distance=300.0, seed=3)
 N = 10
@@ -182,21 +184,26 @@ def test_atomic_write_replaces_whole_files(tmp_path: Path) -> None:
     assert path.read_bytes() == b"two" and [p.name for p in path.parent.iterdir()] == ["x.json"]
 
 
-def _table_stage(out: Path) -> StudyRecord:
-    table = save_table(pd.DataFrame({"a": np.arange(50)}), out / "table.csv")
-    return StudyRecord(name=out.name, title="t", figures=[], tables=[table])
+@dataclass(frozen=True)
+class TableStage(Stage):
+    name: ClassVar[str] = "demo"
+    n: int = 1
+
+    def run(self, out: Path, runtime: Runtime) -> StudyRecord:
+        table = save_table(pd.DataFrame({"a": np.arange(50)}), out / "table.csv")
+        return StudyRecord(name=out.name, title="t", figures=[], tables=[table])
 
 
 def test_stage_with_damaged_output_runs_again(tmp_path: Path) -> None:
     lines: list[str] = []
-    StageRunner(tmp_path, log=lines.append).run("demo", {"n": 1}, _table_stage)
+    StageRunner(tmp_path, log=lines.append).run(TableStage())
     runner = StageRunner(tmp_path, log=lines.append)
-    runner.run("demo", {"n": 1}, _table_stage)
+    runner.run(TableStage())
     assert runner.skipped == ["demo"]
     table = tmp_path / "demo" / "table.csv"
     table.write_text(table.read_text()[:40])  # truncated: the file still exists
     runner = StageRunner(tmp_path, log=lines.append)
-    runner.run("demo", {"n": 1}, _table_stage)
+    runner.run(TableStage())
     assert runner.ran == ["demo"] and len(pd.read_csv(table)) == 50
     assert any("demo/table.csv is changed or truncated" in line for line in lines)
 

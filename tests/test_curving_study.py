@@ -14,6 +14,7 @@ import loco
 from loco import dampers
 from loco.cli import main
 from loco.studies import curving, en14363
+from loco.studies.stages import Runtime
 
 VEHICLE = loco.Locomotive.default()
 
@@ -37,13 +38,13 @@ def test_offsets_are_the_wheelset_spacings() -> None:
 def study() -> curving.CurvingStudy:
     sizes = curving.TINY_SIZES
     fast = curving.CurveCase(radius_m=7000.0, cant_mm=30.0, transition_m=60.0, curve_m=40.0)
-    return curving.run_curving(
-        curves=[*sizes.curves(), fast],
+    stage = curving.CurvingStage(
+        curves=(*sizes.curves(), fast),
         deficiencies_mm=(0.0, 100.0, 150.0),
         damper_set={"YD2": dampers.YD2},
         lead_in=sizes.lead_in,
-        threads=2,
     )
+    return curving.run_curving(stage, Runtime(threads=2, progress=False))
 
 
 def test_table_holds_every_case_below_the_speed_cap(study: curving.CurvingStudy) -> None:

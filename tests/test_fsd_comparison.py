@@ -16,19 +16,22 @@ from loco.studies.fsd_comparison import (
     DAMPERS,
     LEAD_IN,
     FsdComparison,
+    FsdComparisonStage,
     run_fsd_comparison,
     save_fsd_comparison,
     valve_channels,
     valve_closed_fraction,
     valve_open_fractions,
 )
+from loco.studies.stages import Runtime
 
 TRACKS = 2
 
 
 @pytest.fixture(scope="module")
 def comparison() -> FsdComparison:
-    return run_fsd_comparison(distance=300.0, seed=2, n_tracks=TRACKS, threads=2)
+    stage = FsdComparisonStage(distance=300.0, seed=2, n_tracks=TRACKS)
+    return run_fsd_comparison(stage, Runtime(threads=2, progress=False))
 
 
 def test_runs_and_table(comparison: FsdComparison) -> None:

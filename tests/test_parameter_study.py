@@ -10,6 +10,7 @@ import loco
 from loco.studies.parameter_study import StudySetup, fit_surrogates, surrogate_objectives
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names
 from loco.studies.sampling import latin_hypercube
+from loco.studies.stages import Runtime
 from loco.studies.surrogate import r2_score
 
 
@@ -21,8 +22,8 @@ def test_setup_evaluator_at_the_stiff_corner() -> None:
     columns = names()
     x[0, columns.index("C_sy")] = STUDY_PARAMETERS[columns.index("C_sy")].low_si
     x[0, columns.index("K_ncsy")] = STUDY_PARAMETERS[columns.index("K_ncsy")].high_si
-    setup = StudySetup(distance=300.0, track_seed=1, progress=False)
-    y = setup.evaluator()(x, columns)
+    setup = StudySetup(distance=300.0, track_seed=1)
+    y = setup.evaluator(Runtime(progress=False))(x, columns)
     assert y.shape == (1, 2) and np.isfinite(y).all() and (y > 0).all()
     vehicle = loco.Locomotive.default().replace(dict(zip(columns, x[0], strict=True)))
     for j, (scenario, metric) in enumerate((("S_low", "wy_max"), ("S_high", "ayb_peak_lp"))):

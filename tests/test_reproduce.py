@@ -5,10 +5,13 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import functools
 import io
 import json
 import re
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -17,10 +20,11 @@ import pytest
 import loco
 from loco import dampers
 from loco.cli import main
-from loco.commands.reproduce import TINY, reproduce
-from loco.studies import fsd_comparison, fsd_design_stage, speed_sweep
+from loco.commands.reproduce import FULL, QUICK, TINY, reproduce, stages
+from loco.store import find_campaigns
+from loco.studies import fsd_comparison, fsd_design_stage
 from loco.studies.parameters import names
-from loco.studies.stages import MARKER, settings_hash
+from loco.studies.stages import MARKER, DataFile, encode
 from loco.studies.surrogate_selection import CANDIDATES
 from loco.studies.verdict import verdict_from_csv
 
@@ -162,6 +166,37 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     assert set(critical["damper"]) == set(sweep["damper"])
 
 
+def test_stages_request_what_they_demand(run: tuple[Path, str]) -> None:
+    """The simulations each stage of the tiny run stored (its campaign stores) are those its
+    ``demand()`` counts, so ``Sizes.runs()`` and the ``--quick``/``--full`` help count every
+    stage, ``fsd_design`` and ``curving`` included. Two demands are upper bounds: NSGA-II's
+    Pareto picks re-simulated (the front may have fewer points) and the FSD design stage's
+    picked designs (picks that coincide run once)."""
+    out, _ = run
+    planned = stages(TINY, out, seed=0)
+    assert [s.name for s in planned] == list(STAGES)
+    stored = {s.name: sum(c.n_samples for c in find_campaigns(out / s.name)) for s in planned}
+    demanded = {s.name: s.demand().simulations for s in planned}
+    bounds = {"optimisation", "fsd_design"}
+    assert {k: v for k, v in stored.items() if k not in bounds} == {
+        k: v for k, v in demanded.items() if k not in bounds
+    }
+    verified = len(pd.read_csv(out / "optimisation" / "pareto_verification.csv"))
+    assert stored["optimisation"] == 2 * verified <= demanded["optimisation"]
+    population = pd.read_csv(out / "fsd_design" / "fsd_design_population.csv")
+    sweep = pd.read_csv(out / "fsd_design" / "fsd_design_conicity.csv")
+    ran = 2 * int(population["error"].isna().sum()) + len(sweep)
+    assert stored["fsd_design"] == ran <= demanded["fsd_design"]
+    assert stored["curving"] > 0 and stored["fsd_design"] > 0
+    assert sum(demanded.values()) == TINY.demand().simulations
+    # The help text gives the preset's count.
+    help_text = io.StringIO()
+    with contextlib.redirect_stdout(help_text), pytest.raises(SystemExit):
+        main(["reproduce", "--help"])
+    text = " ".join(help_text.getvalue().split())
+    assert f"~{QUICK.runs()} runs" in text and f"~{FULL.runs()} runs" in text
+
+
 def test_rerun_skips_finished_stages(
     run: tuple[Path, str], capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -200,28 +235,70 @@ def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, st
     assert sorted((out / "monte_carlo" / "store").rglob("part-*.parquet")) == parts
 
 
-def test_stage_hashes_cover_their_inputs() -> None:
-    """The settings the stage hashes are made from change with every input of the stage (the
-    speed sweep's damper was once left out)."""
-    base = {"speeds_kmh": (180.0,), "seed": 0, "n_tracks": 2}
-    reference = settings_hash("speed_sweep", speed_sweep.sweep_settings(**base))
-    for change in ({"yaw_damper": dampers.YD1}, {"n_tracks": 3}, {"lead_in": 100.0},
-                   {"distance": 300.0}, {"psd_speed_kmh": 160.0}, {"seed": 1}):  # fmt: skip
-        changed = speed_sweep.sweep_settings(**{**base, **change})
-        assert settings_hash("speed_sweep", changed) != reference, change
-    reference = settings_hash("fsd", fsd_comparison.comparison_settings(n_tracks=2))
-    fewer = {"YD1": dampers.YD1, "FSD": dampers.FSD}
-    for change in ({"damper_set": fewer}, {"n_tracks": 3}, {"lead_in": 0.0}, {"seed": 1}):
-        changed = fsd_comparison.comparison_settings(**{"n_tracks": 2, **change})
-        assert settings_hash("fsd", changed) != reference, change
-    sizes = fsd_design_stage.SIZES["tiny"]
-    reference = settings_hash(
-        "fsd_design", fsd_design_stage.design_settings(sizes, speed_kmh=200.0, seed=0)
-    )
-    for size_change in ({"pop_size": 5}, {"conicities": (0.1,)}, {"lead_in": 10.0}):
-        changed = fsd_design_stage.design_settings(
-            dataclasses.replace(sizes, **size_change), speed_kmh=200.0, seed=0
-        )
-        assert settings_hash("fsd_design", changed) != reference, size_change
-    other_seed = fsd_design_stage.design_settings(sizes, speed_kmh=200.0, seed=1)
-    assert settings_hash("fsd_design", other_seed) != reference
+@functools.cache
+def _other_vehicles() -> tuple[loco.Locomotive, loco.Locomotive]:
+    """A vehicle from another file (the embedded one's text plus a comment) and the embedded
+    one with an override."""
+    text = loco.Locomotive.default().default_toml() + "\n#\n"
+    return loco.Locomotive(toml_text=text), loco.Locomotive.default().replace(C_sx=1.5e5)
+
+
+def _variants(value: Any, files: list[DataFile]) -> list[Any]:
+    """Values of a stage input that differ from ``value`` (a nested dataclass: each of its
+    fields changed in turn); an input type this does not know fails the test."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, (type, loco.Locomotive)):
+        if isinstance(value, DataFile):
+            return [f for f in files if f.path.read_bytes() != value.path.read_bytes()][:1]
+        return [
+            dataclasses.replace(value, **{f.name: v})
+            for f in dataclasses.fields(value)
+            for v in _variants(getattr(value, f.name), files)
+        ]
+    if isinstance(value, bool):
+        return [not value]
+    if isinstance(value, (int, float)):
+        return [value + 1, value * 2 + 0.5]
+    if isinstance(value, str):
+        return [value + "x"]
+    if value is None or isinstance(value, loco.Locomotive):
+        return [v for v in (*_other_vehicles(), dampers.YD1) if value is None or v != value]
+    if isinstance(value, dampers.Damper):
+        return [d for d in (dampers.YD1, dampers.YD2) if d.parameters() != value.parameters()]
+    if isinstance(value, Mapping):
+        items = list(value.items())
+        reordered = [dict(items[::-1])] if len(items) > 1 else []
+        return [dict(items[:-1]), *reordered, {**value, "YD1x": dampers.YD1}]
+    if isinstance(value, (tuple, list)):
+        changed = [(*value[:i], v, *value[i + 1 :]) for i in range(len(value))
+                   for v in _variants(value[i], files)]  # fmt: skip
+        return [*changed, tuple(value[:-1]), (*value, value[-1])]
+    raise AssertionError(f"no variants for a stage input of type {type(value).__name__}")
+
+
+def test_every_stage_input_changes_its_hash(tmp_path: Path) -> None:
+    """Each stage's hash changes with every one of its fields, nested fields included, and with
+    nothing else: the speed sweep's damper was once left out of a hand-made settings list. A
+    table is its content, not its path."""
+    full = stages(FULL, tmp_path, seed=0)
+    assert [s.name for s in full] == list(STAGES)
+    files = []
+    tables = ("monte_carlo/monte_carlo.csv", "surrogate_samples/surrogate_samples.csv", "b.csv")
+    for i, table in enumerate(tables):
+        (tmp_path / table).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / table).write_text(f"a\n{i}\n")
+        files.append(DataFile(tmp_path / table))
+    checked = 0
+    for stage in full:
+        reference = stage.stage_hash()
+        assert dataclasses.replace(stage).stage_hash() == reference
+        for field in dataclasses.fields(stage):
+            variants = _variants(getattr(stage, field.name), files)
+            assert variants, (stage.name, field.name)
+            for v in variants:
+                changed = dataclasses.replace(stage, **{field.name: v})
+                assert changed.stage_hash() != reference, (stage.name, field.name, v)
+                checked += 1
+    assert checked > 100
+    moved = tmp_path / "moved.csv"
+    moved.write_bytes(files[0].path.read_bytes())
+    assert encode(DataFile(moved)) == encode(files[0])

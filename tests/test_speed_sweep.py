@@ -17,9 +17,11 @@ from loco.studies.speed_sweep import (
     A_YC,
     SCENARIOS,
     SpeedSweep,
+    SpeedSweepStage,
     run_speed_sweep,
     save_speed_sweep,
 )
+from loco.studies.stages import Runtime
 
 DISTANCE = 300.0
 SEED = 3
@@ -28,9 +30,8 @@ TRACKS = 2
 
 @pytest.fixture(scope="module")
 def sweep() -> SpeedSweep:
-    return run_speed_sweep(
-        [180.0], distance=DISTANCE, seed=SEED, n_tracks=TRACKS, threads=2, progress=False
-    )
+    stage = SpeedSweepStage([180.0], distance=DISTANCE, seed=SEED, n_tracks=TRACKS)
+    return run_speed_sweep(stage, Runtime(threads=2, progress=False))
 
 
 def test_shapes_and_ranges(sweep: SpeedSweep) -> None:

@@ -2,21 +2,36 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
-from collections.abc import Callable
+from collections.abc import Iterator
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from loco import __version__
 from loco.studies.report import StudyRecord, save_json, save_table, write_report
-from loco.studies.stages import MARKER, StageRunner
+from loco.studies.stages import MARKER, Runtime, Stage, StageRunner
+
+#: The stage directories the demo stages ran in, in order.
+CALLS: list[str] = []
 
 
-def _stage(calls: list[str]) -> Callable[[Path], StudyRecord]:
-    def run(out: Path) -> StudyRecord:
-        calls.append(out.name)
+@dataclass(frozen=True)
+class Demo(Stage):
+    """A stage writing a figure and two tables; its inputs ``n`` and ``seed`` change nothing
+    but its hash."""
+
+    name: ClassVar[str] = "demo"
+    n: int
+    seed: int = 1
+
+    def run(self, out: Path, runtime: Runtime) -> StudyRecord:
+        CALLS.append(out.name)
         import matplotlib
 
         matplotlib.use("Agg")
@@ -32,51 +47,65 @@ def _stage(calls: list[str]) -> Callable[[Path], StudyRecord]:
         return StudyRecord(name=out.name, title="A stage", figures=[out / "line.png"],
                            tables=[table, meta], notes="Some *notes*.")  # fmt: skip
 
-    return run
+
+@dataclass(frozen=True)
+class Broken(Demo):
+    def run(self, out: Path, runtime: Runtime) -> StudyRecord:
+        raise KeyboardInterrupt
 
 
 def test_stage_skipped_when_finished(tmp_path: Path) -> None:
-    calls: list[str] = []
+    CALLS.clear()
     lines: list[str] = []
-    settings = {"n": 8, "seed": 1}
     runner = StageRunner(tmp_path, log=lines.append)
-    first = runner.run("demo", settings, _stage(calls))
-    assert calls == ["demo"] and (tmp_path / "demo" / MARKER).is_file()
-    assert first.parameters == settings and first.seconds > 0
+    first = runner.run(Demo(8))
+    assert CALLS == ["demo"] and (tmp_path / "demo" / MARKER).is_file()
+    assert first.parameters == {"n": 8, "seed": 1} and first.seconds > 0
     again = StageRunner(tmp_path, log=lines.append)
-    record = again.run("demo", settings, _stage(calls))
-    assert calls == ["demo"] and again.skipped == ["demo"]
+    record = again.run(Demo(8))
+    assert CALLS == ["demo"] and again.skipped == ["demo"]
     assert record.figures == [tmp_path / "demo" / "line.png"]
-    # A changed setting, a missing output or force runs the stage again.
-    StageRunner(tmp_path, log=lines.append).run("demo", {"n": 16, "seed": 1}, _stage(calls))
-    assert calls == ["demo", "demo"]
+    # A changed input, a missing output or force runs the stage again.
+    StageRunner(tmp_path, log=lines.append).run(Demo(16))
+    assert CALLS == ["demo", "demo"]
     (tmp_path / "demo" / "line.png").unlink()
-    StageRunner(tmp_path, log=lines.append).run("demo", {"n": 16, "seed": 1}, _stage(calls))
-    assert len(calls) == 3
-    StageRunner(tmp_path, log=lines.append, force=True).run("demo", {"n": 16, "seed": 1},
-                                                            _stage(calls))  # fmt: skip
-    assert len(calls) == 4
+    StageRunner(tmp_path, log=lines.append).run(Demo(16))
+    assert len(CALLS) == 3
+    StageRunner(tmp_path, log=lines.append, force=True).run(Demo(16))
+    assert len(CALLS) == 4
     assert any("skipped" in line for line in lines)
+    # The marker holds the hash of the inputs it ran with, and the inputs.
+    marker = json.loads((tmp_path / "demo" / MARKER).read_text())
+    assert marker["hash"] == Demo(16).stage_hash() and marker["inputs"] == {"n": 16, "seed": 1}
 
 
 def test_interrupted_stage_reruns(tmp_path: Path) -> None:
-    def broken(out: Path) -> StudyRecord:
-        raise KeyboardInterrupt
-
+    CALLS.clear()
     runner = StageRunner(tmp_path, log=lambda _: None)
-    try:
-        runner.run("demo", {"n": 1}, broken)
-    except KeyboardInterrupt:
-        pass
+    with pytest.raises(KeyboardInterrupt):
+        runner.run(Broken(1))
     assert not (tmp_path / "demo" / MARKER).exists()
-    calls: list[str] = []
-    runner.run("demo", {"n": 1}, _stage(calls))
-    assert calls == ["demo"]
+    runner.run(Demo(1))
+    assert CALLS == ["demo"]
+
+
+def test_stage_runs_inside_around(tmp_path: Path) -> None:
+    """``around`` wraps the run (``loco reproduce``: the stage's campaign store), not a skip."""
+    entered: list[Path] = []
+
+    @contextlib.contextmanager
+    def around(stage_dir: Path) -> Iterator[None]:
+        entered.append(stage_dir)
+        yield
+
+    StageRunner(tmp_path, log=lambda _: None, around=around).run(Demo(2))
+    StageRunner(tmp_path, log=lambda _: None, around=around).run(Demo(2))
+    assert entered == [tmp_path / "demo"]
 
 
 def test_report_links_and_contents(tmp_path: Path) -> None:
     runner = StageRunner(tmp_path / "out", log=lambda _: None)
-    record = runner.run("demo", {"n": 8, "seed": 1}, _stage([]))
+    record = runner.run(Demo(8))
     report = write_report([record], tmp_path / "out" / "report.md", settings={"threads": 2})
     text = report.read_text()
     assert f"loco {__version__}" in text

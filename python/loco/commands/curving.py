@@ -13,6 +13,7 @@ from pathlib import Path
 
 from loco.commands.arguments import UsageError, non_negative_int, output_dir, positive_int
 from loco.studies import curving
+from loco.studies.stages import Runtime
 
 NAME = "curving"
 HELP = "ΣY, Y/Q and Y_qst of YD1, YD2 and the FSD in curves against cant deficiency (EN 14363)"
@@ -71,15 +72,14 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--deficiency {args.deficiency}: each must be within 0–200 mm")
     if not 0.0 <= args.lead_in <= 5000.0:
         raise UsageError(f"--lead-in {args.lead_in}: must be within 0–5000 m")
-    study = curving.run_curving(
-        curves=curves,
-        deficiencies_mm=args.deficiency,
+    stage = curving.CurvingStage(
+        curves=tuple(curves),
+        deficiencies_mm=tuple(args.deficiency),
         lead_in=args.lead_in,
         irregular=args.irregular,
         seed=args.seed,
-        threads=args.threads,
-        progress=True,
     )
+    study = curving.run_curving(stage, Runtime(threads=args.threads, progress=True))
     record = curving.save_curving(study, args.out)
     print(record.notes)
     print(f"wrote {', '.join(str(p) for p in [*record.figures, *record.tables])}")

@@ -18,7 +18,9 @@ hydraulic valve's cut-off against stroke amplitude and the two-tone (sway + dith
 from __future__ import annotations
 
 import argparse
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
@@ -28,6 +30,7 @@ from loco import dampers
 from loco.commands.arguments import output_dir, positive_float
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.stages import Runtime, Stage
 from loco.studies.valve_bench import largest_opening_dither, run_valve_bench, save_valve_bench
 
 NAME = "damper-bench"
@@ -84,17 +87,17 @@ def _closed_form(damper: dampers.Damper, frequency: float) -> tuple[float, float
     )
 
 
-def bench_settings(amplitude: float = AMPLITUDE) -> dict[str, object]:
-    """Everything :func:`bench_study` depends on (its settings and stage hash): the dampers, the
-    excitation and the cycles."""
-    return {
-        "loco_version": loco.__version__,
-        "amplitude_m": amplitude,
-        "frequencies_hz": list(FREQUENCIES_HZ),
-        "cycles": CYCLES,
-        "loop_cycles": LOOP_CYCLES,
-        "dampers": {n: dampers.describe(d) for n, d in dampers.PRESETS.items()},
-    }
+@dataclass(frozen=True)
+class DamperBenchStage(Stage):
+    """The stage ``damper_bench`` of ``loco reproduce``: :func:`bench_study` at the sine
+    ``amplitude`` (m); the frequencies, cycles and dampers are this module's."""
+
+    name: ClassVar[str] = "damper_bench"
+    amplitude: float = AMPLITUDE
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`bench_study` into ``out_dir`` (a bench, no vehicle simulation)."""
+        return bench_study(out_dir, self.amplitude)
 
 
 def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecord:

@@ -1,7 +1,8 @@
 """``loco reproduce``: the whole study of SPEC §6 from one command, and its report.
 
-Stages (each in ``<out>/<stage>/``, resumable by :class:`loco.studies.stages.StageRunner`: a
-stage finished with the same settings is skipped on a rerun, ``--force`` runs it again):
+Stages (:func:`stages`; each a frozen dataclass of its inputs, :mod:`loco.studies.stages`, run
+in ``<out>/<stage>/`` by :class:`loco.studies.stages.StageRunner`: a stage finished with the same
+inputs is skipped on a rerun, ``--force`` runs it again):
 
 1. ``speed_sweep``: W_y and A_yb against speed, S_low / S_norm / S_high, YD2; PSDs at 200 km/h;
    each point the mean and 95 % interval over ``n_tracks`` synthesised tracks.
@@ -29,15 +30,18 @@ Every batch of a stage runs as a campaign (:mod:`loco.campaign`) on one executor
 (default), ``--workers N`` (a Dask ``LocalCluster``) or ``--scheduler tcp://host:8786`` (or
 ``$DASK_SCHEDULER_ADDRESS``) — and keeps its finished samples in ``<out>/<stage>/store/``: a rerun
 after a kill simulates only the samples not stored. ``--force`` clears those stores too. A stage's
-marker records the content hash of its outputs, and the stages that read the Monte Carlo table
-record its hash in their settings, so a damaged output is never reused.
+marker records the content hash of its outputs, and the stages that learn from the Monte Carlo's
+and the extension's tables take them as inputs by content, so a damaged output is never reused.
 
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
 500 m at 200 km/h; 256 Saltelli base samples for the direct indices), plus 100 more samples for
 the surrogate (300 in all, :mod:`loco.studies.surrogate_samples`). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
-sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``): about 1 300
-runs of 500 m (one costs 0.5-1 s of one core), under 15 minutes on 2 cores.
+sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``). The FSD
+design stage has sizes of its own per preset. ``Sizes.runs()`` (the ``--quick``/``--full`` help)
+counts what every stage asks for (:meth:`loco.studies.stages.Stage.demand`) in runs of 500 m at
+200 km/h: about 1 460 for ``--quick`` (1 300 before the FSD design stage; one run costs 0.5-1 s
+of one core) and 6 300 for ``--full`` (the curving stage included).
 """
 
 from __future__ import annotations
@@ -47,12 +51,9 @@ import contextlib
 import dataclasses
 import shutil
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
-
-import numpy as np
 
 import loco
 from loco import campaign, dampers
@@ -70,8 +71,7 @@ from loco.studies import (
     surrogate_validation,
 )
 from loco.studies.report import StudyRecord, save_json, write_report
-from loco.studies.stages import StageRunner
-from loco.studies.surrogate_selection import Selection, selection_settings
+from loco.studies.stages import DataFile, Demand, Runtime, Stage, StageRunner
 from loco.studies.verdict import verdict_from_csv
 
 NAME = "reproduce"
@@ -110,18 +110,14 @@ class Sizes:
     curving_sizes: curving.CurvingSizes | None
 
     def runs(self) -> int:
-        """Simulations of 'distance' at 'speed_kmh' this costs, about (the sweep's slower runs
-        weighted by their longer simulated time)."""
-        sweep = sum(self.speed_kmh / v for v in {*self.sweep_speeds_kmh, self.speed_kmh})
-        saltelli = max(self.convergence_bases) * (len(parameter_study.names()) + 2)
-        n_obj = len(parameter_study.OBJECTIVES)
-        fsd = 6 * (1 + fsd_comparison.LEAD_IN / self.distance)
-        training = max(self.lhs_samples, self.surrogate_samples)
-        parameters = n_obj * (training + saltelli + self.n_verify)
-        # A curving run (lead-in and curve, about 0.85 km at 90-280 km/h) costs about two.
-        c = self.curving_sizes
-        curves = 0 if c is None else 2 * 3 * len(c.curves()) * len(c.deficiencies_mm)
-        return round(self.n_tracks * (3 * sweep + fsd) + parameters + curves)
+        """Simulations of ``distance`` at ``speed_kmh`` the stages of these sizes cost, about:
+        the simulated time they ask for (:meth:`loco.studies.stages.Stage.demand`, lead-ins and
+        slower speeds included) over that of one such run."""
+        return round(self.demand().simulated_s * self.speed_kmh / 3.6 / self.distance)
+
+    def demand(self) -> Demand:
+        """The simulations every stage of these sizes asks for, together."""
+        return sum((s.demand() for s in stages(self, ".")), Demand())
 
 
 #: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples; the
@@ -143,7 +139,8 @@ FULL = Sizes(
     n_tracks=8,
     curving_sizes=curving.FULL_SIZES,
 )
-#: The README's main job: < 15 min on 2 cores (about 1 300 runs of 500 m). It keeps SPEC's
+#: The README's main job: < 15 min on 2 cores before the FSD design stage (1 300 runs of 500 m of
+#: the 1 460 ``QUICK.runs()`` counts with it; not measured since). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
@@ -248,6 +245,75 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
+    """The stages of a run of ``sizes`` into ``out_dir`` with ``seed``, in order: each a frozen
+    dataclass of its inputs (:mod:`loco.studies.stages`).
+
+    A stage's inputs are what its numbers depend on, not the preset's name, so a ``--full`` run
+    after ``--quick`` reuses the stages whose sizes the two share. ``seed`` seeds the track
+    irregularities, the Latin hypercubes, the Saltelli designs, the networks' K-means and the two
+    NSGA-II runs. Only the damper comparison has a lead-in (its FSD must leave its start state):
+    for the passive Maxwell yaw dampers of the other stages, 8 tracks at 200 km/h with 0, 100,
+    200 and 500 m of lead-in gave W_y on S_low 2.72 / 2.82 / 2.82 / 2.62 (track-to-track sd
+    0.11-0.19) and A_yb on S_high 1.40 / 1.50 / 1.69 / 1.56 m/s² (sd 0.17-0.46): no systematic
+    change, while 500 m would double the cost of the Monte Carlo and Sobol' stages.
+    """
+    out = Path(out_dir)
+    setup = parameter_study.StudySetup(
+        speed_kmh=sizes.speed_kmh, distance=sizes.distance, track_seed=seed
+    )
+    # The surrogates learn from the Monte Carlo's table and the extension's, by content: the
+    # stages that use them run again when either changed (each is checked by its own marker).
+    tables = (
+        DataFile(out / "monte_carlo" / "monte_carlo.csv"),
+        DataFile(out / "surrogate_samples" / "surrogate_samples.csv"),
+    )
+    training = surrogate_validation.Training(tables, kfold=sizes.kfold, seed=seed)
+    # A preset of its own name, else (a hand-made Sizes) the quick study.
+    design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
+    out_stages: list[Stage] = [
+        speed_sweep.SpeedSweepStage(
+            speeds_kmh=sizes.sweep_speeds_kmh,
+            psd_speed_kmh=sizes.speed_kmh,
+            distance=sizes.distance,
+            seed=seed,
+            n_tracks=sizes.n_tracks,
+            yaw_damper=dampers.YD2,
+        ),
+        parameter_study.MonteCarloStage(setup, sizes.lhs_samples, seed),
+        surrogate_samples.SurrogateSamplesStage(
+            setup, sizes.surrogate_samples, sizes.lhs_samples, seed
+        ),
+        surrogate_validation.SurrogateStage(training, spec_samples=sizes.lhs_samples),
+        parameter_stages.SensitivityStage(
+            setup, training, seed, sizes.convergence_bases, sizes.surrogate_base
+        ),
+        parameter_stages.OptimisationStage(
+            setup, training, seed, sizes.pop_size, sizes.n_gen, sizes.n_verify
+        ),
+        damper_bench.DamperBenchStage(),
+        fsd_comparison.FsdComparisonStage(
+            speed_kmh=sizes.speed_kmh,
+            distance=sizes.distance,
+            lead_in=fsd_comparison.LEAD_IN,
+            seed=seed,
+            n_tracks=sizes.n_tracks,
+        ),
+        fsd_design_stage.FsdDesignStage(design_sizes, speed_kmh=sizes.speed_kmh, seed=seed),
+    ]
+    c = sizes.curving_sizes
+    if c is not None:
+        out_stages.append(
+            curving.CurvingStage(
+                curves=tuple(c.curves()),
+                deficiencies_mm=c.deficiencies_mm,
+                lead_in=c.lead_in,
+                seed=seed,
+            )
+        )
+    return out_stages
+
+
 def reproduce(
     sizes: Sizes,
     out: str | Path,
@@ -261,7 +327,8 @@ def reproduce(
     executor: Executor | None = None,
     chunk_size: int | None = None,
 ) -> Path:
-    """Run every stage into ``out`` and write ``out/report.md``; return the report's path.
+    """Run every stage (:func:`stages`) into ``out`` and write ``out/report.md``; return the
+    report's path.
 
     ``seed`` seeds the track irregularities, the Latin hypercube, the Saltelli designs, the
     networks' K-means and NSGA-II. ``threads``, ``executor`` (default local threads) and
@@ -269,207 +336,32 @@ def reproduce(
     """
     out_dir = Path(out)
     executor = executor or LocalExecutor(threads)
-    runner = StageRunner(out_dir, log=log, force=force)
-    setup = parameter_study.StudySetup(
-        speed_kmh=sizes.speed_kmh,
-        distance=sizes.distance,
-        track_seed=seed,
-        threads=threads,
-        progress=progress,
+
+    @contextlib.contextmanager
+    def in_campaign(stage_dir: Path) -> Iterator[None]:
+        """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
+        if force:
+            shutil.rmtree(stage_dir / "store", ignore_errors=True)
+        with campaign.using(executor, stage_dir / "store", chunk_size=chunk_size):
+            yield
+
+    runner = StageRunner(
+        out_dir,
+        log=log,
+        force=force,
+        runtime=Runtime(threads=threads, progress=progress),
+        around=in_campaign,
     )
-    # Stage settings hold what the stage's numbers depend on (not the preset's name), so a
-    # `--full` run after `--quick` reuses the stages whose sizes the two share.
-    common = {"seed": seed, **setup.settings()}
-    lhs = {**common, "lhs_samples": sizes.lhs_samples}
-    extension = {**lhs, "surrogate_samples": sizes.surrogate_samples}
-    # The surrogates are chosen by k-fold cross-validation: every stage that uses them depends on
-    # the folds and the candidates too.
-    fitted = {
-        **extension,
-        "log_target": parameter_study.LOG_TARGET,
-        "kfold": sizes.kfold,
-        "surrogate_selection": selection_settings(sizes.kfold),
-    }
-    # The arguments of the sweep and of the damper comparison, from which both the run and its
-    # stage hash are made (so that no input is left out of the hash). Only the damper comparison
-    # has a lead-in (its FSD must leave its start state): for the passive Maxwell yaw dampers of
-    # the other stages, 8 tracks at 200 km/h with 0, 100, 200 and 500 m of lead-in gave W_y on
-    # S_low 2.72 / 2.82 / 2.82 / 2.62 (track-to-track sd 0.11-0.19) and A_yb on S_high 1.40 /
-    # 1.50 / 1.69 / 1.56 m/s² (sd 0.17-0.46): no systematic change, while 500 m would double the
-    # cost of the Monte Carlo and Sobol' stages.
-    sweep_args: dict[str, Any] = {
-        "speeds_kmh": sizes.sweep_speeds_kmh,
-        "psd_speed_kmh": sizes.speed_kmh,
-        "distance": sizes.distance,
-        "seed": seed,
-        "n_tracks": sizes.n_tracks,
-        "yaw_damper": dampers.YD2,
-    }
-    fsd_args: dict[str, Any] = {
-        "speed_kmh": sizes.speed_kmh,
-        "distance": sizes.distance,
-        "lead_in": fsd_comparison.LEAD_IN,
-        "seed": seed,
-        "n_tracks": sizes.n_tracks,
-    }
-    mc_csv = out_dir / "monte_carlo" / "monte_carlo.csv"
-    extra_csv = out_dir / "surrogate_samples" / "surrogate_samples.csv"
+    planned = stages(sizes, out_dir, seed=seed)
     log(
         f"loco {loco.__version__}: reproducing SPEC §6 ({sizes.name}, ~{sizes.runs()} runs of "
         f"{sizes.distance:g} m) into {out_dir}"
     )
-
-    def sweep(d: Path) -> StudyRecord:
-        s = speed_sweep.run_speed_sweep(**sweep_args, threads=threads, progress=progress)
-        return speed_sweep.save_speed_sweep(s, d)
-
-    def monte_carlo(d: Path) -> StudyRecord:
-        return parameter_study.run_monte_carlo(setup, sizes.lhs_samples, seed, d)
-
-    def extra_samples(d: Path) -> StudyRecord:
-        return surrogate_samples.run_extension(
-            setup, sizes.surrogate_samples, sizes.lhs_samples, seed, d
-        )
-
-    # The surrogate's training samples (the Monte Carlo's, then the extension's) and the
-    # surrogates chosen and fitted on them, loaded and chosen once on the first stage that needs
-    # them and shared by the surrogate, Sobol' and NSGA-II stages.
-    Fitted = tuple[parameter_study.FloatArray, parameter_study.FloatArray, list[Selection]]
-    fitted_models: list[Fitted] = []
-
-    def lhs_and_models() -> Fitted:
-        if not fitted_models:
-            parts = [parameter_study.load_monte_carlo(p) for p in (mc_csv, extra_csv)]
-            x = np.vstack([p[0] for p in parts])
-            y = np.vstack([p[1] for p in parts])
-            chosen = surrogate_validation.select_surrogates(x, y, n_splits=sizes.kfold, seed=seed)
-            fitted_models.append((x, y, chosen))
-        return fitted_models[0]
-
-    def surrogate(d: Path) -> StudyRecord:
-        x, y, chosen = lhs_and_models()
-        return surrogate_validation.validate_surrogate(
-            x,
-            y,
-            d,
-            n_splits=sizes.kfold,
-            seed=seed,
-            selections=chosen,
-            spec_samples=sizes.lhs_samples,
-        )
-
-    def sensitivity(d: Path) -> StudyRecord:
-        x, y, chosen = lhs_and_models()
-        return parameter_stages.run_sensitivity(
-            setup,
-            x,
-            y,
-            d,
-            convergence_bases=sizes.convergence_bases,
-            surrogate_base=sizes.surrogate_base,
-            seed=seed,
-            models=[c.model for c in chosen],
-            surrogate_name=surrogate_validation.surrogate_label(chosen),
-        )
-
-    def optimisation(d: Path) -> StudyRecord:
-        x, y, chosen = lhs_and_models()
-        return parameter_stages.run_optimisation(
-            setup,
-            x,
-            y,
-            d,
-            pop_size=sizes.pop_size,
-            n_gen=sizes.n_gen,
-            n_verify=sizes.n_verify,
-            seed=seed,
-            models=[c.model for c in chosen],
-            surrogate_name=surrogate_validation.surrogate_label(chosen),
-        )
-
-    def fsd(d: Path) -> StudyRecord:
-        c = fsd_comparison.run_fsd_comparison(**fsd_args, threads=threads, progress=progress)
-        return fsd_comparison.save_fsd_comparison(c, d)
-
-    # A preset of its own name, else (a hand-made Sizes) the quick study.
-    design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
-
-    def fsd_design(d: Path) -> StudyRecord:
-        return fsd_design_stage.run_fsd_design(
-            design_sizes, d, speed_kmh=sizes.speed_kmh, seed=seed, threads=threads
-        )
-
-    stages: list[tuple[str, dict[str, Any], Callable[[Path], StudyRecord]]] = [
-        ("speed_sweep", speed_sweep.sweep_settings(**sweep_args), sweep),
-        ("monte_carlo", lhs, monte_carlo),
-        ("surrogate_samples", extension, extra_samples),
-        ("surrogate", fitted, surrogate),
-        (
-            "sensitivity",
-            {
-                **fitted,
-                "convergence_bases": sizes.convergence_bases,
-                "surrogate_base": sizes.surrogate_base,
-            },
-            sensitivity,
-        ),
-        (
-            "optimisation",
-            {
-                **fitted,
-                "pop_size": sizes.pop_size,
-                "n_gen": sizes.n_gen,
-                "n_verify": sizes.n_verify,
-            },
-            optimisation,
-        ),
-        ("damper_bench", damper_bench.bench_settings(), damper_bench.bench_study),
-        ("fsd_comparison", fsd_comparison.comparison_settings(**fsd_args), fsd),
-        (
-            "fsd_design",
-            fsd_design_stage.design_settings(design_sizes, speed_kmh=sizes.speed_kmh, seed=seed),
-            fsd_design,
-        ),
-    ]
-    if sizes.curving_sizes is not None:
-        curving_args: dict[str, Any] = {
-            "curves": sizes.curving_sizes.curves(),
-            "deficiencies_mm": sizes.curving_sizes.deficiencies_mm,
-            "lead_in": sizes.curving_sizes.lead_in,
-            "seed": seed,
-        }
-
-        def curves(d: Path) -> StudyRecord:
-            study = curving.run_curving(**curving_args, threads=threads, progress=progress)
-            return curving.save_curving(study, d)
-
-        stages.append(("curving", curving.curving_settings(**curving_args), curves))
-
-    def in_campaign(stage: Callable[[Path], StudyRecord]) -> Callable[[Path], StudyRecord]:
-        """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
-
-        def run_stage(d: Path) -> StudyRecord:
-            if force:
-                shutil.rmtree(d / "store", ignore_errors=True)
-            with campaign.using(executor, d / "store", chunk_size=chunk_size):
-                return stage(d)
-
-        return run_stage
-
     log(f"simulations on {executor.describe()}")
     records = []
-    for i, (name, settings, stage) in enumerate(stages, start=1):
-        log(f"stage {i}/{len(stages)}: {name}")
-        if name in READS_MONTE_CARLO:
-            # Rerun when the table they learn from changed (it is checked by its own marker).
-            settings = {
-                **settings,
-                "monte_carlo_sha256": runner.output_hash(mc_csv),
-                "surrogate_samples_sha256": runner.output_hash(extra_csv),
-            }
-        record = runner.run(
-            name, {**settings, "loco_version": loco.__version__}, in_campaign(stage)
-        )
+    for i, stage in enumerate(planned, start=1):
+        log(f"stage {i}/{len(planned)}: {stage.name}")
+        record = runner.run(stage)
         records.append(record)
         if record.notes:
             log(f"  {record.notes}")
@@ -504,10 +396,6 @@ def _verdict(records: list[StudyRecord]) -> list[str]:
                 return verdict_from_csv(table).markdown()
     return ["## Verdict", "", "Not available: the damper comparison stage wrote no table.", ""]
 
-
-#: Stages that learn from ``monte_carlo/monte_carlo.csv`` and
-#: ``surrogate_samples/surrogate_samples.csv``.
-READS_MONTE_CARLO = ("surrogate", "sensitivity", "optimisation")
 
 PREAMBLE = (
     "Every figure and table of the reference study (described in `docs/STUDY.md` of loco; the "

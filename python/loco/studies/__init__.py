@@ -12,7 +12,8 @@
   samples); :mod:`loco.studies.statistics`: means, 95 % intervals, paired tests, rankings.
 - :mod:`loco.studies.optimisation`: NSGA-II Pareto front, spread of points, re-simulation.
 - :mod:`loco.studies.report`: study records, CSV/JSON output, the Markdown report.
-- :mod:`loco.studies.stages`: resumable stages (skipped when finished with the same settings).
+- :mod:`loco.studies.stages`: a stage as a frozen dataclass of its inputs, hashed from them, and
+  the runner that skips a stage finished with the same inputs.
 
 The studies of SPEC §6, each writing its figures, tables and report record:
 

@@ -26,9 +26,9 @@ import dataclasses
 import math
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
@@ -37,6 +37,7 @@ import loco
 from loco import _loco, dampers
 from loco.studies import en14363, fsd_comparison
 from loco.studies.report import StudyRecord, save_json
+from loco.studies.stages import Demand, Runtime, Stage
 
 __all__ = [
     "CANT_DEFICIENCIES_MM",
@@ -45,8 +46,8 @@ __all__ = [
     "MAX_SPEED_KMH",
     "CurveCase",
     "CurvingSizes",
+    "CurvingStage",
     "CurvingStudy",
-    "curving_settings",
     "run_curving",
     "save_curving",
     "speed_for_deficiency",
@@ -169,28 +170,91 @@ class CurvingStudy:
     axle_load: float
 
 
-def curving_settings(
-    *,
-    curves: Sequence[CurveCase] = CURVES,
-    deficiencies_mm: Sequence[float] = CANT_DEFICIENCIES_MM,
-    damper_set: Mapping[str, dampers.Damper] = dampers.PRESETS,
-    lead_in: float = LEAD_IN,
-    irregular: bool = False,
-    seed: int = 0,
-    vehicle: loco.Locomotive | None = None,
-) -> dict[str, Any]:
-    """Everything the study's numbers depend on (the stage's hash)."""
-    vehicle = vehicle or loco.Locomotive.default()
-    return {
-        "curves": [dataclasses.asdict(c) for c in curves],
-        "deficiencies_mm": list(deficiencies_mm),
-        "dampers": {n: repr(d) for n, d in damper_set.items()},
-        "lead_in": lead_in,
-        "irregular": irregular,
-        "seed": seed,
-        "max_speed_kmh": MAX_SPEED_KMH,
-        "vehicle": repr(vehicle),
-    }
+@dataclass
+class CurveRuns:
+    """The runs of one curve: the ``speeds`` (m/s) of the cant ``deficiencies_mm`` at most the
+    stage's speed cap, the recorded ``distance`` (m, until the last wheelset has run the whole
+    circular curve) and the deficiencies ``skipped`` above the cap, with why."""
+
+    case: CurveCase
+    speeds: list[float] = field(default_factory=list)
+    deficiencies_mm: list[float] = field(default_factory=list)
+    distance: float = 0.0
+    skipped: list[str] = field(default_factory=list)
+
+
+def _presets() -> dict[str, dampers.Damper]:
+    return dict(dampers.PRESETS)
+
+
+@dataclass(frozen=True)
+class CurvingStage(Stage):
+    """The study's inputs (stage ``curving`` of ``loco reproduce --full``): every curve at every
+    cant deficiency (mm) with every yaw damper of ``damper_set``.
+
+    ``lead_in`` (m) of straight is run and not recorded before the design's run-in (the FSD
+    leaves its start state there, :data:`loco.studies.fsd_comparison.LEAD_IN`); ``irregular``
+    puts the S_norm irregularities (seed ``seed``) on the design, otherwise the track is perfect;
+    a case faster than ``max_speed_kmh`` (km/h) is left out. ``vehicle`` None is the embedded
+    locomotive. Each (curve, damper) is one batch over its speeds.
+    """
+
+    name: ClassVar[str] = "curving"
+    curves: Sequence[CurveCase] = CURVES
+    deficiencies_mm: Sequence[float] = CANT_DEFICIENCIES_MM
+    damper_set: Mapping[str, dampers.Damper] = field(default_factory=_presets)
+    lead_in: float = LEAD_IN
+    irregular: bool = False
+    seed: int = 0
+    vehicle: loco.Locomotive | None = None
+    max_speed_kmh: float = MAX_SPEED_KMH
+
+    def locomotive(self) -> loco.Locomotive:
+        """The vehicle run (the embedded one when ``vehicle`` is None)."""
+        return self.vehicle or loco.Locomotive.default()
+
+    def settings(self) -> dict[str, Any]:
+        """The study's settings as its JSON file and report show them."""
+        return {
+            "curves": [dataclasses.asdict(c) for c in self.curves],
+            "deficiencies_mm": list(self.deficiencies_mm),
+            "dampers": {n: repr(d) for n, d in self.damper_set.items()},
+            "lead_in": self.lead_in,
+            "irregular": self.irregular,
+            "seed": self.seed,
+            "max_speed_kmh": self.max_speed_kmh,
+            "vehicle": repr(self.locomotive()),
+        }
+
+    def plan(self) -> list[CurveRuns]:
+        """The runs of each curve (:class:`CurveRuns`)."""
+        vehicle = self.locomotive()
+        last = wheelset_offsets(vehicle)[-1]
+        plan = []
+        for case in self.curves:
+            runs = CurveRuns(case, distance=RUN_IN + case.transition_m + case.curve_m + last + 1.0)
+            for d in self.deficiencies_mm:
+                v = speed_for_deficiency(case.radius_m, case.cant_mm, d, vehicle)
+                if v * 3.6 > self.max_speed_kmh:
+                    runs.skipped.append(
+                        f"R = {case.radius_m:g} m, d = {d:g} mm: {v * 3.6:.0f} km/h is above "
+                        f"{self.max_speed_kmh:g} km/h"
+                    )
+                    continue
+                runs.speeds.append(v)
+                runs.deficiencies_mm.append(d)
+            plan.append(runs)
+        return plan
+
+    def demand(self) -> Demand:
+        """One run per (curve, deficiency below the speed cap, damper)."""
+        n = len(self.damper_set)
+        runs = [Demand.runs(n, self.lead_in + c.distance, v) for c in self.plan() for v in c.speeds]
+        return sum(runs, Demand())
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """Run the study and save it into ``out_dir`` (:func:`save_curving`)."""
+        return save_curving(run_curving(self, runtime), out_dir)
 
 
 def _assess(
@@ -231,63 +295,30 @@ def _assess(
     }
 
 
-def run_curving(
-    *,
-    curves: Sequence[CurveCase] = CURVES,
-    deficiencies_mm: Sequence[float] = CANT_DEFICIENCIES_MM,
-    damper_set: Mapping[str, dampers.Damper] = dampers.PRESETS,
-    lead_in: float = LEAD_IN,
-    irregular: bool = False,
-    seed: int = 0,
-    vehicle: loco.Locomotive | None = None,
-    threads: int | None = None,
-    progress: bool = False,
-) -> CurvingStudy:
-    """Run every curve at every deficiency with every yaw damper of ``damper_set``.
-
-    ``lead_in`` (m) of straight is run and not recorded before the design's run-in (the FSD
-    leaves its start state there, :data:`loco.studies.fsd_comparison.LEAD_IN`); ``irregular``
-    puts the S_norm irregularities (seed ``seed``) on the design, otherwise the track is perfect.
-    Each (curve, damper) is one batch over its speeds.
-    """
+def run_curving(stage: CurvingStage, runtime: Runtime | None = None) -> CurvingStudy:
+    """Run the study ``stage`` describes (``runtime``: threads and progress bars, default all
+    cores and no bars)."""
+    runtime = runtime or Runtime(progress=False)
     started = time.perf_counter()
-    vehicle = vehicle or loco.Locomotive.default()
-    settings = curving_settings(
-        curves=curves,
-        deficiencies_mm=deficiencies_mm,
-        damper_set=damper_set,
-        lead_in=lead_in,
-        irregular=irregular,
-        seed=seed,
-        vehicle=vehicle,
-    )
+    vehicle = stage.locomotive()
     offsets = wheelset_offsets(vehicle)
+    lead_in = stage.lead_in
     straight = lead_in + RUN_IN
     rows: list[dict[str, Any]] = []
     skipped: list[str] = []
-    for case in curves:
-        speeds, kept = [], []
-        for d in deficiencies_mm:
-            v = speed_for_deficiency(case.radius_m, case.cant_mm, d, vehicle)
-            if v * 3.6 > MAX_SPEED_KMH:
-                skipped.append(
-                    f"R = {case.radius_m:g} m, d = {d:g} mm: {v * 3.6:.0f} km/h is above "
-                    f"{MAX_SPEED_KMH:g} km/h"
-                )
-                continue
-            speeds.append(v)
-            kept.append(d)
+    for planned in stage.plan():
+        skipped += planned.skipped
+        case, speeds = planned.case, planned.speeds
         if not speeds:
             continue
-        # Recorded: until the last wheelset has run the whole circular curve.
-        distance = RUN_IN + case.transition_m + case.curve_m + offsets[-1] + 1.0
-        for name, law in damper_set.items():
+        for name, law in stage.damper_set.items():
             # Perfect track, or the S_norm irregularities of `seed`.
-            track: dict[str, Any] = {"seed": seed} if irregular else {"track": "perfect"}
+            irregular = {"seed": stage.seed}
+            track: dict[str, Any] = irregular if stage.irregular else {"track": "perfect"}
             scenario = loco.Scenario(
                 scenario="S_norm",
                 speed=speeds[0],
-                distance=distance,
+                distance=planned.distance,
                 lead_in=lead_in,
                 yaw_damper=law,
                 curve=case.sections(straight),
@@ -298,11 +329,11 @@ def run_curving(
                 ["speed"],
                 vehicle,
                 scenario,
-                threads=threads,
-                progress=progress,
+                threads=runtime.threads,
+                progress=runtime.progress,
                 histories=range(len(speeds)),
             )
-            for i, (v, d) in enumerate(zip(speeds, kept, strict=True)):
+            for i, (v, d) in enumerate(zip(speeds, planned.deficiencies_mm, strict=True)):
                 label = f"R = {case.radius_m:g} m, d = {d:g} mm, {name}"
                 if batch.status[i] != 0 or i not in batch.histories:
                     skipped.append(f"{label}: {batch.messages[i] or int(batch.status[i])}")
@@ -321,7 +352,7 @@ def run_curving(
     return CurvingStudy(
         table=pd.DataFrame(rows),
         skipped=skipped,
-        settings=settings,
+        settings=stage.settings(),
         seconds=time.perf_counter() - started,
         axle_load=axle_load,
     )

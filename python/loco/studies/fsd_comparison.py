@@ -19,7 +19,7 @@ import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -31,6 +31,7 @@ from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
 from loco.studies.speed_sweep import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
+from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.statistics import Ranking, mean_interval, rank
 
 __all__ = [
@@ -39,6 +40,7 @@ __all__ = [
     "JUDGED_BY",
     "STABILITY_FLAGS",
     "FsdComparison",
+    "FsdComparisonStage",
     "run_fsd_comparison",
     "save_fsd_comparison",
     "valve_open_fractions",
@@ -242,47 +244,15 @@ def valve_closed_fraction(result: loco.SimulationResult) -> float:
 LEAD_IN = 500.0
 
 
-def comparison_settings(
-    *,
-    speed_kmh: float = 200.0,
-    distance: float = 500.0,
-    lead_in: float = LEAD_IN,
-    seed: int = 0,
-    n_tracks: int = 1,
-    vehicle: loco.Locomotive | None = None,
-    damper_set: Mapping[str, dampers.Damper] = DAMPERS,
-) -> dict[str, Any]:
-    """Everything the comparison's numbers depend on (the arguments of
-    :func:`run_fsd_comparison` but the thread count and progress bar), JSON-ready: its settings
-    and its stage hash."""
-    return {
-        "loco_version": loco.__version__,
-        "speed_kmh": speed_kmh,
-        "distance_m": distance,
-        "lead_in_m": lead_in,
-        "track_seed": seed,
-        "n_tracks": n_tracks,
-        "tracks": f"ChaCha streams 0-{n_tracks - 1} of track seed {seed}",
-        "cases": [list(c) for c in CASES],
-        "dampers": {n: dampers.describe(d) for n, d in damper_set.items()},
-        "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
-    }
+def _dampers() -> dict[str, dampers.Damper]:
+    return dict(DAMPERS)
 
 
-def run_fsd_comparison(
-    *,
-    speed_kmh: float = 200.0,
-    distance: float = 500.0,
-    lead_in: float = LEAD_IN,
-    seed: int = 0,
-    n_tracks: int = 1,
-    vehicle: loco.Locomotive | None = None,
-    damper_set: Mapping[str, dampers.Damper] = DAMPERS,
-    threads: int | None = None,
-    progress: bool = False,
-) -> FsdComparison:
-    """Run every damper of ``damper_set`` on S_low and S_high, each on tracks
-    ``0 … n_tracks-1`` (one batch per case, the tracks as samples).
+@dataclass(frozen=True)
+class FsdComparisonStage(Stage):
+    """The comparison's inputs (stage ``fsd_comparison`` of ``loco reproduce``): every damper of
+    ``damper_set`` on S_low and S_high, each on tracks ``0 … n_tracks-1`` (one batch per case,
+    the tracks as samples).
 
     Parameters
     ----------
@@ -300,50 +270,78 @@ def run_fsd_comparison(
     vehicle : Locomotive, optional
         Default: the embedded locomotive.
     damper_set : mapping of str to Damper
-        Yaw damper laws by name (default YD1, YD2, FSD).
-    threads : int, optional
-        Threads of each batch (default: all cores).
-    progress : bool
-        Show the batch progress bars.
+        Yaw damper laws by name (default :data:`DAMPERS`).
+    """
+
+    name: ClassVar[str] = "fsd_comparison"
+    speed_kmh: float = 200.0
+    distance: float = 500.0
+    lead_in: float = LEAD_IN
+    seed: int = 0
+    n_tracks: int = 1
+    vehicle: loco.Locomotive | None = None
+    damper_set: Mapping[str, dampers.Damper] = field(default_factory=_dampers)
+
+    def settings(self) -> dict[str, Any]:
+        """The comparison's settings as its JSON file and report show them."""
+        n, seed = self.n_tracks, self.seed
+        return {
+            "loco_version": loco.__version__,
+            "speed_kmh": self.speed_kmh,
+            "distance_m": self.distance,
+            "lead_in_m": self.lead_in,
+            "track_seed": seed,
+            "n_tracks": n,
+            "tracks": f"ChaCha streams 0-{n - 1} of track seed {seed}",
+            "cases": [list(c) for c in CASES],
+            "dampers": {k: dampers.describe(d) for k, d in self.damper_set.items()},
+            "vehicle_overrides": {} if self.vehicle is None else dict(self.vehicle.overrides),
+        }
+
+    def demand(self) -> Demand:
+        """One run per (case, damper, track)."""
+        n = len(CASES) * len(self.damper_set) * self.n_tracks
+        return Demand.runs(n, self.lead_in + self.distance, self.speed_kmh / 3.6)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """Run the comparison and save it into ``out_dir`` (:func:`save_fsd_comparison`)."""
+        return save_fsd_comparison(run_fsd_comparison(self, runtime), out_dir)
+
+
+def run_fsd_comparison(stage: FsdComparisonStage, runtime: Runtime | None = None) -> FsdComparison:
+    """Run the comparison ``stage`` describes (``runtime``: threads and progress bars, default
+    all cores and no bars).
 
     A run that fails (divergence, derailment) is flagged with its message and left out of the
     statistics, so one unstable configuration does not lose the others.
     """
+    runtime = runtime or Runtime(progress=False)
     start = time.perf_counter()
-    settings = comparison_settings(
-        speed_kmh=speed_kmh,
-        distance=distance,
-        lead_in=lead_in,
-        seed=seed,
-        n_tracks=n_tracks,
-        vehicle=vehicle,
-        damper_set=damper_set,
-    )
     runs = {}
     for scenario_name, label, channel in CASES:
-        for name, law in damper_set.items():
+        for name, law in stage.damper_set.items():
             scenario = loco.Scenario(
                 scenario=scenario_name,
-                speed=speed_kmh / 3.6,
-                distance=distance,
-                lead_in=lead_in,
-                seed=seed,
+                speed=stage.speed_kmh / 3.6,
+                distance=stage.distance,
+                lead_in=stage.lead_in,
+                seed=stage.seed,
                 yaw_damper=law,
             )
             runs[(scenario_name, name)] = run_over_tracks(
                 scenario,
-                n_tracks,
-                vehicle=vehicle,
-                threads=threads,
-                progress=progress,
+                stage.n_tracks,
+                vehicle=stage.vehicle,
+                threads=runtime.threads,
+                progress=runtime.progress,
                 spectra=((label, channel, PEAK_METRICS[label]),),
                 keep_first=True,
                 derived={VALVE_FRACTION: valve_closed_fraction},
             )
     return FsdComparison(
-        damper_laws=dict(damper_set),
+        damper_laws=dict(stage.damper_set),
         runs=runs,
-        settings=settings,
+        settings=stage.settings(),
         seconds=time.perf_counter() - start,
     )
 

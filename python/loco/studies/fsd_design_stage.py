@@ -14,7 +14,7 @@ from __future__ import annotations
 import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
@@ -25,8 +25,9 @@ from loco.studies import fsd_conicity, fsd_design
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.stages import Demand, Runtime, Stage
 
-__all__ = ["SIZES", "DesignSizes", "design_settings", "run_fsd_design"]
+__all__ = ["SIZES", "DesignSizes", "FsdDesignStage", "design_settings", "run_fsd_design"]
 
 
 @dataclass(frozen=True)
@@ -54,7 +55,7 @@ REFERENCES: dict[str, dampers.Damper] = dict(dampers.PRESETS)
 
 
 def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[str, Any]:
-    """Everything the stage's numbers depend on, JSON-ready (its stage hash)."""
+    """The stage's settings as its JSON file and report show them."""
     setup = fsd_design.DesignSetup(
         speed_kmh=speed_kmh, distance=sizes.distance, lead_in=sizes.lead_in, seed=seed
     )
@@ -64,6 +65,31 @@ def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[
         "nsga2_seed": seed,
         "references": {n: dampers.describe(d) for n, d in REFERENCES.items()},
     }
+
+
+@dataclass(frozen=True)
+class FsdDesignStage(Stage):
+    """The stage ``fsd_design`` of ``loco reproduce``: its ``sizes``, the running speed (km/h)
+    and the seed of the tracks and of NSGA-II."""
+
+    name: ClassVar[str] = "fsd_design"
+    sizes: DesignSizes
+    speed_kmh: float = 200.0
+    seed: int = 0
+
+    def demand(self) -> Demand:
+        """At most: two runs (S_low, S_high) per design NSGA-II evaluates (``pop_size`` per
+        generation), and every reference and picked design (up to three) on every conicity and
+        track (a valve the core refuses, or picks that coincide, run none)."""
+        s = self.sizes
+        n = 2 * s.pop_size * s.n_gen + (len(REFERENCES) + 3) * len(s.conicities) * s.n_tracks
+        return Demand.runs(n, s.lead_in + s.distance, self.speed_kmh / 3.6)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_fsd_design` into ``out_dir``."""
+        return run_fsd_design(
+            self.sizes, out_dir, speed_kmh=self.speed_kmh, seed=self.seed, threads=runtime.threads
+        )
 
 
 def linear_critical_speeds(

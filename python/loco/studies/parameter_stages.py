@@ -12,8 +12,10 @@ simulator and on the surrogates trained from the Latin hypercube Monte Carlo of
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -40,9 +42,11 @@ from loco.studies.sensitivity import (
     sobol_convergence,
     sobol_direct,
 )
+from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.surrogate import Predictor
+from loco.studies.surrogate_validation import Training, surrogate_label
 
-__all__ = ["run_optimisation", "run_sensitivity"]
+__all__ = ["OptimisationStage", "SensitivityStage", "run_optimisation", "run_sensitivity"]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -67,6 +71,7 @@ def run_sensitivity(
     log_target: bool = LOG_TARGET,
     models: Sequence[Predictor] | None = None,
     surrogate_name: str = "SPEC RBF network",
+    runtime: Runtime | None = None,
 ) -> StudyRecord:
     """Sobol' indices of both objectives, direct (simulator) and on the surrogates.
 
@@ -96,18 +101,21 @@ def run_sensitivity(
     surrogate_name : str
         Which surrogates ``models`` are, for the figures and settings (e.g. ``W_y: gp, A_yb:
         gp``).
+    runtime : Runtime, optional
+        Threads and progress bars of the simulations (default all cores, bars shown).
 
     Writes ``sobol_<label>.png`` (S1 and ST, direct and surrogate side by side),
     ``sobol_convergence.png``, ``sobol_summary.csv`` (one row per parameter), ``sobol_indices.csv``
     (with confidence half-widths), ``sobol_convergence.csv``,
     ``saltelli_samples.csv`` (the simulated design and its outputs) and ``sensitivity.json``.
     """
+    runtime = runtime or Runtime()
     convergence = sobol_convergence(
-        setup.evaluator(),
+        setup.evaluator(runtime),
         labels(),
         n_bases=convergence_bases,
         seed=seed,
-        progress=setup.progress,
+        progress=runtime.progress,
         keep_design=True,
     )
     n_direct = max(convergence_bases)
@@ -230,15 +238,17 @@ def run_optimisation(
     log_target: bool = LOG_TARGET,
     models: Sequence[Predictor] | None = None,
     surrogate_name: str = "SPEC RBF network",
+    runtime: Runtime | None = None,
 ) -> StudyRecord:
     """NSGA-II on the surrogates of W_y and A_yb, then ``n_verify`` Pareto points spread along
-    the front re-simulated (``setup``) to measure the surrogate's error. ``models`` and
-    ``surrogate_name`` are as in :func:`run_sensitivity` (default: the SPEC networks, fitted
-    here).
+    the front re-simulated (``setup``, on ``runtime``) to measure the surrogate's error.
+    ``models`` and ``surrogate_name`` are as in :func:`run_sensitivity` (default: the SPEC
+    networks, fitted here).
 
     Writes ``pareto.png`` (front and parameter distributions), ``pareto_verification.png``,
     ``pareto_front.csv``, ``pareto_verification.csv`` and ``optimisation.json``.
     """
+    runtime = runtime or Runtime()
     if models is None:
         models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
     result = nsga2(
@@ -247,7 +257,7 @@ def run_optimisation(
         pop_size=pop_size,
         n_gen=n_gen,
         seed=seed,
-        progress=setup.progress,
+        progress=runtime.progress,
     )
     plot_pareto(
         result,
@@ -256,7 +266,7 @@ def run_optimisation(
         f"{n_gen} generations",
     )
     picked = pick_spread(result, n_verify)
-    check = verify_points(result, picked, setup.evaluator())
+    check = verify_points(result, picked, setup.evaluator(runtime))
     errors = {
         o: {
             "mean_abs_rel_error": float(np.nanmean(np.abs(check[f"{o}_rel_error"]))),
@@ -304,3 +314,75 @@ def run_optimisation(
         parameters=settings,
         notes=notes,
     )
+
+
+@dataclass(frozen=True)
+class _OnSurrogates(Stage):
+    """A stage on the surrogates of ``training`` that also simulates on ``setup``; ``seed``
+    seeds its designs and the networks."""
+
+    setup: StudySetup
+    training: Training
+    seed: int
+
+    def _study(
+        self, study: Callable[..., StudyRecord], out_dir: Path, runtime: Runtime, **sizes: Any
+    ) -> StudyRecord:
+        x, y, chosen = self.training.fitted()
+        return study(
+            self.setup,
+            x,
+            y,
+            out_dir,
+            seed=self.seed,
+            log_target=self.training.log_target,
+            models=[c.model for c in chosen],
+            surrogate_name=surrogate_label(chosen),
+            runtime=runtime,
+            **sizes,
+        )
+
+
+@dataclass(frozen=True)
+class SensitivityStage(_OnSurrogates):
+    """The stage ``sensitivity`` of ``loco reproduce``: :func:`run_sensitivity` on ``setup``
+    with the surrogates of ``training``."""
+
+    name: ClassVar[str] = "sensitivity"
+    convergence_bases: tuple[int, ...]
+    surrogate_base: int
+
+    def demand(self) -> Demand:
+        """Both objectives on the largest Saltelli design, N·(6 + 2) points."""
+        return self.setup.demand(max(self.convergence_bases) * (len(names()) + 2))
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_sensitivity` into ``out_dir``."""
+        return self._study(
+            run_sensitivity,
+            out_dir,
+            runtime,
+            convergence_bases=self.convergence_bases,
+            surrogate_base=self.surrogate_base,
+        )
+
+
+@dataclass(frozen=True)
+class OptimisationStage(_OnSurrogates):
+    """The stage ``optimisation`` of ``loco reproduce``: :func:`run_optimisation` on the
+    surrogates of ``training``, ``n_verify`` Pareto points re-simulated on ``setup``."""
+
+    name: ClassVar[str] = "optimisation"
+    pop_size: int
+    n_gen: int
+    n_verify: int
+
+    def demand(self) -> Demand:
+        """At most: both objectives on ``n_verify`` Pareto points (fewer when the front has
+        fewer)."""
+        return self.setup.demand(self.n_verify)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_optimisation` into ``out_dir``."""
+        sizes = {"pop_size": self.pop_size, "n_gen": self.n_gen, "n_verify": self.n_verify}
+        return self._study(run_optimisation, out_dir, runtime, **sizes)

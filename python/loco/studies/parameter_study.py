@@ -22,7 +22,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -34,6 +34,7 @@ from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sampling import latin_hypercube
+from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.surrogate import (
     Predictor,
     RBFNetwork,
@@ -44,6 +45,7 @@ from loco.studies.surrogate import (
 __all__ = [
     "LOG_TARGET",
     "OBJECTIVES",
+    "MonteCarloStage",
     "Objective",
     "StudySetup",
     "fit_surrogates",
@@ -87,16 +89,13 @@ LOG_TARGET = True
 
 @dataclass(frozen=True)
 class StudySetup:
-    """Where the objectives are evaluated: speed (km/h), distance (m), track seed, threads.
-
-    ``vehicle`` None is the embedded locomotive; ``progress`` shows the batch progress bars.
-    """
+    """Where the objectives are evaluated: speed (km/h), distance (m), track seed, vehicle (None:
+    the embedded locomotive). How they run (threads, progress bars) is a
+    :class:`~loco.studies.stages.Runtime`, not part of the setup."""
 
     speed_kmh: float = 200.0
     distance: float = 500.0
     track_seed: int = 0
-    threads: int | None = None
-    progress: bool = True
     vehicle: loco.Locomotive | None = None
 
     def scenario(self, name: str) -> loco.Scenario:
@@ -105,8 +104,10 @@ class StudySetup:
             scenario=name, speed=self.speed_kmh / 3.6, distance=self.distance, seed=self.track_seed
         )
 
-    def evaluator(self) -> Evaluator:
-        """The simulator as an evaluator with one column per objective (``loco.run_batch``)."""
+    def evaluator(self, runtime: Runtime | None = None) -> Evaluator:
+        """The simulator as an evaluator with one column per objective (``loco.run_batch`` on
+        ``runtime``'s threads, with its progress bars; default all cores, bars shown)."""
+        runtime = runtime or Runtime()
         return stack_evaluators(
             *(
                 (
@@ -114,15 +115,19 @@ class StudySetup:
                         self.scenario(o.scenario),
                         o.metric,
                         vehicle=self.vehicle,
-                        threads=self.threads,
+                        threads=runtime.threads,
                         seed=self.track_seed,
-                        progress=self.progress,
+                        progress=runtime.progress,
                     ),
                     1,
                 )
                 for o in OBJECTIVES
             )
         )
+
+    def demand(self, n_samples: int) -> Demand:
+        """``n_samples`` parameter points, each objective simulated on each."""
+        return Demand.runs(len(OBJECTIVES) * n_samples, self.distance, self.speed_kmh / 3.6)
 
     def settings(self) -> dict[str, Any]:
         """What makes a result reproducible (no thread count: batches are thread-independent)."""
@@ -190,13 +195,34 @@ def _plot_scatter(x: FloatArray, y: FloatArray, path: Path) -> Path:
     return save_figure(fig, path)
 
 
-def run_monte_carlo(setup: StudySetup, n_samples: int, seed: int, out_dir: Path) -> StudyRecord:
+@dataclass(frozen=True)
+class MonteCarloStage(Stage):
+    """The stage ``monte_carlo`` of ``loco reproduce``: :func:`run_monte_carlo` of ``n_samples``
+    on ``setup`` with the Latin hypercube's ``seed``."""
+
+    name: ClassVar[str] = "monte_carlo"
+    setup: StudySetup
+    n_samples: int
+    seed: int = 0
+
+    def demand(self) -> Demand:
+        """Both objectives on every sample."""
+        return self.setup.demand(self.n_samples)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_monte_carlo` into ``out_dir``."""
+        return run_monte_carlo(self.setup, self.n_samples, self.seed, out_dir, runtime)
+
+
+def run_monte_carlo(
+    setup: StudySetup, n_samples: int, seed: int, out_dir: Path, runtime: Runtime | None = None
+) -> StudyRecord:
     """Latin hypercube of ``n_samples`` over the six parameters (``seed``), both objectives
-    simulated. Writes ``monte_carlo.csv`` (samples in SI and the study's units, objectives),
-    ``monte_carlo_summary.csv``, ``monte_carlo.png`` (objectives against each parameter) and
-    ``monte_carlo.json``."""
+    simulated (on ``runtime``). Writes ``monte_carlo.csv`` (samples in SI and the study's units,
+    objectives), ``monte_carlo_summary.csv``, ``monte_carlo.png`` (objectives against each
+    parameter) and ``monte_carlo.json``."""
     x = latin_hypercube(n_samples, seed=seed)
-    y = setup.evaluator()(x, names())
+    y = setup.evaluator(runtime)(x, names())
     frame = samples_frame(x, y)
     summary = frame[labels()].describe().T.reset_index(names="objective")
     summary["n_failed"] = [int(np.isnan(y[:, j]).sum()) for j in range(y.shape[1])]

@@ -24,7 +24,7 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -35,6 +35,7 @@ from loco import _loco, dampers, metrics
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import run_over_tracks
+from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.statistics import Interval, mean_interval
 
 __all__ = [
@@ -46,10 +47,10 @@ __all__ = [
     "RMS_METRICS",
     "SCENARIOS",
     "SpeedSweep",
+    "SpeedSweepStage",
     "run_speed_sweep",
     "save_speed_sweep",
     "spectrum",
-    "sweep_settings",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -211,54 +212,10 @@ class SpeedSweep:
         return pd.DataFrame(rows)
 
 
-def sweep_settings(
-    speeds_kmh: Sequence[float],
-    *,
-    scenarios: Sequence[str] = SCENARIOS,
-    psd_speed_kmh: float = 200.0,
-    distance: float = 500.0,
-    lead_in: float = 0.0,
-    seed: int = 0,
-    n_tracks: int = 1,
-    vehicle: loco.Locomotive | None = None,
-    yaw_damper: dampers.Damper | None = dampers.YD2,
-) -> dict[str, Any]:
-    """Everything the sweep's numbers depend on (the arguments of :func:`run_speed_sweep` but the
-    thread count and progress bar), JSON-ready: the sweep's settings and its stage hash."""
-    speeds = np.unique(np.append(np.asarray(speeds_kmh, dtype=np.float64), psd_speed_kmh))
-    return {
-        "loco_version": loco.__version__,
-        "scenarios": list(scenarios),
-        "speeds_kmh": speeds.tolist(),
-        "psd_speed_kmh": psd_speed_kmh,
-        "distance_m": distance,
-        "lead_in_m": lead_in,
-        "track_seed": seed,
-        "n_tracks": n_tracks,
-        "tracks": f"ChaCha streams 0-{n_tracks - 1} of track seed {seed}",
-        "yaw_damper": None if yaw_damper is None else dampers.describe(yaw_damper),
-        "yaw_damper_label": dampers.label(yaw_damper),
-        "vehicle_overrides": {} if vehicle is None else dict(vehicle.overrides),
-        "channels": dict(CHANNELS),
-    }
-
-
-def run_speed_sweep(
-    speeds_kmh: Sequence[float],
-    *,
-    scenarios: Sequence[str] = SCENARIOS,
-    psd_speed_kmh: float = 200.0,
-    distance: float = 500.0,
-    lead_in: float = 0.0,
-    seed: int = 0,
-    n_tracks: int = 1,
-    vehicle: loco.Locomotive | None = None,
-    yaw_damper: dampers.Damper | None = dampers.YD2,
-    threads: int | None = None,
-    progress: bool = True,
-) -> SpeedSweep:
-    """Run the sweep: for each scenario and speed (``speeds_kmh`` plus ``psd_speed_kmh``) one
-    batch over tracks ``0 … n_tracks-1``.
+@dataclass(frozen=True)
+class SpeedSweepStage(Stage):
+    """The sweep's inputs (stage ``speed_sweep`` of ``loco reproduce``): for each scenario and
+    speed (``speeds_kmh`` plus ``psd_speed_kmh``) one batch over tracks ``0 … n_tracks-1``.
 
     Parameters
     ----------
@@ -282,46 +239,82 @@ def run_speed_sweep(
         Default: the embedded locomotive.
     yaw_damper : Damper, optional
         Yaw damper law (SPEC: YD2); None keeps the vehicle file's.
-    threads : int, optional
-        Threads of ``loco.run_batch`` (default: all cores).
-    progress : bool
-        Show the batch progress bar.
     """
+
+    name: ClassVar[str] = "speed_sweep"
+    speeds_kmh: Sequence[float]
+    scenarios: Sequence[str] = SCENARIOS
+    psd_speed_kmh: float = 200.0
+    distance: float = 500.0
+    lead_in: float = 0.0
+    seed: int = 0
+    n_tracks: int = 1
+    vehicle: loco.Locomotive | None = None
+    yaw_damper: dampers.Damper | None = dampers.YD2
+
+    def speeds(self) -> FloatArray:
+        """The speeds run, km/h: ``speeds_kmh`` and ``psd_speed_kmh``, sorted, once each."""
+        given = np.asarray(self.speeds_kmh, dtype=np.float64)
+        return np.unique(np.append(given, self.psd_speed_kmh))
+
+    def settings(self) -> dict[str, Any]:
+        """The sweep's settings as its JSON file and report show them."""
+        n, seed, damper = self.n_tracks, self.seed, self.yaw_damper
+        return {
+            "loco_version": loco.__version__,
+            "scenarios": list(self.scenarios),
+            "speeds_kmh": self.speeds().tolist(),
+            "psd_speed_kmh": self.psd_speed_kmh,
+            "distance_m": self.distance,
+            "lead_in_m": self.lead_in,
+            "track_seed": seed,
+            "n_tracks": n,
+            "tracks": f"ChaCha streams 0-{n - 1} of track seed {seed}",
+            "yaw_damper": None if damper is None else dampers.describe(damper),
+            "yaw_damper_label": dampers.label(damper),
+            "vehicle_overrides": {} if self.vehicle is None else dict(self.vehicle.overrides),
+            "channels": dict(CHANNELS),
+        }
+
+    def demand(self) -> Demand:
+        """One run per (scenario, speed, track)."""
+        n = len(self.scenarios) * self.n_tracks
+        length = self.lead_in + self.distance
+        return sum((Demand.runs(n, length, v / 3.6) for v in self.speeds()), Demand())
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """Run the sweep and save it into ``out_dir`` (:func:`save_speed_sweep`)."""
+        return save_speed_sweep(run_speed_sweep(self, runtime), out_dir)
+
+
+def run_speed_sweep(stage: SpeedSweepStage, runtime: Runtime | None = None) -> SpeedSweep:
+    """Run the sweep ``stage`` describes, with ``runtime``'s threads and progress bars
+    (default: all cores, bars shown)."""
+    runtime = runtime or Runtime()
     start = time.perf_counter()
-    settings = sweep_settings(
-        speeds_kmh,
-        scenarios=scenarios,
-        psd_speed_kmh=psd_speed_kmh,
-        distance=distance,
-        lead_in=lead_in,
-        seed=seed,
-        n_tracks=n_tracks,
-        vehicle=vehicle,
-        yaw_damper=yaw_damper,
-    )
-    speeds = np.asarray(settings["speeds_kmh"], dtype=np.float64)
+    speeds = stage.speeds()
     values, status, messages = [], [], []
     spectra: dict[tuple[str, str], Spectrum] = {}
     names: list[str] = []
     peak_specs = tuple((q, CHANNELS[q], PEAK_METRICS[q]) for q in CHANNELS)
-    for name in scenarios:
+    for name in stage.scenarios:
         rows = []
         for v in speeds:
             scenario = loco.Scenario(
                 scenario=name,
                 speed=v / 3.6,
-                distance=distance,
-                lead_in=lead_in,
-                seed=seed,
-                yaw_damper=yaw_damper,
+                distance=stage.distance,
+                lead_in=stage.lead_in,
+                seed=stage.seed,
+                yaw_damper=stage.yaw_damper,
             )
             runs = run_over_tracks(
                 scenario,
-                n_tracks,
-                vehicle=vehicle,
-                threads=threads,
-                progress=progress,
-                spectra=peak_specs if v == psd_speed_kmh else (),
+                stage.n_tracks,
+                vehicle=stage.vehicle,
+                threads=runtime.threads,
+                progress=runtime.progress,
+                spectra=peak_specs if v == stage.psd_speed_kmh else (),
             )
             names = runs.metric_names
             rows.append(runs)
@@ -331,15 +324,15 @@ def run_speed_sweep(
         status.append(np.stack([r.status for r in rows]))
         messages.append([r.messages for r in rows])
     return SpeedSweep(
-        scenarios=tuple(scenarios),
+        scenarios=tuple(stage.scenarios),
         speeds_kmh=speeds,
         metric_names=names,
         metrics=np.stack(values),
         status=np.stack(status),
         messages=messages,
-        psd_speed_kmh=psd_speed_kmh,
+        psd_speed_kmh=stage.psd_speed_kmh,
         spectra=spectra,
-        settings=settings,
+        settings=stage.settings(),
         seconds=time.perf_counter() - start,
     )
 

@@ -23,7 +23,9 @@ optimisation learns one track's realisation as well as the vehicle (see the READ
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -33,10 +35,12 @@ from loco.studies.parameter_study import OBJECTIVES, StudySetup, samples_frame
 from loco.studies.parameters import names
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sampling import latin_hypercube
+from loco.studies.stages import Demand, Runtime, Stage
 
 __all__ = [
     "EXTENSION_SEED_OFFSET",
     "SURROGATE_SAMPLES",
+    "SurrogateSamplesStage",
     "extension_design",
     "run_extension",
     "training_design",
@@ -81,14 +85,41 @@ def training_design(n_total: int, lhs_samples: int, seed: int) -> FloatArray:
     )
 
 
+@dataclass(frozen=True)
+class SurrogateSamplesStage(Stage):
+    """The stage ``surrogate_samples`` of ``loco reproduce``: :func:`run_extension` up to
+    ``n_total`` training samples beyond the Monte Carlo's ``lhs_samples`` (``seed``, ``setup``)."""
+
+    name: ClassVar[str] = "surrogate_samples"
+    setup: StudySetup
+    n_total: int
+    lhs_samples: int
+    seed: int = 0
+
+    def demand(self) -> Demand:
+        """Both objectives on every added sample."""
+        return self.setup.demand(max(0, self.n_total - self.lhs_samples))
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_extension` into ``out_dir``."""
+        return run_extension(
+            self.setup, self.n_total, self.lhs_samples, self.seed, out_dir, runtime
+        )
+
+
 def run_extension(
-    setup: StudySetup, n_total: int, lhs_samples: int, seed: int, out_dir: Path
+    setup: StudySetup,
+    n_total: int,
+    lhs_samples: int,
+    seed: int,
+    out_dir: Path,
+    runtime: Runtime | None = None,
 ) -> StudyRecord:
-    """Simulate the :func:`extension_design` samples of both objectives (``setup``) beyond the
-    Monte Carlo's ``lhs_samples``. Writes ``surrogate_samples.csv`` (the same columns as
-    ``monte_carlo.csv``, possibly no rows) and ``surrogate_samples.json``."""
+    """Simulate the :func:`extension_design` samples of both objectives (``setup``, on
+    ``runtime``) beyond the Monte Carlo's ``lhs_samples``. Writes ``surrogate_samples.csv`` (the
+    same columns as ``monte_carlo.csv``, possibly no rows) and ``surrogate_samples.json``."""
     x = extension_design(n_total, lhs_samples, seed)
-    y = setup.evaluator()(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
+    y = setup.evaluator(runtime)(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
     failed = {o.label: int(np.isnan(y[:, j]).sum()) for j, o in enumerate(OBJECTIVES)}
     settings = {
         "loco_version": loco.__version__,

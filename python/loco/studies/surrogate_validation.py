@@ -12,16 +12,18 @@ from __future__ import annotations
 
 import json
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
 
 import loco
-from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray
+from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray, load_monte_carlo
 from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
+from loco.studies.stages import DataFile, Runtime, Stage, encode
 from loco.studies.surrogate import parity_plot
 from loco.studies.surrogate_selection import (
     CANDIDATES,
@@ -34,7 +36,14 @@ from loco.studies.surrogate_selection import (
     selection_settings,
 )
 
-__all__ = ["select_surrogates", "spec_scores", "surrogate_label", "validate_surrogate"]
+__all__ = [
+    "SurrogateStage",
+    "Training",
+    "select_surrogates",
+    "spec_scores",
+    "surrogate_label",
+    "validate_surrogate",
+]
 
 
 def select_surrogates(
@@ -86,6 +95,70 @@ def spec_scores(
 def surrogate_label(selections: Sequence[Selection]) -> str:
     """Which surrogate each objective uses, e.g. ``W_y: gp, A_yb: gp``."""
     return ", ".join(f"{o.label}: {s.chosen}" for o, s in zip(OBJECTIVES, selections, strict=True))
+
+
+#: The training set of the last :meth:`Training.fitted` (by its hash), shared by the surrogate,
+#: Sobol' and NSGA-II stages of one run: the selection fits every candidate on every fold.
+_FITTED: dict[str, tuple[FloatArray, FloatArray, list[Selection]]] = {}
+
+
+@dataclass(frozen=True)
+class Training:
+    """The surrogates' training: the sample ``tables`` (``monte_carlo.csv`` and the extension's,
+    by content), chosen by ``kfold``-fold held-out R² among ``candidates`` (``seed``: the folds
+    and the networks' K-means), learning log(objective) when ``log_target``."""
+
+    tables: tuple[DataFile, ...]
+    kfold: int
+    seed: int = 0
+    log_target: bool = LOG_TARGET
+    candidates: tuple[str, ...] = CANDIDATES
+
+    def fitted(self) -> tuple[FloatArray, FloatArray, list[Selection]]:
+        """The samples (x SI, y objectives) of the tables, stacked, and the surrogates chosen and
+        fitted on them (:func:`select_surrogates`); computed once for the same training."""
+        key = json.dumps(encode(self), sort_keys=True)
+        if key not in _FITTED:
+            parts = [load_monte_carlo(t.path) for t in self.tables]
+            x = np.vstack([p[0] for p in parts])
+            y = np.vstack([p[1] for p in parts])
+            chosen = select_surrogates(
+                x,
+                y,
+                n_splits=self.kfold,
+                seed=self.seed,
+                log_target=self.log_target,
+                candidates=self.candidates,
+            )
+            _FITTED.clear()
+            _FITTED[key] = (x, y, chosen)
+        return _FITTED[key]
+
+
+@dataclass(frozen=True)
+class SurrogateStage(Stage):
+    """The stage ``surrogate`` of ``loco reproduce``: :func:`validate_surrogate` of the
+    ``training``, the SPEC network also scored on the first ``spec_samples`` (the Monte
+    Carlo's)."""
+
+    name: ClassVar[str] = "surrogate"
+    training: Training
+    spec_samples: int
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`validate_surrogate` into ``out_dir`` (no simulation)."""
+        t = self.training
+        x, y, chosen = t.fitted()
+        return validate_surrogate(
+            x,
+            y,
+            out_dir,
+            n_splits=t.kfold,
+            seed=t.seed,
+            log_target=t.log_target,
+            selections=chosen,
+            spec_samples=self.spec_samples,
+        )
 
 
 def validate_surrogate(
