@@ -149,6 +149,16 @@ struct Piece {
     /// Heading Ψ (rad) and ∫Ψ ds (m) at the start.
     heading: f64,
     heading_integral: f64,
+    /// Roll (rad) and cos² of the roll of a piece whose cant does not change (`cant_slope` is
+    /// +0), worked out once: the track frames read the design at every body twice per step.
+    fixed_roll: Option<(f64, f64)>,
+}
+
+/// Roll θ = atan(c / 2b) (rad) of a cant `cant` (m) over the contact half distance
+/// `half_distance` b (m), and cos² θ.
+fn roll_of(cant: f64, half_distance: f64) -> (f64, f64) {
+    let slope = cant / (2.0 * half_distance);
+    (slope.atan(), 1.0 / (1.0 + slope * slope))
 }
 
 /// The track's designed alignment and cant at one distance.
@@ -267,6 +277,7 @@ impl TrackDesign {
                         run_off: (s + margin, s + margin + run),
                         heading,
                         heading_integral,
+                        fixed_roll: None,
                     }
                 }
                 _ => {
@@ -280,9 +291,16 @@ impl TrackDesign {
                         run_off: (s, s + length),
                         heading,
                         heading_integral,
+                        fixed_roll: None,
                     }
                 }
             };
+            // With a cant gradient of +0, `cant + cant_slope·along` is `cant + 0` at any
+            // (finite, non-negative) `along`: the same bits as evaluating it in `at`.
+            let mut piece = piece;
+            if piece.cant_slope.to_bits() == 0 {
+                piece.fixed_roll = Some(roll_of(piece.cant + 0.0, half_distance));
+            }
             let (h, hi) = piece.heading_at(length);
             heading = h;
             heading_integral = hi;
@@ -334,11 +352,11 @@ impl TrackDesign {
         let heading_integral = integral0 + heading0 * extra + 0.5 * kappa_end * extra * extra;
         let (c0, c1) = p.run_off;
         let along = (p.start + sigma).clamp(c0, c1) - c0;
-        let cant = p.cant + p.cant_slope * along;
         let in_run_off = gradients && (c0..c1).contains(&s);
-        let slope = cant / (2.0 * self.half_distance);
-        let roll = slope.atan();
-        let cos2 = 1.0 / (1.0 + slope * slope);
+        let (roll, cos2) = match p.fixed_roll {
+            Some(fixed) => fixed,
+            None => roll_of(p.cant + p.cant_slope * along, self.half_distance),
+        };
         DesignPoint {
             curvature: kappa_end,
             curvature_rate: if gradients { p.kappa_slope } else { 0.0 },
