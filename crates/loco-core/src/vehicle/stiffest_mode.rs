@@ -129,7 +129,7 @@ pub fn largest_modulus(a: &DMatrix<f64>) -> f64 {
         let beta = w.norm();
         h[(j + 1, j)] = beta;
         let m = j + 1;
-        let invariant = !(beta > 1e-14 * scale);
+        let invariant = beta.is_nan() || beta <= 1e-14 * scale;
         if invariant || m == n || m % CHECK_EVERY == 0 {
             let ritz = ritz_largest(&h, m);
             let converged = (ritz - last).abs() <= RITZ_TOLERANCE * ritz;
