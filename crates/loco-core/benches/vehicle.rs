@@ -1,8 +1,9 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
 //! creep model), with FaStrip and with the FASTSIM table, the same FASTSIM run on a curved track
 //! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m
-//! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), and one
-//! evaluation of its right-hand side.
+//! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), the same
+//! on a curve of the curving study (R = 3000 m, 60 mm cant), and one evaluation of its right-hand
+//! side.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::track::{CurveDirection, DesignSection};
@@ -86,6 +87,26 @@ fn bench_vehicle(c: &mut Criterion) {
                 curved_contact.clone(),
                 curved_track.clone(),
                 black_box(&curved),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    // A curve like the curving study's (R = 3000 m, 60 mm cant: about 97 mm of deficiency at
+    // 200 km/h, one contact patch per wheel as on straight track).
+    let study_curve = Scenario {
+        curve: DesignSection::study_curve(CurveDirection::Left),
+        ..scenario.clone()
+    };
+    let study_contact = Arc::new(build_wheel_rail(&structure.parameters, &study_curve).unwrap());
+    let study_track = Arc::new(build_track(&study_curve, &structure).unwrap());
+    group.bench_function("run_500m_200kmh_study_curve", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                study_contact.clone(),
+                study_track.clone(),
+                black_box(&study_curve),
                 None,
             )
             .unwrap()

@@ -3,9 +3,11 @@
 //! the change kept the results bit for bit. Also the program callgrind counts instructions of.
 //!
 //! `cargo run --release -p loco-core --example run_fingerprint -- [fastsim|fastrip|table]
-//! [S_high|S_low] [prepare|curve]` (`prepare`: build contact and track only, to subtract set-up
-//! cost; `curve`: the same run on the design of `scripts/curve_cost.py`, a 60 m transition into
-//! R = 1200 m with 100 mm cant, to count what the curve terms cost against the straight run).
+//! [S_high|S_low] [prepare|curve|study_curve]` (`prepare`: build contact and track only, to
+//! subtract set-up cost; `curve`: the same run on the design of `scripts/curve_cost.py`, a 60 m
+//! transition into R = 1200 m with 100 mm cant, about 290 mm of cant deficiency at 200 km/h, to
+//! count what the curve terms cost against the straight run; `study_curve`: R = 3000 m with
+//! 60 mm cant, about 97 mm of deficiency, a case of the curving study).
 //!
 //! `fingerprint` hashes the channels recorded before the curving channels were added (so the
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
@@ -43,8 +45,10 @@ fn main() {
         creep,
         ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
     };
-    if args.get(3).is_some_and(|a| a == "curve") {
-        scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left);
+    match args.get(3).map(String::as_str) {
+        Some("curve") => scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
+        Some("study_curve") => scenario.curve = DesignSection::study_curve(CurveDirection::Left),
+        _ => {}
     }
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());

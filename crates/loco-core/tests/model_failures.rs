@@ -7,7 +7,9 @@ use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
 };
 use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings, RK4_IMAGINARY_LIMIT};
+use loco_core::vehicle::statics::{
+    static_equilibrium, stiffest_mode, StaticsSettings, RK4_IMAGINARY_LIMIT,
+};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
 use std::sync::Arc;
@@ -34,7 +36,8 @@ fn stiffest(set: ParameterSet) -> (f64, String) {
     let start = start_distance(&structure);
     let mut sys = VehicleSystem::new(structure, wr, track, s.speed, start, None, 1e-3).unwrap();
     let eq = static_equilibrium(&mut sys, &StaticsSettings::default()).unwrap();
-    (eq.stiffest.omega, eq.stiffest.coordinate)
+    let mode = stiffest_mode(&sys, &eq);
+    (mode.omega, mode.coordinate)
 }
 
 #[test]

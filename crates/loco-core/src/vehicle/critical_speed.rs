@@ -172,7 +172,7 @@ pub fn nonlinear_critical_speed(
     // The ramp starts when the hunting has settled (below); until then V stays V0.
     system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
     let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
-    check_step(&equilibrium, dt)
+    check_step(&system, &equilibrium, dt)
         .map_err(|e| super::suspects::with_suspects(e, &system.structure.parameters))?;
     let mut y = equilibrium.state;
     disturb(&system, &mut y, settings.disturbance);

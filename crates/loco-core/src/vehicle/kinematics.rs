@@ -21,6 +21,10 @@ pub struct MotionMap {
     /// (a free body): the map is then a copy, taken without walking the rows (same values, as
     /// `1·q` is `q`).
     free: Option<usize>,
+    /// The rows one after the other, and where each ends in it: the time loop walks one slice
+    /// instead of six vectors (same terms in the same order, so the same sums).
+    flat: Vec<(usize, f64)>,
+    ends: [usize; 6],
 }
 
 /// A dense 6×N_DOF map used while building (compressed to [`MotionMap`] afterwards).
@@ -99,7 +103,26 @@ impl MotionMap {
                 .enumerate()
                 .all(|(k, row)| row.as_slice() == [(first + k, 1.0)])
         });
-        Self { rows, free }
+        let flat: Vec<(usize, f64)> = rows.iter().flatten().copied().collect();
+        let mut ends = [0; 6];
+        let mut end = 0;
+        for (e, row) in ends.iter_mut().zip(&rows) {
+            end += row.len();
+            *e = end;
+        }
+        Self {
+            rows,
+            free,
+            flat,
+            ends,
+        }
+    }
+
+    /// Row `k`'s (coordinate index, coefficient) pairs in [`Self::flat`].
+    #[inline]
+    fn row(&self, k: usize) -> &[(usize, f64)] {
+        let start = if k == 0 { 0 } else { self.ends[k - 1] };
+        &self.flat[start..self.ends[k]]
     }
 
     /// Rows for x, y, z (m) and roll, pitch, yaw (rad): (coordinate index, coefficient).
@@ -114,10 +137,33 @@ impl MotionMap {
             return [q[f], q[f + 1], q[f + 2], q[f + 3], q[f + 4], q[f + 5]];
         }
         let mut u = [0.0; 6];
-        for (k, row) in self.rows.iter().enumerate() {
-            u[k] = row.iter().map(|&(j, c)| c * q[j]).sum();
+        for (k, u) in u.iter_mut().enumerate() {
+            *u = self.row(k).iter().map(|&(j, c)| c * q[j]).sum();
         }
         u
+    }
+
+    /// [`Self::apply`] to coordinates `q` and velocities `qd` in one pass over the rows (each
+    /// sum as `Iterator::sum` takes it: from −0, term by term).
+    #[inline]
+    pub fn apply_both(&self, q: &[f64], qd: &[f64]) -> ([f64; 6], [f64; 6]) {
+        if let Some(f) = self.free {
+            return (
+                [q[f], q[f + 1], q[f + 2], q[f + 3], q[f + 4], q[f + 5]],
+                [qd[f], qd[f + 1], qd[f + 2], qd[f + 3], qd[f + 4], qd[f + 5]],
+            );
+        }
+        let (mut u, mut v) = ([0.0; 6], [0.0; 6]);
+        for k in 0..6 {
+            let (mut a, mut b) = (-0.0, -0.0);
+            for &(j, c) in self.row(k) {
+                a += c * q[j];
+                b += c * qd[j];
+            }
+            u[k] = a;
+            v[k] = b;
+        }
+        (u, v)
     }
 
     /// Adds the generalized force `Tᵀ w` of the body wrench `w` (N, N·m) to `gen_force`.
@@ -131,10 +177,10 @@ impl MotionMap {
             }
             return;
         }
-        for (k, row) in self.rows.iter().enumerate() {
-            if wrench[k] != 0.0 {
-                for &(j, c) in row {
-                    gen_force[j] += c * wrench[k];
+        for (k, &w) in wrench.iter().enumerate() {
+            if w != 0.0 {
+                for &(j, c) in self.row(k) {
+                    gen_force[j] += c * w;
                 }
             }
         }
@@ -203,6 +249,33 @@ mod tests {
         let from_child = point_motion(&uc, [0.0, 0.0, 0.0]);
         for k in 0..3 {
             assert!((from_parent[k] - from_child[k]).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn one_pass_over_both_vectors_gives_the_bits_of_two() {
+        let parent = DenseMap::free(6);
+        let child = DenseMap::attached(
+            &parent,
+            [0.3, -0.2, 0.1],
+            [0.1, 0.0, 0.0],
+            [true, false, true],
+            &[(4, 40), (1, 41)],
+        )
+        .compress();
+        for map in [parent.compress(), child] {
+            let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
+            let qd: Vec<f64> = (0..N_DOF).map(|i| -(i as f64 * 0.11).cos()).collect();
+            // Zeros of both signs: an empty row and a sum of zeros keep their sign.
+            let zeros: Vec<f64> = (0..N_DOF)
+                .map(|i| if i % 2 == 0 { 0.0 } else { -0.0 })
+                .collect();
+            for (a, b) in [(&q, &qd), (&zeros, &q)] {
+                let (u, v) = map.apply_both(a, b);
+                let bits = |x: [f64; 6]| x.map(f64::to_bits);
+                assert_eq!(bits(u), bits(map.apply(a)));
+                assert_eq!(bits(v), bits(map.apply(b)));
+            }
         }
     }
 

@@ -23,8 +23,8 @@
 //!   with the only defaults ([`scenario_settings::ScenarioSettings::defaults`]); [`presets`]: the
 //!   study's scenarios and yaw dampers by name;
 //!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
-//! - [`statics`]: the static equilibrium every run starts from (and the explicit step its
-//!   stiffest mode allows); [`suspects`]: the out-of-range parameters a model failure names;
+//! - [`statics`]: the static equilibrium every run starts from; [`stiffest_mode`]: the explicit
+//!   step its stiffest mode allows; [`suspects`]: the out-of-range parameters a model failure names;
 //!   [`run_statistics`]: what a run
 //!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
 //!   scenario must keep (lowest speed, most steps and samples, largest creep grid).
@@ -57,6 +57,7 @@ pub mod scenario_settings;
 pub mod shifted_hessenberg;
 pub mod simulation;
 pub mod statics;
+pub mod stiffest_mode;
 pub mod structure;
 pub mod suspects;
 pub mod suspension;

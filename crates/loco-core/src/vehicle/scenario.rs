@@ -359,7 +359,7 @@ pub fn simulate_prepared(
         )));
     }
     let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
-    check_step(&equilibrium, scenario.run.step)
+    check_step(&system, &equilibrium, scenario.run.step)
         .map_err(|e| with_suspects(e, &system.structure.parameters))?;
     let mut y = equilibrium.state;
     if scenario.initial_lateral_offset != 0.0 {

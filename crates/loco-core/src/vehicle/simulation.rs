@@ -266,12 +266,7 @@ impl VehicleSystem {
             self.damper_forces[i] = force;
         }
         if let Some(curve) = &self.curve {
-            curve.add_frame_forces(
-                speed,
-                &self.frame_work,
-                &self.body_states,
-                &mut self.wrenches,
-            );
+            curve.add_frame_forces(&self.frame_work, &self.body_states, &mut self.wrenches);
         }
         for w in 0..N_WHEELSETS {
             // The wheelset's absolute yaw rate includes its track frame's (rolling on a curve);

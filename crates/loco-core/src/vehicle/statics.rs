@@ -11,9 +11,9 @@
 //! concerned; out-of-range parameters of the vehicle are named as suspects
 //! ([`super::suspects`]).
 //!
-//! The Jacobian at the equilibrium with the mass matrix also gives the vehicle's stiffest mode,
-//! `ω = √|λ|max(M⁻¹ ∂Q/∂q)`: the fixed RK4 step of a run must keep `ω·h` inside RK4's stability
-//! limit on the imaginary axis, 2√2 ([`check_step`]), or the run blows up within steps.
+//! The equilibrium keeps its Jacobian: with the mass matrix it gives the vehicle's stiffest mode
+//! and the RK4 step a run may take ([`super::stiffest_mode`], computed only by the callers that
+//! step in time).
 
 use super::layout::{dof_names, wheelset, N_DOF, N_WHEELSETS, Z};
 use super::simulation::VehicleSystem;
@@ -21,6 +21,8 @@ use super::suspects::with_suspects;
 use super::wheel_rail::ContactMode;
 use crate::error::{check_positive, LocoError, Result};
 use nalgebra::{DMatrix, DVector};
+
+pub use super::stiffest_mode::{check_step, stiffest_mode, StiffestMode, RK4_IMAGINARY_LIMIT};
 
 /// Settings of the static-equilibrium search. [`Default`] gives the values every run uses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -87,43 +89,10 @@ pub struct Equilibrium {
     pub iterations: usize,
     /// Norm of the residual generalized forces at the equilibrium, N (and N·m).
     pub residual: f64,
-    /// The stiffest mode about the equilibrium (with the patches held, no damping).
-    pub stiffest: StiffestMode,
-}
-
-/// The highest undamped natural frequency of the vehicle about its equilibrium and the
-/// coordinate that moves most in it (by kinetic energy).
-#[derive(Debug, Clone, PartialEq)]
-pub struct StiffestMode {
-    /// Angular frequency `√|λ|max(M⁻¹ ∂Q/∂q)`, rad/s.
-    pub omega: f64,
-    /// The coordinate (`body.coordinate`) with the largest share of the mode.
-    pub coordinate: String,
-}
-
-/// RK4's stability limit on the imaginary axis, `|λ h| ≤ 2√2` (Hairer and Wanner, Solving ODEs
-/// II, §IV.2: the stability region of the classical 4-stage method).
-pub const RK4_IMAGINARY_LIMIT: f64 = 2.0 * std::f64::consts::SQRT_2;
-
-/// Checks that a fixed RK4 step `step` (s) is stable for the stiffest mode of `equilibrium`:
-/// an error naming `step`, with the mode's frequency, coordinate and the longest stable step.
-pub fn check_step(equilibrium: &Equilibrium, step: f64) -> Result<()> {
-    let mode = &equilibrium.stiffest;
-    if mode.omega * step <= RK4_IMAGINARY_LIMIT {
-        return Ok(());
-    }
-    Err(LocoError::param(
-        "step",
-        format!(
-            "{step} s is too long for the vehicle's stiffest mode ({:.0} rad/s, {:.0} Hz, mostly \
-             `{}`): RK4 is stable for steps up to 2√2/ω = {:.2e} s; shorten the step or check the \
-             stiffness and inertia parameters of that body",
-            mode.omega,
-            mode.omega / (2.0 * std::f64::consts::PI),
-            mode.coordinate,
-            RK4_IMAGINARY_LIMIT / mode.omega
-        ),
-    ))
+    /// The Jacobian ∂Q/∂q (N/m, N·m/rad; column j is the derivative by coordinate j) of the last
+    /// Newton iteration, with the patches held and no damping: the stiffness the step check
+    /// ([`super::stiffest_mode`]) reads.
+    pub jacobian: DMatrix<f64>,
 }
 
 /// Initial guess of a wheel's static penetration into the rail, m (Hertz, ≈ 100 kN per wheel).
@@ -158,58 +127,6 @@ fn newton_step(jacobian: &DMatrix<f64>, r: &[f64]) -> std::result::Result<Vec<f6
         .solve(&DVector::from_column_slice(r))
         .ok_or_else(|| "the Jacobian is singular".to_string())?;
     Ok(step.as_slice().to_vec())
-}
-
-/// The largest eigenvalue modulus of `a` by power iteration (200 steps from a uniform vector).
-fn power_iteration(a: &DMatrix<f64>) -> f64 {
-    let mut x = DVector::from_element(a.nrows(), 1.0);
-    let mut growth = 0.0;
-    for _ in 0..200 {
-        let next = a * &x;
-        growth = next.norm() / x.norm();
-        if !(growth.is_finite() && growth > 0.0) {
-            break;
-        }
-        x = &next / next.norm();
-    }
-    growth
-}
-
-/// The stiffest mode of `jacobian` (∂Q/∂q, N/m and N·m/rad) with the vehicle's mass matrix.
-fn stiffest_mode(system: &VehicleSystem, jacobian: &DMatrix<f64>) -> Result<StiffestMode> {
-    let mass = DMatrix::from_fn(N_DOF, N_DOF, |i, j| system.structure.mass.get(i, j));
-    let lu = mass.clone().lu();
-    let a = lu.solve(jacobian).ok_or_else(|| {
-        LocoError::input("mass matrix", "singular: a body without mass or inertia")
-    })?;
-    let row_major: Vec<f64> = a.transpose().as_slice().to_vec();
-    let largest = match super::linearise::eigenvalues(&row_major, N_DOF) {
-        Ok(lambdas) => lambdas.into_iter().map(|l| l.norm()).fold(0.0, f64::max),
-        // A QR that does not converge (nearly equal stiff modes of the four quills): the growth
-        // rate of power iteration, which converges to the largest modulus all the same.
-        Err(_) => power_iteration(&a),
-    };
-    // Where the mode is: a few steps of inverse iteration with the shift -|λ| (the stiffest mode
-    // of a restoring Jacobian is real and negative), weighted by the kinetic energy.
-    let shifted = &a - DMatrix::identity(N_DOF, N_DOF) * (-largest * (1.0 + 1e-9));
-    let shifted = shifted.lu();
-    let mut x = DVector::from_element(N_DOF, 1.0);
-    for _ in 0..4 {
-        match shifted.solve(&x) {
-            Some(next) if next.amax().is_finite() && next.amax() > 0.0 => {
-                x = &next / next.amax();
-            }
-            _ => break,
-        }
-    }
-    let share = |i: usize| x[i].abs() * mass[(i, i)].sqrt();
-    let k = (0..N_DOF)
-        .max_by(|&i, &j| share(i).total_cmp(&share(j)))
-        .unwrap_or(0);
-    Ok(StiffestMode {
-        omega: largest.sqrt(),
-        coordinate: dof_names()[k].clone(),
-    })
 }
 
 /// Finds the static equilibrium with `settings`; sets the dampers' static elongations and the
@@ -317,8 +234,7 @@ fn search(system: &mut VehicleSystem, settings: &StaticsSettings) -> Result<Equi
             ),
         });
     }
-    let jac = last_jacobian.unwrap_or_else(|| jacobian(system, &q, &r, h));
-    let stiffest = stiffest_mode(system, &jac)?;
+    let jacobian = last_jacobian.unwrap_or_else(|| jacobian(system, &q, &r, h));
     // Dampers: the equilibrium elongation is their rest length.
     let qd = vec![0.0; N_DOF];
     system
@@ -333,6 +249,6 @@ fn search(system: &mut VehicleSystem, settings: &StaticsSettings) -> Result<Equi
         state: y,
         iterations,
         residual: norm,
-        stiffest,
+        jacobian,
     })
 }

@@ -76,8 +76,7 @@ impl VehicleStructure {
     /// Body motions and velocities from coordinates `q` (m, rad) and velocities `qd`.
     pub fn body_states(&self, q: &[f64], qd: &[f64], out: &mut BodyStates) {
         for (i, body) in self.bodies.iter().enumerate() {
-            out.position[i] = body.map.apply(q);
-            out.velocity[i] = body.map.apply(qd);
+            (out.position[i], out.velocity[i]) = body.map.apply_both(q, qd);
         }
     }
 

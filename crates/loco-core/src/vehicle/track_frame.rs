@@ -92,6 +92,23 @@ struct FrameSlot {
     points: [DesignPoint; N_BODIES],
     /// sin θ and cos θ of each body's track roll.
     roll_sin_cos: [(f64, f64); N_BODIES],
+    /// The frame terms of each body that do not depend on the state.
+    loads: [FrameLoad; N_BODIES],
+}
+
+/// A body's frame terms at one (distance, speed), each formed as `add_frame_forces` used to
+/// form it inside every evaluation (same operations, same bits): gravity in the own frame less
+/// the reference vertical turned into it, the centripetal force (N), the moment of the frame's
+/// yaw acceleration I_z V² dκ/ds (N·m), the frame's yaw and roll rates V κ cos θ and V dθ/ds
+/// (rad/s) and the spin momentum H = spin·V (N·m·s).
+#[derive(Debug, Clone, Copy, Default)]
+struct FrameLoad {
+    gravity: [f64; 3],
+    centripetal: [f64; 2],
+    yaw_acceleration: f64,
+    yaw_rate: f64,
+    roll_rate: f64,
+    spin: f64,
 }
 
 impl Default for FrameSlot {
@@ -101,6 +118,7 @@ impl Default for FrameSlot {
             offset_states: BodyStates::default(),
             points: [DesignPoint::default(); N_BODIES],
             roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            loads: [FrameLoad::default(); N_BODIES],
         }
     }
 }
@@ -117,6 +135,9 @@ pub struct FrameWork {
     /// origin) and sin θ, cos θ of its roll.
     station_points: [DesignPoint; N_BODIES + 1],
     station_roll: [(f64, f64); N_BODIES + 1],
+    /// The bits of the roll each station's sin and cos were last taken of (constant cant keeps
+    /// it, and the same bits give the same sin and cos).
+    station_roll_bits: [Option<u64>; N_BODIES + 1],
 }
 
 impl Default for FrameWork {
@@ -127,6 +148,7 @@ impl Default for FrameWork {
             active: 0,
             station_points: [DesignPoint::default(); N_BODIES + 1],
             station_roll: [(0.0, 1.0); N_BODIES + 1],
+            station_roll_bits: [None; N_BODIES + 1],
         }
     }
 }
@@ -238,11 +260,11 @@ impl CurvedTrack {
                 &offset_states.velocity,
             ),
         ];
+        // Over the flattened 25×6 arrays the compiler takes the sums four at a time.
         for (sum, own, offset) in pairs {
-            for ((s, a), b) in sum.iter_mut().zip(own).zip(offset) {
-                for k in 0..6 {
-                    s[k] = a[k] + b[k];
-                }
+            let (own, offset) = (own.as_flattened(), offset.as_flattened());
+            for ((s, a), b) in sum.as_flattened_mut().iter_mut().zip(own).zip(offset) {
+                *s = a + b;
             }
         }
     }
@@ -251,9 +273,13 @@ impl CurvedTrack {
     /// each body's frame offset from the reference frame.
     fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
         let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
-        for ((point, roll), x) in stations.zip(&self.stations) {
+        let stations = stations.zip(&mut work.station_roll_bits);
+        for (((point, roll), bits), x) in stations.zip(&self.stations) {
             *point = self.design.at(s_r + x);
-            *roll = point.roll.sin_cos();
+            if *bits != Some(point.roll.to_bits()) {
+                *roll = point.roll.sin_cos();
+                *bits = Some(point.roll.to_bits());
+            }
         }
         let slot = &mut work.slots[work.active];
         for (i, &k) in self.station_of.iter().enumerate() {
@@ -312,6 +338,24 @@ impl CurvedTrack {
                 states[body] = [t[0], t[1], t[2], u[3], u[4], u[5]];
             }
         }
+        let v2 = speed * speed;
+        let g = self.gravity;
+        for (i, body) in self.bodies.iter().enumerate() {
+            let o = &slot.offset_states.position[i];
+            let rot = [o[3], o[4], o[5]];
+            let p = &slot.points[i];
+            let (s, c) = slot.roll_sin_cos[i];
+            let a = v2 * p.curvature;
+            let mg = body.mass * g;
+            slot.loads[i] = FrameLoad {
+                gravity: [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c],
+                centripetal: [-body.mass * a * c, body.mass * a * s],
+                yaw_acceleration: body.yaw_inertia * v2 * p.curvature_rate,
+                yaw_rate: speed * p.curvature * c,
+                roll_rate: speed * p.roll_rate,
+                spin: body.spin * speed,
+            };
+        }
     }
 
     /// Turns the wrenches formed in the reference frame (gravity, structure, dampers) into each
@@ -320,13 +364,10 @@ impl CurvedTrack {
     /// the body states relative to their own frames.
     pub fn add_frame_forces(
         &self,
-        speed: f64,
         work: &FrameWork,
         relative: &BodyStates,
         wrenches: &mut Wrenches,
     ) {
-        let v2 = speed * speed;
-        let g = self.gravity;
         let slot = work.slot();
         for (i, body) in self.bodies.iter().enumerate() {
             let o = &slot.offset_states.position[i];
@@ -336,27 +377,21 @@ impl CurvedTrack {
             let m = [w[3], w[4], w[5]];
             let f = sub(f, cross(rot, f));
             let m = sub(m, cross(rot, m));
-            let p = &slot.points[i];
-            let (s, c) = slot.roll_sin_cos[i];
-            let a = v2 * p.curvature;
-            let mg = body.mass * g;
-            // Gravity in the own frame less the reference frame's vertical turned into it.
-            let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];
-            let centripetal = [0.0, -body.mass * a * c, body.mass * a * s];
-            w[0] = f[0] + gravity[0];
-            w[1] = f[1] + gravity[1] + centripetal[1];
-            w[2] = f[2] + gravity[2] + centripetal[2];
+            let load = &slot.loads[i];
+            w[0] = f[0] + load.gravity[0];
+            w[1] = f[1] + load.gravity[1] + load.centripetal[0];
+            w[2] = f[2] + load.gravity[2] + load.centripetal[1];
             w[3] = m[0];
             w[4] = m[1];
-            w[5] = m[2] - body.yaw_inertia * v2 * p.curvature_rate;
+            w[5] = m[2] - load.yaw_acceleration;
             if body.spin != 0.0 {
                 // The structure's gyroscopic moments used the reference-frame rates; the
                 // absolute ones add the own frame's yaw and roll rates.
-                let h = body.spin * speed;
+                let h = load.spin;
                 let common = &work.states.velocity[i];
                 let own = &relative.velocity[i];
-                let yaw = own[YAW] + speed * p.curvature * c;
-                let roll = own[3] + speed * p.roll_rate;
+                let yaw = own[YAW] + load.yaw_rate;
+                let roll = own[3] + load.roll_rate;
                 w[3] += h * (yaw - common[YAW]);
                 w[5] -= h * (roll - common[3]);
             }
