@@ -9,7 +9,8 @@ k = 15 kN/mm and m = 15 kg: the linearisation keeps the valve's scale factor at 
 (checked: the open FSD gives the critical speed of a 200 kN·s/m, 15 kN/mm Maxwell element,
 240.6 km/h at conicity 0.3, to the bisection tolerance). Nonlinear critical speeds at the three
 scenarios are optional (``--nonlinear``: a speed ramp-down from 300 km/h after the core's default
-disturbance, about a minute; ``inf`` when the vehicle does not hunt at 300 km/h).
+disturbance, about a minute; ``inf`` when the vehicle does not hunt at 300 km/h); they add the FSD
+with its working valve, both triggers (:data:`WORKING_VALVE`), whose valve moves in the ramp.
 
 Writes ``stability_map.png``, ``stability_map.csv`` (conicity sweep), ``stability_map_wheels.csv``
 (built-in pairs) and ``stability_map.json`` (loco version and settings) into ``--out``.
@@ -21,6 +22,7 @@ from __future__ import annotations
 import argparse
 import json
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -50,6 +52,12 @@ FIXED_VALVE: dict[str, dampers.Damper] = {
     "FSD closed (c2)": dampers.maxwell(
         float(_FSD["high_damping"] or 0.0), float(_FSD["equivalent_stiffness"] or 0.0)
     ),
+}
+#: The FSD with its valve working (nonlinear only: its linear critical speed is the closed
+#: valve's, the linearisation holding the valve in its start state), by trigger.
+WORKING_VALVE: dict[str, dampers.Damper] = {
+    "FSD (rms-frequency valve)": dampers.FSD,
+    "FSD-H (hydraulic valve)": dampers.FSD_HYDRAULIC,
 }
 #: Study scenarios and their wheel/rail pairs (``vehicle/scenario.rs``).
 PAIRS = {"S_low": "jm3-thin-flange", "S_norm": "jm3-new", "S_high": "jm3-worn"}
@@ -93,21 +101,39 @@ def main() -> int:
             )
             print(f"{name:>16} conicity {c:.3f}: {v * 3.6:.0f} km/h {error[:60]}", flush=True)
     sweep = pd.DataFrame(rows)
-    wheel_rows = []
-    for pair, wheel in PAIRS.items():
-        tan_g = equivalent_conicity(wheel, "cn60")
-        for name, law in LAWS.items():
-            row = {"scenario": pair, "wheel": wheel, "conicity": tan_g, "damper": name}
-            row["linear_kmh"] = loco.critical_speed(vehicle, scenario(law, pair), high=HIGH) * 3.6
-            if args.nonlinear:
-                fixed = FIXED_VALVE.get(name, law)
-                s = loco.Scenario(scenario=pair, speed=RAMP_START, distance=100.0, yaw_damper=fixed)
-                try:
-                    row["nonlinear_kmh"] = loco.critical_speed(vehicle, s, method="nonlinear") * 3.6
-                except loco.SimulationError as e:
-                    row["nonlinear_kmh"], row["nonlinear_error"] = float("nan"), str(e)
-            wheel_rows.append(row)
-            print(f"{pair} ({tan_g:.3f}) {name}: {row}", flush=True)
+    wheel_laws = {**LAWS, **(WORKING_VALVE if args.nonlinear else {})}
+    jobs = [(pair, wheel, name) for pair, wheel in PAIRS.items() for name in wheel_laws]
+    conicity = {pair: equivalent_conicity(wheel, "cn60") for pair, wheel in PAIRS.items()}
+
+    def wheel_row(job: tuple[str, str, str]) -> dict[str, object]:
+        pair, wheel, name = job
+        law = wheel_laws[name]
+        row: dict[str, object] = {
+            "scenario": pair,
+            "wheel": wheel,
+            "conicity": conicity[pair],
+            "damper": name,
+        }
+        row["linear_kmh"] = loco.critical_speed(vehicle, scenario(law, pair), high=HIGH) * 3.6
+        if args.nonlinear:
+            fixed = FIXED_VALVE.get(name, law)
+            s = loco.Scenario(scenario=pair, speed=RAMP_START, distance=100.0, yaw_damper=fixed)
+            try:
+                ramp = loco.stability.ramp_down(vehicle, s)
+                row["nonlinear_kmh"] = ramp.critical_speed * 3.6
+                row["nonlinear_outcome"] = ramp.outcome
+                # The hunting amplitude in the last window at the start speed (the settled limit
+                # cycle, or what is left of the disturbance when it died out), m → mm.
+                held = np.asarray(ramp.amplitude)[np.asarray(ramp.speed) >= RAMP_START - 1e-9]
+                row["start_amplitude_mm"] = float(held[-1]) * 1e3 if len(held) else float("nan")
+            except loco.SimulationError as e:
+                row["nonlinear_kmh"], row["nonlinear_error"] = float("nan"), str(e)
+        print(f"{pair} ({conicity[pair]:.3f}) {name}: {row}", flush=True)
+        return row
+
+    # The rows on two threads (the core releases the GIL); the numbers do not depend on it.
+    with ThreadPoolExecutor(2) as pool:
+        wheel_rows = list(pool.map(wheel_row, jobs))
     wheels = pd.DataFrame(wheel_rows)
     args.out.mkdir(parents=True, exist_ok=True)
     sweep.to_csv(args.out / "stability_map.csv", index=False)
@@ -135,6 +161,17 @@ def main() -> int:
                 color=f"C{i}",
                 label="nonlinear (ramp-down), all dampers" if i == 0 else None,
             )
+    for k, name in enumerate(WORKING_VALVE):
+        w = wheels[wheels["damper"] == name]
+        if len(w):
+            ax.plot(
+                w["conicity"] * 1.08,
+                w["nonlinear_kmh"].clip(upper=cap),
+                "P*"[k % 2],
+                ms=9,
+                color=f"C{len(LAWS) + k}",
+                label=f"{name}, nonlinear",
+            )
     for pair, g in wheels.groupby("scenario"):
         ax.annotate(str(pair), (g["conicity"].iloc[0], cap * 1.02), fontsize=8, ha="center")
     failed = sweep[sweep["error"] != ""]["conicity"]
@@ -160,7 +197,7 @@ def main() -> int:
         "loco_version": loco.__version__,
         "conicities": conicities.tolist(),
         "high_mps": HIGH,
-        "dampers": {n: dampers.describe(d) for n, d in LAWS.items()},
+        "dampers": {n: dampers.describe(d) for n, d in wheel_laws.items()},
         "seconds": time.perf_counter() - start,
     }
     (args.out / "stability_map.json").write_text(json.dumps(settings, indent=2))

@@ -89,6 +89,24 @@ def test_nsga2_plumbing_on_a_tiny_case(monkeypatch: pytest.MonkeyPatch) -> None:
     assert set(result.picks.values()) <= set(range(len(result.front)))
 
 
+def test_sweep_cases_run_in_parallel_keep_their_numbers() -> None:
+    """The sweep runs its cases side by side: the numbers are those of each case run on its own
+    (track 0: a single run of the seed), the same for one thread or two."""
+    laws = {"YD1": dampers.YD1, "FSD-H": dampers.FSD_HYDRAULIC}
+    args = {"speed_kmh": 200.0, "distance": 300.0, "lead_in": 0.0, "seed": 5, "n_tracks": 2}
+    sweep = fsd_conicity.run_conicity_sweep(laws, [0.3], threads=2, **args)
+    assert len(sweep) == 4 and (sweep["status"] == 0).all()
+    serial = fsd_conicity.run_conicity_sweep(laws, [0.3], threads=1, **args)
+    pd.testing.assert_frame_equal(sweep, serial)
+    s = loco.Scenario(
+        scenario="S_norm", speed=200 / 3.6, distance=300.0, lead_in=0.0, seed=5, yaw_damper="YD1"
+    ).replace(scenario=None, wheel=fsd_conicity.conicity_wheel(0.3), rail="cn60")
+    alone = loco.simulate(loco.Locomotive.default(), s)
+    first = sweep[(sweep["damper"] == "YD1") & (sweep["track"] == 0)].iloc[0]
+    assert first["ayb_peak_lp"] == alone.metrics["ayb_peak_lp"]
+    assert first["wy_max"] == alone.metrics["wy_max"]
+
+
 @pytest.mark.parametrize("target", [0.02, 0.05, 0.1, 0.25, 0.3, 0.45, fsd_conicity.MAX_CONICITY])
 def test_sweep_wheels_have_the_requested_conicity(target: float) -> None:
     wheel = fsd_conicity.conicity_wheel(target)

@@ -37,7 +37,8 @@ import loco
 from loco import dampers, profiles
 from loco.conicity import equivalent_conicity
 from loco.studies.fsd_comparison import JUDGED_BY, LEAD_IN
-from loco.studies.seeds import run_over_tracks
+from loco.studies.fsd_design import parallel_map
+from loco.studies.seeds import TrackRuns, run_over_tracks
 
 __all__ = [
     "MAX_CONE",
@@ -155,27 +156,33 @@ def run_conicity_sweep(
     one row per (damper, requested conicity, track) with the measured EN 15302 conicity of the
     wheel, W_y, A_yb, the run status and its message."""
     wheels = {float(c): conicity_wheel(c) for c in conicities}
+    measured = {c: equivalent_conicity(w, RAIL, AMPLITUDE) for c, w in wheels.items()}
+    jobs = [(c, name) for c in wheels for name in laws]
+
+    def one(job: tuple[float, str]) -> TrackRuns:
+        c, name = job
+        scenario = loco.Scenario(
+            scenario="S_norm",
+            speed=speed_kmh / 3.6,
+            distance=distance,
+            lead_in=lead_in,
+            seed=seed,
+            yaw_damper=laws[name],
+        ).replace(scenario=None, wheel=wheels[c], rail=RAIL)
+        return run_over_tracks(scenario, n_tracks, threads=1, progress=False)
+
+    # One case per worker, its tracks in turn: a case's few tracks would leave cores idle, and
+    # each case builds its own contact table. The numbers do not depend on the split.
     rows = []
-    for c, wheel in wheels.items():
-        measured = equivalent_conicity(wheel, RAIL, AMPLITUDE)
-        for name, law in laws.items():
-            scenario = loco.Scenario(
-                scenario="S_norm",
-                speed=speed_kmh / 3.6,
-                distance=distance,
-                lead_in=lead_in,
-                seed=seed,
-                yaw_damper=law,
-            ).replace(scenario=None, wheel=wheel, rail=RAIL)
-            runs = run_over_tracks(scenario, n_tracks, threads=threads, progress=False)
-            for i in range(runs.n_tracks):
-                row: dict[str, Any] = {"damper": name, "conicity": c, "measured_conicity": measured}
-                row["track"] = i
-                for metric in METRICS:
-                    row[metric] = float(runs.values(metric)[i])
-                row["status"] = int(runs.status[i])
-                row["message"] = runs.messages[i]
-                rows.append(row)
+    for (c, name), runs in zip(jobs, parallel_map(one, jobs, threads), strict=True):
+        for i in range(runs.n_tracks):
+            row: dict[str, Any] = {"damper": name, "conicity": c, "measured_conicity": measured[c]}
+            row["track"] = i
+            for metric in METRICS:
+                row[metric] = float(runs.values(metric)[i])
+            row["status"] = int(runs.status[i])
+            row["message"] = runs.messages[i]
+            rows.append(row)
     return pd.DataFrame(rows)
 
 

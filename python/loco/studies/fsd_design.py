@@ -199,12 +199,13 @@ def constraint(frame: pd.DataFrame, setup: DesignSetup) -> FloatArray:
 class FsdDesignResult:
     """The study: every evaluated design (``population``, with its generation), the final
     non-dominated feasible designs (``front``, sorted by W_y), the ``picks`` (label → front row)
-    and the run time (s)."""
+    and the run time (s), in total and per generation."""
 
     population: pd.DataFrame
     front: pd.DataFrame
     picks: dict[str, int]
     seconds: float
+    generation_seconds: tuple[float, ...] = ()
 
     def picked_dampers(self) -> dict[str, dampers.Damper]:
         """The picked designs as yaw damper laws, by label."""
@@ -245,6 +246,7 @@ def run_design_study(
 
     start = time.perf_counter()
     evaluated: list[pd.DataFrame] = []
+    timings: list[float] = []
 
     class Design(Problem):
         def __init__(self) -> None:
@@ -254,7 +256,9 @@ def run_design_study(
             )
 
         def _evaluate(self, x: FloatArray, out: dict[str, Any], *a: Any, **k: Any) -> None:
+            began = time.perf_counter()
             frame = evaluate_designs(x, setup)
+            timings.append(time.perf_counter() - began)
             frame.insert(0, "generation", len(evaluated))
             evaluated.append(frame)
             # A failed run or an underivable valve is a bad design, not a missing one.
@@ -269,6 +273,7 @@ def run_design_study(
         front=front,
         picks=pick_designs(front),
         seconds=time.perf_counter() - start,
+        generation_seconds=tuple(timings),
     )
 
 

@@ -3,10 +3,10 @@
 conicity sweep (:mod:`loco.studies.fsd_conicity`), their linear critical speeds on the three
 scenarios, one figure.
 
-Sizes per preset (:data:`SIZES`): ``full`` is population 16 × 8 generations (128 designs, each
-two 1 000 m runs and one linear critical speed) and 7 conicities × 3 tracks for 6 dampers, about
-10 minutes on 2 idle cores (README, "FSD design study"); ``quick`` a small version, ``tiny`` the
-test's (300 m, no lead-in).
+Sizes per preset (:data:`SIZES`): ``full`` is population 16 × 6 generations (96 designs, each
+two 1 000 m runs and one linear critical speed) and 7 conicities × 3 tracks for up to 6 dampers
+(README, "FSD design study", for its measured time); ``quick`` a small version, ``tiny`` the
+test's (300 m, no lead-in). The stage's JSON records the time of each part and its run counts.
 """
 
 from __future__ import annotations
@@ -131,7 +131,7 @@ def run_fsd_design(
     generation), ``fsd_design_front.csv``, ``fsd_design_conicity.csv`` (every run of the sweep)
     and ``..._summary.csv``, ``fsd_design_critical_speeds.csv``, ``fsd_design.png``,
     ``fsd_design.json``."""
-    start = time.perf_counter()
+    marks = [_clock()]
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     setup = fsd_design.DesignSetup(
@@ -144,7 +144,7 @@ def run_fsd_design(
     study = fsd_design.run_design_study(
         setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed
     )
-    optimisation_seconds = time.perf_counter() - start
+    marks.append(_clock())
     laws = {**REFERENCES, **study.picked_dampers()}
     sweep = fsd_conicity.run_conicity_sweep(
         laws,
@@ -157,20 +157,32 @@ def run_fsd_design(
         threads=threads,
     )
     summary = fsd_conicity.sweep_summary(sweep)
+    marks.append(_clock())
     critical = linear_critical_speeds(laws, sizes.critical_scenarios, speed_kmh, threads)
+    marks.append(_clock())
     picks = {
         label: {k: float(study.front[k].iloc[i]) for k in [*fsd_design.VARIABLES, "W_y", "A_yb"]}
         for label, i in study.picks.items()
     }
-    seconds = time.perf_counter() - start
+    parts = ("optimisation", "sweep", "critical_speeds")
+    wall, cpu = (
+        {part: marks[i + 1][k] - marks[i][k] for i, part in enumerate(parts)} for k in (0, 1)
+    )
+    seconds = marks[-1][0] - marks[0][0]
     settings = {
         **design_settings(sizes, speed_kmh=speed_kmh, seed=seed),
         "loco_version": loco.__version__,
         "picked_designs": picks,
         "designs_evaluated": len(study.population),
         "feasible_designs": int(study.population["feasible"].sum()),
-        "optimisation_seconds": optimisation_seconds,
+        "optimisation_seconds": wall["optimisation"],
         "seconds": seconds,
+        "part_seconds": wall,
+        "generation_seconds": list(study.generation_seconds),
+        # CPU time of all the process's threads, s: what the parts cost whatever the machine's
+        # load (the wall time on a shared machine is not).
+        "part_cpu_seconds": cpu,
+        "runs": run_counts(study, sweep, critical),
     }
     figure = plot_design(study, summary, out / "fsd_design.png", sizes, speed_kmh)
     tables = [
@@ -188,8 +200,28 @@ def run_fsd_design(
         tables=tables,
         parameters={k: v for k, v in settings.items() if k != "references"},
         seconds=seconds,
-        notes=_notes(study, summary, critical, optimisation_seconds, speed_kmh),
+        notes=_notes(study, summary, critical, wall["optimisation"], speed_kmh),
     )
+
+
+def _clock() -> tuple[float, float]:
+    """(wall, CPU of every thread of the process) time, s."""
+    return time.perf_counter(), time.process_time()
+
+
+def run_counts(
+    study: fsd_design.FsdDesignResult, sweep: pd.DataFrame, critical: pd.DataFrame
+) -> dict[str, int]:
+    """How many simulations and linear critical speeds each part of the stage computed: two runs
+    and one critical speed per design whose valve could be derived, one run per sweep row, one
+    critical speed per damper and scenario."""
+    derived = int((study.population["error"] == "").sum())
+    return {
+        "design_runs": 2 * derived,
+        "design_critical_speeds": derived,
+        "sweep_runs": len(sweep),
+        "critical_speeds": len(critical),
+    }
 
 
 def _notes(
