@@ -67,7 +67,8 @@ def test_limits_by_hand() -> None:
     assert en14363.sum_y_limit(180e3) == pytest.approx(70e3)
     assert en14363.sum_y_limit(180e3, en14363.ALPHA_FREIGHT) == pytest.approx(59.5e3)
     assert en14363.yq_limit(600.0) == 0.8 and en14363.yq_limit(-300.0) == 0.8
-    assert en14363.yq_limit(200.0) == 1.2
+    with pytest.raises(ValueError, match="radius 200 m"):
+        en14363.yq_limit(200.0)
     assert en14363.YQST_LIMIT == 60e3
 
 

@@ -124,7 +124,9 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     // outward (leading wheelsets at -7.8 mm, at the flange root, the sprung masses following)
     // and the spinning parts need a gyroscopic roll moment: with the contacts at their nominal
     // ±l that roll-moment balance accounts for 7.4 kN of the 15.3 kN; the rest is the S_norm
-    // contacts moving across the rail heads (two-point contact on the leading outer wheels).
+    // contacts moving across the rail heads (two-point contact on the leading outer wheels):
+    // with the rails' whole wrench in place of the loads at ±l the balance closes within
+    // 1.4 % (`curving_quasi_static.rs`).
     // `curving_quasi_static.rs` checks that balance on knife-edge rails, where the contacts
     // stay put, and the issue's 1 % where the vehicle runs near the centre line (R = 15 km).
     let (mut left, mut right, mut total_y, mut largest_y) = (0.0, 0.0, 0.0, 0.0f64);
@@ -241,6 +243,77 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
         );
         assert!(rms < 1e-3 * ql[0], "wheel {w} loads: rms {rms:.3e}");
     }
+}
+
+#[test]
+fn a_flanging_leading_wheelset_reads_under_radial_in_either_direction() {
+    // R = 600 m with 150 mm cant at 100 mm deficiency (113 km/h; the curving study's case where
+    // the leading outer wheel flanges), the study's μ = 0.3 and S_norm profiles. The classical
+    // picture of a bogie in a sharp curve (Wickens 2003; Iwnicki 2006): the leading wheelset
+    // runs against the outer rail under-radial, its nose toward the outer rail (positive angle
+    // of attack: the flange leads into the rail), the trailing one over-radial. Measured
+    // against each wheelset's own tangent the two differ by the wheelbase's chord angle 2a/R
+    // for a bogie rigid in yaw, and by less for a real one, whose creep forces yaw the
+    // wheelsets on the primary toward radial (0 for fully radial wheelsets): 0 < ψ2 − ψ1 <
+    // 2a/R. Against a common axis (the bogie frame's or the vehicle origin's tangent) the
+    // difference would be the primary yaw deflections' alone, of the opposite sign. The
+    // channel (+ nose left) reads that picture with the sign of the direction: negative for
+    // the leading wheelset in a left curve, positive in a right one. (Measured: −3.19 /
+    // +0.43 mrad, difference 3.62 mrad of 2a/R = 4.83: the primary deflections take 1.2 mrad.)
+    let (radius, cant, deficiency) = (600.0, 0.15, 0.10);
+    let speed = (G * (cant + deficiency) / (2.0 * B) * radius).sqrt();
+    let a = ParameterSet::default_vehicle()
+        .get("layout.half_wheelbase")
+        .unwrap();
+    let chord = 2.0 * a / radius;
+    let mut leading = Vec::new();
+    for (direction, sign) in [(CurveDirection::Left, 1.0), (CurveDirection::Right, -1.0)] {
+        let sections = vec![
+            DesignSection::Straight { length: 10.0 },
+            DesignSection::Transition {
+                length: 150.0,
+                cant_run_off: None,
+            },
+            DesignSection::Curve {
+                length: 400.0,
+                radius,
+                cant,
+                direction,
+            },
+        ];
+        // The whole vehicle 60 m into the circular curve.
+        let r = run_curve(sections, speed, 235.0);
+        let outer = if sign > 0.0 { "right" } else { "left" };
+        let (lead, trail) = (last(&r, "wheelset1_yaw"), last(&r, "wheelset2_yaw"));
+        let flange = last(&r, &format!("wheel1_{outer}_flange"));
+        println!(
+            "{direction:?}: leading yaw {:+.3} mrad, trailing {:+.3} mrad, difference {:+.3} \
+             (2a/R {:.3}), outer leading wheel flange {flange}",
+            1e3 * lead,
+            1e3 * trail,
+            1e3 * (trail - lead),
+            1e3 * chord
+        );
+        assert_eq!(
+            flange, 1.0,
+            "{direction:?}: the outer leading wheel flanges"
+        );
+        assert!(
+            -sign * lead > 0.0,
+            "{direction:?}: leading wheelset not under-radial"
+        );
+        assert!(
+            sign * trail > 0.0,
+            "{direction:?}: trailing wheelset not over-radial"
+        );
+        let difference = sign * (trail - lead);
+        assert!(
+            difference > 0.0 && difference < chord,
+            "{direction:?}: {difference} against 2a/R {chord}"
+        );
+        leading.push(lead);
+    }
+    assert!((leading[0] + leading[1]).abs() < 1e-3 * leading[0].abs());
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! The names and values of the channels recorded per wheel and per wheelset: the wheel-rail
-//! forces and what a curving assessment (EN 14363 §7.6) reads from them. Each name is formed
+//! forces and what a curving assessment (EN 14363) reads from them. Each name is formed
 //! here only; the run records them ([`super::run`]), Python reads the table
 //! (`loco.wheel_channels()`), the batch binary checks a study's channels against
 //! [`super::run::channel_names`].
@@ -99,7 +99,11 @@ pub enum WheelsetQuantity {
     /// Lateral displacement relative to the track frame, m (`y`).
     Lateral,
     /// Yaw relative to the track frame at the wheelset, rad, + nose left (`yaw`): on a curve, the
-    /// angle of attack (the wheelset's yaw against the track tangent).
+    /// angle of attack (the wheelset's yaw against the track tangent at its own position, not
+    /// at the bogie's or the vehicle's). Its sign follows the axes, not the curve: an
+    /// under-radial wheelset (nose toward the outer rail, as a flanging leading wheelset runs)
+    /// reads negative in a left curve and positive in a right one (tests: `curving.rs`,
+    /// `curving_quasi_static.rs` against Boocock's linear curving solution).
     Yaw,
     /// Track-plane lateral force of the rails on the wheelset ΣY = Y_left + Y_right, N, + left
     /// (`sumY`; the track shifting force is its opposite).
