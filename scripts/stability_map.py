@@ -184,7 +184,7 @@ def main() -> int:
         xscale="log",
         xlabel="equivalent conicity (–)",
         ylabel="linear critical speed (km/h)",
-        title="Cone on knife-edge rail (lines), built-in wheels on CN60 (squares: linear, "
+        title="Cone on knife-edge rail (lines), built-in wheels on CN60 (squares: linear,\n"
         f"crosses: nonlinear ramp-down); triangles: stable up to {HIGH * 3.6:.0f} km/h",
     )
     ax.title.set_fontsize(9)

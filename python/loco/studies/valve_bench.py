@@ -38,8 +38,10 @@ DITHER_RATIOS = (0.0, 0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0)
 #: Duration of a two-tone run and the final part averaged, s.
 DURATION_S = 14.0
 TAIL_S = 8.0
-#: Stroke amplitudes of the opening-band curve, m.
-AMPLITUDES_M = tuple(float(a) for a in np.geomspace(0.3e-3, 8e-3, 24))
+#: Stroke amplitudes of the opening-band curve, m: from below the smallest stroke at which the
+#: reference-sized valve opens at all (about 0.15 mm) through its 0.26 mm reference to hunting
+#: strokes.
+AMPLITUDES_M = tuple(float(a) for a in np.geomspace(0.05e-3, 8e-3, 32))
 
 
 def open_fraction(result: dampers.BenchResult, tail_s: float = TAIL_S) -> float:

@@ -14,8 +14,12 @@ use crate::error::{LocoError, Result};
 /// Largest equivalent conicity accepted (–): a 45° cone, well beyond worn wheels (~0.7).
 pub const MAX_CONICITY: f64 = 1.0;
 
-/// Lateral extent of the cone, m: covers the ±25 mm contact tables with room for the crown.
-const CONE_WIDTH: f64 = 0.14;
+/// Lateral extent of the cone, m, centred on the taping line. The wheelset rolls on the knife
+/// edges by φ = λy/(l − λr0) (Wickens), which moves the contact across the wheel by
+/// y + r0·φ = y·l/(l − λr0): 3.2·y at λ = 0.8 and 7·y at λ = 1 (l = 0.75 m, r0 = 0.625 m),
+/// plus the crown's offset (the contact sits where the crown's slope is λ). A ±15 mm table at
+/// λ = 1 then reaches about 0.14 m from the taping line; ±0.25 m leaves room for wider tables.
+const CONE_WIDTH: f64 = 0.5;
 
 /// The (wheel, rail) pair whose equivalent conicity is `conicity` (–, in (0, 1]).
 pub fn conical_pair(conicity: f64) -> Result<(Profile, Profile)> {
@@ -25,7 +29,7 @@ pub fn conical_pair(conicity: f64) -> Result<(Profile, Profile)> {
             format!("must be in (0, {MAX_CONICITY}], got {conicity}"),
         ));
     }
-    let start = -0.065;
+    let start = -0.5 * CONE_WIDTH;
     let wheel = ProfileBuilder::new(start, start * conicity, conicity.atan())
         .line(CONE_WIDTH * (1.0 + conicity * conicity).sqrt())
         .build(&format!("cone {conicity}"), ProfileKind::Wheel, 5e-4)?;
