@@ -56,6 +56,7 @@ pub mod scenario;
 pub mod scenario_settings;
 pub mod shifted_hessenberg;
 pub mod simulation;
+mod states_cache;
 pub mod statics;
 pub mod stiffest_mode;
 pub mod structure;

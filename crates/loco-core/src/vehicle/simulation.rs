@@ -20,6 +20,7 @@ use super::layout::{
     N_WHEELSETS, X, Y, YAW,
 };
 use super::run_statistics::RunStatistics;
+use super::states_cache::StatesCache;
 use super::structure::VehicleStructure;
 use super::track_frame::{CurvedTrack, FrameWork};
 use super::wheel_rail::{ContactMode, WheelForces, WheelRail};
@@ -142,6 +143,8 @@ pub struct VehicleSystem {
     pub statistics: RunStatistics,
     // Workspaces (no allocation in the time loop).
     pub(crate) body_states: BodyStates,
+    /// The state `body_states` holds, for the next step's first stage.
+    pub(crate) states_cache: StatesCache,
     wrenches: Wrenches,
     gen_force: Vec<f64>,
     /// Wheel-rail forces of the last evaluation, per wheelset `[left, right]`.
@@ -192,6 +195,7 @@ impl VehicleSystem {
             error: None,
             statistics: RunStatistics::default(),
             body_states: BodyStates::default(),
+            states_cache: StatesCache::default(),
             wrenches: [[0.0; 6]; N_BODIES],
             gen_force: vec![0.0; N_DOF],
             wheel_forces: [[WheelForces::default(); 2]; N_WHEELSETS],
@@ -225,9 +229,12 @@ impl VehicleSystem {
     /// The bodies' states from `y` at time `t`, and on a curve also their states in the reference
     /// frame the suspension sees (`track_frame`).
     fn update_body_states(&mut self, t: f64, y: &[f64]) {
-        let (q, rest) = y.split_at(N_DOF);
-        self.structure
-            .body_states(q, &rest[..N_DOF], &mut self.body_states);
+        if !self.states_cache.holds(&self.structure, y) {
+            let (q, rest) = y.split_at(N_DOF);
+            self.structure
+                .body_states(q, &rest[..N_DOF], &mut self.body_states);
+            self.states_cache.invalidate();
+        }
         if let Some(curve) = &self.curve {
             let s_r = self.vehicle_distance(t);
             curve.prepare(
@@ -391,6 +398,8 @@ impl OdeSystem for VehicleSystem {
 
     fn after_step(&mut self, t: f64, dt: f64, y: &[f64]) {
         self.update_body_states(t, y);
+        // The next step's first stage starts from this very state.
+        self.states_cache.store(&self.structure, y);
         let states = match self.curve {
             Some(_) => &self.frame_work.states,
             None => &self.body_states,

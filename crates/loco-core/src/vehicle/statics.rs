@@ -240,6 +240,7 @@ fn search(system: &mut VehicleSystem, settings: &StaticsSettings) -> Result<Equi
     system
         .structure
         .body_states(&q, &qd, &mut system.body_states);
+    system.states_cache.invalidate();
     for damper in &mut system.dampers {
         damper.static_elongation = 0.0;
         let (x, _) = damper.stroke(&system.body_states);
