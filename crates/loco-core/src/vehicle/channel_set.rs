@@ -55,7 +55,7 @@ impl ChannelKind {
     ];
 
     /// The kind's name as the front ends spell it.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             ChannelKind::Acceleration => "acceleration",
             ChannelKind::WheelsetMotion => "wheelset_motion",
