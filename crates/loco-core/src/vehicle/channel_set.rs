@@ -323,3 +323,43 @@ impl ChannelSet {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vehicle::parameters::ParameterSet;
+    use std::collections::HashSet;
+
+    #[test]
+    fn names_are_unique_and_kinds_follow_the_probes() {
+        let s = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+        let set = ChannelSet::new(&s).unwrap();
+        let names = set.names();
+        assert_eq!(names.iter().collect::<HashSet<_>>().len(), names.len());
+        for c in set.channels() {
+            // The name suffixes the front ends used to guess the kind agree with the probe.
+            let by_suffix = c.name.ends_with("_valve");
+            assert_eq!(
+                by_suffix,
+                c.kind() == ChannelKind::DamperValve,
+                "{}",
+                c.name
+            );
+            if let Probe::DamperValve(i) = c.probe {
+                assert_eq!(s.suspension.dampers[i].role, DamperRole::Yaw, "{}", c.name);
+            }
+        }
+        let yaw = s
+            .suspension
+            .dampers
+            .iter()
+            .filter(|d| d.role == DamperRole::Yaw);
+        assert_eq!(
+            set.names_of_kind(ChannelKind::DamperValve).len(),
+            yaw.count()
+        );
+        let kinds: HashSet<_> = set.channels().iter().map(Channel::kind).collect();
+        assert_eq!(kinds, ChannelKind::ALL.into_iter().collect());
+        assert_eq!(set.channels()[0].unit, "m/s²");
+    }
+}
