@@ -155,6 +155,8 @@ const DAMPER_CHANNELS: [(&[DamperRole], ChannelKind); 4] = [
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChannelSet {
     channels: Vec<Channel>,
+    /// The channels' probes, in order, kept apart so the sampling loop reads a dense array.
+    probes: Vec<Probe>,
     /// Mean static wheel load Q0, N: the vehicle's weight over its eight wheels (for ΔQ/Q0).
     static_load: f64,
 }
@@ -253,6 +255,7 @@ impl ChannelSet {
             });
         }
         Ok(Self {
+            probes: channels.iter().map(|c| c.probe).collect(),
             channels,
             static_load: s.total_mass() * s.gravity / (2 * N_WHEELSETS) as f64,
         })
@@ -293,8 +296,8 @@ impl ChannelSet {
     pub fn sample(&self, system: &VehicleSystem, y: &[f64], dy: &[f64], mut push: impl FnMut(f64)) {
         let s = &system.structure;
         let acc = &dy[N_DOF..2 * N_DOF];
-        for channel in &self.channels {
-            push(match channel.probe {
+        for probe in &self.probes {
+            push(match *probe {
                 Probe::Acceleration {
                     body,
                     point,
