@@ -18,6 +18,7 @@ import numpy as np
 from scipy.stats import qmc
 
 import loco
+from loco.channels import Metric
 
 RANGES = {  # SPEC §6, SI units
     "K_px": (10e6, 50e6),
@@ -44,7 +45,7 @@ def main() -> None:
         dict(zip(RANGES, lower + u * (upper - lower), strict=True)) for u in unit
     ]
     worst = {"S_low": 0.0, "S_high": 0.0}
-    metric = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
+    metric = {"S_low": Metric.WY_MAX, "S_high": Metric.AYB_PEAK_LP}
     start = time.perf_counter()
     for i, sample in enumerate(samples):
         overrides = {k: float(v) for k, v in sample.items() if v is not None}

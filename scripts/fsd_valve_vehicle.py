@@ -17,6 +17,7 @@ from pathlib import Path
 import pandas as pd
 
 from loco import dampers
+from loco.channels import Metric
 from loco.studies import fsd_comparison as fc
 
 LAWS = {"YD1": dampers.YD1, "YD2": dampers.YD2, "FSD": dampers.FSD, "FSD-H": dampers.FSD_HYDRAULIC}
@@ -37,7 +38,7 @@ def main() -> int:
     pd.set_option("display.width", 200)
     print(
         table.pivot_table(
-            index=["scenario", "damper"], columns="seed", values=["rms", "psd_peak", "wy_max"]
+            index=["scenario", "damper"], columns="seed", values=["rms", "psd_peak", Metric.WY_MAX]
         )
         .round(3)
         .to_string()

@@ -10,6 +10,7 @@ vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`sim
 # (`loco.studies` pulls in the study dependencies and is imported on its own).
 from loco import (
     batch,
+    channels,
     conicity,
     contact,
     creep,
@@ -39,6 +40,7 @@ from loco._loco import (
     __version__,
 )
 from loco.batch import BatchResult, run_batch
+from loco.channels import ChannelKind, Metric
 from loco.schema import ParameterSpec, parameter_schema, retired_parameters
 from loco.simulation import Scenario, SimulationResult, simulate
 from loco.stability import critical_speed, eigen
@@ -52,6 +54,7 @@ from loco.vehicle import Locomotive
 
 __all__ = [
     "BatchResult",
+    "ChannelKind",
     "ContactError",
     "DerailmentError",
     "DivergenceError",
@@ -61,6 +64,7 @@ __all__ = [
     "LocoError",
     "LocoIOError",
     "Locomotive",
+    "Metric",
     "ParameterError",
     "ParameterRangeError",
     "ParameterSpec",
@@ -71,6 +75,7 @@ __all__ = [
     "SimulationResult",
     "__version__",
     "batch",
+    "channels",
     "conicity",
     "contact",
     "creep",

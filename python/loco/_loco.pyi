@@ -4,7 +4,7 @@ Each section belongs to one binding file of ``crates/loco-py/src``; keep them in
 """
 
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any, final
+from typing import Any, ClassVar, final
 
 import numpy as _np
 import numpy as np
@@ -307,6 +307,51 @@ def run_metrics(
     bogie_mass: float,
     carbody_vertical: NDArray[np.float64] | None = None,
 ) -> NDArray[np.float64]: ...
+
+# --- names (names.rs) ---------------------------------------------------------------------------
+
+__all__ += ["ChannelKind", "Metric", "channel_kinds", "channel_table", "metric_table"]
+
+@final
+class Metric:
+    """The run metric names as constants, generated from the core's metric table."""
+
+    WY_MEAN: ClassVar[str]
+    WY_MAX: ClassVar[str]
+    WZ_MEAN: ClassVar[str]
+    WZ_MAX: ClassVar[str]
+    AYC_RMS: ClassVar[str]
+    AYC_PEAK: ClassVar[str]
+    AYC_DOMINANT_HZ: ClassVar[str]
+    AYC_PSD_PEAK: ClassVar[str]
+    AYC_WD_P95: ClassVar[str]
+    AZC_WB_P95: ClassVar[str]
+    NMV: ClassVar[str]
+    AYB_RMS: ClassVar[str]
+    AYB_PEAK_LP: ClassVar[str]
+    AYB_GBT_CYCLES: ClassVar[str]
+    AYB_GBT_UNSTABLE: ClassVar[str]
+    AYB_F0_HZ: ClassVar[str]
+    AYB_PSD_PEAK: ClassVar[str]
+    AYB_EN_RMS: ClassVar[str]
+    AYB_EN_LIMIT: ClassVar[str]
+    AYB_EN_UNSTABLE: ClassVar[str]
+
+@final
+class ChannelKind:
+    """The kinds of output channels as constants."""
+
+    ACCELERATION: ClassVar[str]
+    WHEELSET_MOTION: ClassVar[str]
+    WHEEL: ClassVar[str]
+    GUIDING_FORCE: ClassVar[str]
+    DAMPER_FORCE: ClassVar[str]
+    DAMPER_VALVE: ClassVar[str]
+    DAMPER_STROKE: ClassVar[str]
+
+def channel_kinds() -> list[str]: ...
+def metric_table() -> list[tuple[str, str, str, bool]]: ...
+def channel_table(vehicle: Vehicle) -> list[tuple[str, str, str]]: ...
 
 # --- dampers (dampers.rs) -----------------------------------------------------------------------
 

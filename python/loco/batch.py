@@ -29,6 +29,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
+from loco.channels import channel_kinds_of
 from loco.simulation import RUN_STATISTICS, Scenario, SimulationResult
 from loco.vehicle import Locomotive
 
@@ -220,7 +221,9 @@ def run_batch(
         if bar:
             bar.close()
     seconds = time.perf_counter() - start
-    kept_results = history_results(kept, metric_names, metrics, names, x, scenario)
+    kept_results = history_results(
+        kept, metric_names, metrics, names, x, scenario, channel_kinds_of(vehicle.native)
+    )
     return BatchResult(
         params=x,
         names=list(names),
@@ -242,8 +245,10 @@ def history_results(
     names: Sequence[str],
     x: FloatArray,
     scenario: Scenario,
+    channel_kinds: dict[str, str] | None = None,
 ) -> dict[int, SimulationResult]:
-    """The kept time histories ``(sample, time, channel names, channels)`` as results."""
+    """The kept time histories ``(sample, time, channel names, channels)`` as results;
+    ``channel_kinds`` gives each channel's kind (the samples share the vehicle's structure)."""
     named: dict[str, Any] = dict(zip(metric_names, range(len(metric_names)), strict=True))
     return {
         i: SimulationResult(
@@ -253,6 +258,7 @@ def history_results(
             metrics={k: float(metrics[i, j]) for k, j in named.items()},
             sampling_rate=float(scenario.output_rate),
             parameters={n: float(v) for n, v in zip(names, x[i], strict=True)},
+            channel_kinds=dict(channel_kinds or {}),
         )
         for i, t, channel_names, channels in kept
     }

@@ -38,6 +38,7 @@ import pandas as pd
 
 from loco import _loco
 from loco.batch import STATUS_NAMES, BatchResult, history_results
+from loco.channels import channel_kinds_of
 from loco.executors import BatchJob, Chunk, Executor, LocalExecutor
 from loco.simulation import RUN_STATISTICS, SETTINGS, Scenario
 from loco.store import CampaignStore, campaign_key, file_sha256
@@ -282,7 +283,13 @@ def run_campaign(
         status=status,
         messages=messages,
         histories=history_results(
-            [(i, *kept[i]) for i in sorted(kept)], metric_names, metrics, names, x, scenario
+            [(i, *kept[i]) for i in sorted(kept)],
+            metric_names,
+            metrics,
+            names,
+            x,
+            scenario,
+            channel_kinds_of(vehicle.native),
         ),
         seconds=time.perf_counter() - start,
         threads=threads or 0,

@@ -3,7 +3,7 @@
 >>> import loco
 >>> scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6)
 >>> result = loco.simulate(loco.Locomotive.default(), scenario)  # doctest: +SKIP
->>> result.metrics["wy_max"], result.channel("frame1_ay_wheelset1").max()  # doctest: +SKIP
+>>> result.metrics[loco.Metric.WY_MAX]  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -18,6 +18,7 @@ import numpy.typing as npt
 
 from loco import _loco
 from loco import field_types as types
+from loco.channels import channel_kinds_of
 from loco.dampers import Damper
 from loco.profiles import Profile
 from loco.track import Track
@@ -309,6 +310,8 @@ class SimulationResult:
     sampling_rate: float
     parameters: dict[str, Any] = field(default_factory=dict)
     statistics: dict[str, float] = field(default_factory=dict)
+    #: The kind (a :class:`loco.ChannelKind`) of each channel, by name (empty when not known).
+    channel_kinds: dict[str, str] = field(default_factory=dict, repr=False)
 
     def __repr__(self) -> str:
         duration = float(self.time[-1] - self.time[0]) if len(self.time) else 0.0
@@ -331,6 +334,10 @@ class SimulationResult:
             raise _loco.ParameterError(
                 f"invalid parameter `name`: no channel '{name}'; available: {self.channel_names}"
             ) from None
+
+    def channels_of_kind(self, kind: str) -> list[str]:
+        """Names of the channels of kind ``kind`` (a :class:`loco.ChannelKind`), in order."""
+        return [n for n in self.channel_names if self.channel_kinds.get(n) == kind]
 
     def to_xarray(self) -> xarray.Dataset:
         """The channels as an ``xarray.Dataset`` on a ``time`` coordinate, metrics as attributes."""
@@ -362,4 +369,5 @@ def simulate(vehicle: Locomotive, scenario: Scenario) -> SimulationResult:
         sampling_rate=float(scenario.output_rate),
         parameters={"speed": scenario.speed, "distance": scenario.distance},
         statistics=dict(statistics),
+        channel_kinds=channel_kinds_of(vehicle.native),
     )

@@ -12,6 +12,7 @@ mod dampers;
 mod errors;
 mod frequency_response;
 mod metrics;
+mod names;
 mod scenario;
 mod schema;
 mod track;
@@ -30,6 +31,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     creep::register(m)?;
     track::register(m)?;
     metrics::register(m)?;
+    names::register(m)?;
     dampers::register(m)?;
     scenario::register(m)?;
     vehicle_handle::register(m)?;

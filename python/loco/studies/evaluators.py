@@ -127,8 +127,8 @@ def stack_evaluators(*evaluators: tuple[Evaluator, int]) -> Evaluator:
     For instance W_y on S_low and A_yb on S_high as the two objectives of the optimisation::
 
         both = stack_evaluators(
-            (simulator_evaluator(s_low, "wy_max"), 1),
-            (simulator_evaluator(s_high, "ayb_peak_lp"), 1),
+            (simulator_evaluator(s_low, loco.Metric.WY_MAX), 1),
+            (simulator_evaluator(s_high, loco.Metric.AYB_PEAK_LP), 1),
         )
     """
     if not evaluators:

@@ -27,6 +27,7 @@ import pandas as pd
 
 import loco
 from loco import dampers
+from loco.channels import ChannelKind, Metric
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
@@ -52,15 +53,16 @@ DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HY
 CASES: tuple[tuple[str, str, str], ...] = (("S_low", *A_YC), ("S_high", *A_YB))
 SCENARIO_QUANTITY: dict[str, str] = {s: q for s, q, _ in CASES}
 FloatArray = npt.NDArray[np.float64]
-#: Suffix of the frequency-valve channels of the yaw dampers.
+#: Suffix the core gives the frequency-valve channels (stripped to name the valve in tables; the
+#: channels themselves are selected by kind, :func:`valve_channels`).
 VALVE_SUFFIX = "_valve"
 
 
 #: Metric by which each scenario judges a yaw damper (SPEC §5): W_y on S_low, A_yb on S_high.
-JUDGED_BY: dict[str, str] = {"S_low": "wy_max", "S_high": "ayb_peak_lp"}
+JUDGED_BY: dict[str, str] = {"S_low": Metric.WY_MAX, "S_high": Metric.AYB_PEAK_LP}
 #: The bogie instability flags (core run metrics, 0/1): EN 14363 sliding rms over its limit, GB/T
 #: 8 m/s² peaks in 6 cycles.
-STABILITY_FLAGS: tuple[str, ...] = ("ayb_en_unstable", "ayb_gbt_unstable")
+STABILITY_FLAGS: tuple[str, ...] = (Metric.AYB_EN_UNSTABLE, Metric.AYB_GBT_UNSTABLE)
 #: Fraction of the record the valves were closed (from the valve channels, not a core metric).
 VALVE_FRACTION = "valve_closed_fraction"
 #: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
@@ -227,7 +229,7 @@ def valve_open_fractions(cmp: FsdComparison) -> pd.DataFrame:
 
 def valve_channels(result: loco.SimulationResult) -> list[str]:
     """Names of the yaw damper valve channels of a run (0 open … 1 closed)."""
-    return [c for c in result.channel_names if c.endswith(VALVE_SUFFIX)]
+    return result.channels_of_kind(ChannelKind.DAMPER_VALVE)
 
 
 def valve_closed_fraction(result: loco.SimulationResult) -> float:

@@ -21,6 +21,7 @@ import pandas as pd
 
 import loco
 from loco import dampers
+from loco.channels import Metric
 from loco.studies import fsd_conicity, fsd_design
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
@@ -279,7 +280,8 @@ def plot_design(
         axes[0].plot(study.front["W_y"], study.front["A_yb"], "o-", color="C3", label="front")
     axes[0].set(xlabel="W_y, S_low", ylabel="A_yb peak, S_high (m/s²)", title="designs")
     axes[0].legend(fontsize=7)
-    for ax, metric, label in ((axes[1], "wy_max", "W_y"), (axes[2], "ayb_peak_lp", "A_yb (m/s²)")):
+    panels = ((axes[1], Metric.WY_MAX, "W_y"), (axes[2], Metric.AYB_PEAK_LP, "A_yb (m/s²)"))
+    for ax, metric, label in panels:
         for k, name in enumerate(dict.fromkeys(summary["damper"])):
             c, mean, lo, hi = fsd_conicity.summary_array(summary, name, metric).T
             err = np.vstack([mean - lo, hi - mean])

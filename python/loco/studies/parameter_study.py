@@ -29,6 +29,7 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
+from loco.channels import Metric
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study_units
 from loco.studies.plotting import pyplot, save_figure
@@ -72,8 +73,8 @@ class Objective:
 
 #: W_y on S_low and A_yb on S_high (SPEC §5, §6.2).
 OBJECTIVES: tuple[Objective, ...] = (
-    Objective("W_y", "S_low", "wy_max", "", "Sperling lateral index, S_low"),
-    Objective("A_yb", "S_high", "ayb_peak_lp", "m/s²", "bogie frame lateral peak, S_high"),
+    Objective("W_y", "S_low", Metric.WY_MAX, "", "Sperling lateral index, S_low"),
+    Objective("A_yb", "S_high", Metric.AYB_PEAK_LP, "m/s²", "bogie frame lateral peak, S_high"),
 )
 
 

@@ -32,6 +32,7 @@ import pandas as pd
 
 import loco
 from loco import _loco, dampers, metrics
+from loco.channels import Metric
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import run_over_tracks
@@ -68,19 +69,19 @@ A_YB: tuple[str, str] = ("A_yb", METRIC_CHANNELS["A_yb"])
 CHANNELS: dict[str, str] = dict((A_YC, A_YB))
 #: Metrics plotted against speed: (metric name, axis label).
 SWEEP_METRICS: tuple[tuple[str, str], ...] = (
-    ("wy_max", "W_y (Sperling, lateral)"),
-    ("ayb_peak_lp", "A_yb peak, 10 Hz low-pass (m/s²)"),
+    (Metric.WY_MAX, "W_y (Sperling, lateral)"),
+    (Metric.AYB_PEAK_LP, "A_yb peak, 10 Hz low-pass (m/s²)"),
 )
 
 
 #: Run metrics (the core's) of the PSD peak of each quantity: (dominant frequency Hz, PSD peak
 #: (m/s²)²/Hz). A_yc is searched over 0.2-20 Hz, A_yb over the EN 14363 f0 band.
 PEAK_METRICS: dict[str, tuple[str, str]] = {
-    "A_yc": ("ayc_dominant_hz", "ayc_psd_peak"),
-    "A_yb": ("ayb_f0_hz", "ayb_psd_peak"),
+    "A_yc": (Metric.AYC_DOMINANT_HZ, Metric.AYC_PSD_PEAK),
+    "A_yb": (Metric.AYB_F0_HZ, Metric.AYB_PSD_PEAK),
 }
 #: Run metric of the rms of each quantity, m/s².
-RMS_METRICS: dict[str, str] = {"A_yc": "ayc_rms", "A_yb": "ayb_rms"}
+RMS_METRICS: dict[str, str] = {"A_yc": Metric.AYC_RMS, "A_yb": Metric.AYB_RMS}
 
 
 def spectrum(result: loco.SimulationResult, quantity: str) -> Spectrum:

@@ -1,6 +1,7 @@
 //! Every metric of one simulated run as a row of named values, for the batch engine.
 
 use super::comfort::{weighted_rms, ComfortWeighting};
+use super::metric_table::MetricValue;
 use super::spectral::{check_record, dominant_frequency, WelchParams, MIN_SAMPLES};
 use super::sperling::{sperling, Direction, SperlingParams};
 use super::stability::{bogie_stability, rms, StabilityParams};
@@ -47,77 +48,41 @@ impl Default for RunMetricsParams {
     }
 }
 
-/// All metrics of one run. Units: m/s² for accelerations, Hz, (m/s²)²/Hz for PSD values;
-/// flags are 0 or 1 in [`Self::values`]; NaN where a record was not given, and every value NaN,
-/// the flags too (`None`), when the metrics are undefined (a run too short to evaluate): an
-/// undefined flag must not read as "stable".
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RunMetrics {
-    /// Sperling W_y, mean of the 5 s segments.
-    pub wy_mean: f64,
-    /// Sperling W_y, largest segment.
-    pub wy_max: f64,
-    /// Sperling W_z, mean of the 5 s segments (NaN without a vertical record).
-    pub wz_mean: f64,
-    /// Sperling W_z, largest segment.
-    pub wz_max: f64,
-    /// Rms of A_yc, m/s².
-    pub ayc_rms: f64,
-    /// Largest |A_yc|, m/s².
-    pub ayc_peak: f64,
-    /// Dominant frequency of A_yc, Hz.
-    pub ayc_dominant_hz: f64,
-    /// Welch PSD of A_yc at its dominant frequency, (m/s²)²/Hz.
-    pub ayc_psd_peak: f64,
-    /// EN 12299 Wd-weighted rms of A_yc, 95th percentile of 5 s blocks, m/s².
-    pub ayc_wd_p95: f64,
-    /// EN 12299 Wb-weighted rms of the vertical record, 95th percentile, m/s².
-    pub azc_wb_p95: f64,
-    /// N_MV from the lateral and vertical records (no longitudinal), dimensionless.
-    pub nmv: f64,
-    /// Rms of A_yb, m/s².
-    pub ayb_rms: f64,
-    /// Peak of the 10 Hz low-passed A_yb, m/s².
-    pub ayb_peak_lp: f64,
-    /// Longest run of cycles ≥ 8 m/s² (GB/T).
-    pub ayb_gbt_cycles: f64,
-    /// GB/T instability flag (`None`: undefined).
-    pub ayb_gbt_unstable: Option<bool>,
-    /// Instability (dominant) frequency of A_yb, Hz.
-    pub ayb_f0_hz: f64,
-    /// Welch PSD of A_yb at f0, (m/s²)²/Hz.
-    pub ayb_psd_peak: f64,
-    /// Largest EN 14363 sliding rms, m/s².
-    pub ayb_en_rms: f64,
-    /// EN 14363 limit, m/s².
-    pub ayb_en_limit: f64,
-    /// EN 14363 instability flag (`None`: undefined).
-    pub ayb_en_unstable: Option<bool>,
-}
+macro_rules! run_metrics_struct {
+    ($( $constant:ident $field:ident : $ty:ty, $unit:literal, $doc:literal; )*) => {
+        /// All metrics of one run, the fields of [`super::metric_table`] (units there:
+        /// m/s² for accelerations, Hz, (m/s²)²/Hz for PSD values); flags are 0 or 1 in
+        /// [`Self::values`]; NaN where a record was not given, and every value NaN, the flags too
+        /// (`None`), when the metrics are undefined (a run too short to evaluate): an undefined
+        /// flag must not read as "stable".
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct RunMetrics {
+            $(
+                #[doc = concat!($doc, ", ", $unit, ".")]
+                pub $field: $ty,
+            )*
+        }
 
-/// Names of [`RunMetrics::values`], in order.
-const NAMES: [&str; 20] = [
-    "wy_mean",
-    "wy_max",
-    "wz_mean",
-    "wz_max",
-    "ayc_rms",
-    "ayc_peak",
-    "ayc_dominant_hz",
-    "ayc_psd_peak",
-    "ayc_wd_p95",
-    "azc_wb_p95",
-    "nmv",
-    "ayb_rms",
-    "ayb_peak_lp",
-    "ayb_gbt_cycles",
-    "ayb_gbt_unstable",
-    "ayb_f0_hz",
-    "ayb_psd_peak",
-    "ayb_en_rms",
-    "ayb_en_limit",
-    "ayb_en_unstable",
-];
+        /// Names of [`RunMetrics::values`], in order.
+        const NAMES: &[&str] = &[$(stringify!($field)),*];
+
+        impl RunMetrics {
+            /// Every metric undefined: NaN, the flags `None`.
+            pub fn undefined() -> Self {
+                Self {
+                    $($field: <$ty as MetricValue>::UNDEFINED,)*
+                }
+            }
+
+            /// The metrics as numbers (flags as 0/1, NaN when undefined), in the order of
+            /// [`Self::names`].
+            pub fn values(&self) -> Vec<f64> {
+                vec![$(MetricValue::number(self.$field)),*]
+            }
+        }
+    };
+}
+crate::metric_table!(run_metrics_struct);
 
 impl RunMetrics {
     /// Computes every metric of a run.
@@ -173,39 +138,7 @@ impl RunMetrics {
 
     /// Column names, in the order of [`Self::values`].
     pub fn names() -> &'static [&'static str] {
-        &NAMES
-    }
-
-    /// The metrics as numbers (flags as 0/1, NaN when undefined), in the order of
-    /// [`Self::names`].
-    pub fn values(&self) -> Vec<f64> {
-        let flag = |b: Option<bool>| match b {
-            Some(true) => 1.0,
-            Some(false) => 0.0,
-            None => f64::NAN,
-        };
-        vec![
-            self.wy_mean,
-            self.wy_max,
-            self.wz_mean,
-            self.wz_max,
-            self.ayc_rms,
-            self.ayc_peak,
-            self.ayc_dominant_hz,
-            self.ayc_psd_peak,
-            self.ayc_wd_p95,
-            self.azc_wb_p95,
-            self.nmv,
-            self.ayb_rms,
-            self.ayb_peak_lp,
-            self.ayb_gbt_cycles,
-            flag(self.ayb_gbt_unstable),
-            self.ayb_f0_hz,
-            self.ayb_psd_peak,
-            self.ayb_en_rms,
-            self.ayb_en_limit,
-            flag(self.ayb_en_unstable),
-        ]
+        NAMES
     }
 }
 

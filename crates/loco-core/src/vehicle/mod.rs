@@ -32,6 +32,7 @@
 //!   angle, flange contact, ΣY), named once.
 
 pub mod bodies;
+pub mod channel_set;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;

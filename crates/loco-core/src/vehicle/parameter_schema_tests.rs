@@ -2,8 +2,8 @@
 //! says; the default vehicle and the SPEC §6 study box lie inside the ranges.
 
 use super::*;
+use crate::vehicle::channel_set::ChannelSet;
 use crate::vehicle::parameters::{ParameterSet, STUDY_PARAMETERS};
-use crate::vehicle::run::probes;
 use crate::vehicle::scenario::ContactParameters;
 use crate::vehicle::structure::VehicleStructure;
 
@@ -16,7 +16,7 @@ fn built(p: &ParameterSet) -> [String; 3] {
         s.layout, s.bodies, s.suspension, s.gravity
     );
     let contact = format!("{:?}", ContactParameters::from_parameters(p).unwrap());
-    let metrics = format!("{:?}", probes(&s).unwrap());
+    let metrics = format!("{:?}", ChannelSet::new(&s).unwrap());
     [structure, contact, metrics]
 }
 

@@ -35,28 +35,7 @@ pub fn run_metrics(output: &RunOutput, speed: f64, bogie_mass: f64) -> Result<Ru
 /// Metrics of a run too short to evaluate (under one 5 s Sperling segment): every value NaN,
 /// the instability flags undefined (`None`, NaN in [`RunMetrics::values`]), not "stable".
 pub fn undefined_metrics() -> RunMetrics {
-    RunMetrics {
-        wy_mean: f64::NAN,
-        wy_max: f64::NAN,
-        wz_mean: f64::NAN,
-        wz_max: f64::NAN,
-        ayc_rms: f64::NAN,
-        ayc_peak: f64::NAN,
-        ayc_dominant_hz: f64::NAN,
-        ayc_psd_peak: f64::NAN,
-        ayc_wd_p95: f64::NAN,
-        azc_wb_p95: f64::NAN,
-        nmv: f64::NAN,
-        ayb_rms: f64::NAN,
-        ayb_peak_lp: f64::NAN,
-        ayb_gbt_cycles: f64::NAN,
-        ayb_gbt_unstable: None,
-        ayb_f0_hz: f64::NAN,
-        ayb_psd_peak: f64::NAN,
-        ayb_en_rms: f64::NAN,
-        ayb_en_limit: f64::NAN,
-        ayb_en_unstable: None,
-    }
+    RunMetrics::undefined()
 }
 
 /// [`run_metrics`], or [`undefined_metrics`] when the run is shorter than the metrics need.

@@ -15,10 +15,10 @@
 //! at their start state, as in the eigenvalue analysis: an FSD is linearised with its valve in the
 //! `start_closed` position.
 
+use super::channel_set::ChannelSet;
 use super::integrator::OdeSystem;
 use super::layout::N_WHEELSETS;
 use super::linearise::LinearisationSettings;
-use super::run::{names_of, probes, sample};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
 use crate::error::Result;
@@ -69,14 +69,14 @@ fn rail_field(r: &mut RailIrregularity, j: usize) -> &mut f64 {
 /// Right-hand side and outputs of `system` at `y` with the current rail inputs.
 fn evaluate(
     system: &mut VehicleSystem,
-    probes: &super::run::Probes,
+    channel_set: &ChannelSet,
     y: &[f64],
     dy: &mut [f64],
     z: &mut Vec<f64>,
 ) {
     system.derivatives(0.0, y, dy);
     z.clear();
-    sample(system, probes, y, dy, |v| z.push(v));
+    channel_set.sample(system, y, dy, |v| z.push(v));
 }
 
 /// Linearises `system` about its static equilibrium at its (constant) speed with the rails as
@@ -92,8 +92,8 @@ pub fn track_input_model_with(
 ) -> Result<TrackInputModel> {
     let settings = settings.checked()?;
     let y0 = static_equilibrium(system, &StaticsSettings::default())?.state;
-    let probes = probes(&system.structure)?;
-    let outputs = names_of(&system.structure, &probes);
+    let channel_set = ChannelSet::new(&system.structure)?;
+    let outputs = channel_set.names();
     let (n, m, p) = (system.dimension(), outputs.len(), N_WHEELSETS * RAIL_INPUTS);
     let (mut a, mut c) = (vec![0.0; n * n], vec![0.0; m * n]);
     let (mut b, mut d) = (vec![0.0; n * p], vec![0.0; m * p]);
@@ -105,9 +105,9 @@ pub fn track_input_model_with(
     for j in 0..n {
         let h = settings.state_step(j, y0[j]);
         y[j] = y0[j] + h;
-        evaluate(system, &probes, &y, &mut plus, &mut z_plus);
+        evaluate(system, &channel_set, &y, &mut plus, &mut z_plus);
         y[j] = y0[j] - h;
-        evaluate(system, &probes, &y, &mut minus, &mut z_minus);
+        evaluate(system, &channel_set, &y, &mut minus, &mut z_minus);
         y[j] = y0[j];
         for i in 0..n {
             a[i * n + j] = (plus[i] - minus[i]) / (2.0 * h);
@@ -129,10 +129,10 @@ pub fn track_input_model_with(
             let mut rails = perfect;
             *rail_field(&mut rails[w], k) = h;
             system.rail_inputs = Some(rails);
-            evaluate(system, &probes, &y0, &mut plus, &mut z_plus);
+            evaluate(system, &channel_set, &y0, &mut plus, &mut z_plus);
             *rail_field(&mut rails[w], k) = -h;
             system.rail_inputs = Some(rails);
-            evaluate(system, &probes, &y0, &mut minus, &mut z_minus);
+            evaluate(system, &channel_set, &y0, &mut minus, &mut z_minus);
             for i in 0..n {
                 b[i * p + col] = (plus[i] - minus[i]) / (2.0 * h);
             }

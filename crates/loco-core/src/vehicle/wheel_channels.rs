@@ -71,6 +71,18 @@ impl WheelQuantity {
         }
     }
 
+    /// Its SI unit (`–` for a ratio or a flag).
+    pub fn unit(self) -> &'static str {
+        match self {
+            WheelQuantity::VerticalForce | WheelQuantity::LateralForce => "N",
+            WheelQuantity::WearNumber => "N",
+            WheelQuantity::ContactAngle => "rad",
+            WheelQuantity::DerailmentQuotient
+            | WheelQuantity::Unloading
+            | WheelQuantity::FlangeContact => "–",
+        }
+    }
+
     /// Its value at a wheel with forces `f`; `static_load` is Q0, N.
     pub fn value(self, f: &WheelForces, static_load: f64) -> f64 {
         match self {

@@ -1,0 +1,368 @@
+//! The output channels of a run as one built object: for each channel its name, unit, kind and
+//! probe (how its value is read from a state and the forces of the evaluation that gave its
+//! derivatives). Built once per vehicle structure; the same object names the channels
+//! ([`ChannelSet::names`]) and records them ([`ChannelSet::sample`]), so names and values cannot
+//! fall out of order, and a channel's kind is read from the object, not guessed from its name.
+//!
+//! Order: carbody floor lateral and vertical acceleration at the two Sperling points (floor above
+//! each bogie centre, `carbody.sperling_point_lateral_offset` to the left), bogie frame lateral
+//! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
+//! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the damper channels
+//! ([`DAMPER_CHANNELS`]), then the curving channels (per wheel ΔQ/Q0, T·γ, contact angle, flange
+//! contact; per wheelset ΣY; named in [`super::wheel_channels`]). Channels added later are
+//! appended so every older channel keeps its position.
+
+use super::kinematics::point_motion;
+use super::layout::*;
+use super::simulation::VehicleSystem;
+use super::structure::VehicleStructure;
+use super::suspension::DamperRole;
+use super::wheel_channels::{
+    wheel_channel, wheelset_channel, WheelQuantity, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
+    WHEELSET_MOTION_QUANTITIES, WHEEL_FORCE_QUANTITIES,
+};
+use crate::error::Result;
+
+/// What a channel measures: the families a front end selects channels by.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ChannelKind {
+    /// Acceleration of a point of the carbody or a bogie frame, m/s².
+    Acceleration,
+    /// Wheelset lateral displacement (m) or yaw (rad) relative to the track frame.
+    WheelsetMotion,
+    /// A wheel-rail quantity of one wheel (force, quotient, wear number, contact angle, flange).
+    Wheel,
+    /// Track-plane lateral force of the rails on a wheelset ΣY, N.
+    GuidingForce,
+    /// Force of a damper, N.
+    DamperForce,
+    /// Frequency-valve scale factor of a yaw damper, – (0 open, 1 closed).
+    DamperValve,
+    /// Stroke of a damper (elongation from its static length), m.
+    DamperStroke,
+}
+
+impl ChannelKind {
+    /// Every kind, in declaration order.
+    pub const ALL: [ChannelKind; 7] = [
+        ChannelKind::Acceleration,
+        ChannelKind::WheelsetMotion,
+        ChannelKind::Wheel,
+        ChannelKind::GuidingForce,
+        ChannelKind::DamperForce,
+        ChannelKind::DamperValve,
+        ChannelKind::DamperStroke,
+    ];
+
+    /// The kind's name as the front ends spell it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            ChannelKind::Acceleration => "acceleration",
+            ChannelKind::WheelsetMotion => "wheelset_motion",
+            ChannelKind::Wheel => "wheel",
+            ChannelKind::GuidingForce => "guiding_force",
+            ChannelKind::DamperForce => "damper_force",
+            ChannelKind::DamperValve => "damper_valve",
+            ChannelKind::DamperStroke => "damper_stroke",
+        }
+    }
+}
+
+/// How a channel's value is read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Probe {
+    /// Component `component` (0..3) of the acceleration of `point` (m, from the centre of gravity)
+    /// of body `body`.
+    Acceleration {
+        body: usize,
+        point: [f64; 3],
+        component: usize,
+    },
+    /// Lateral displacement of wheelset `w`.
+    WheelsetLateral(usize),
+    /// Yaw of wheelset `w`.
+    WheelsetYaw(usize),
+    /// `quantity` at wheel `side` (0 left, 1 right) of wheelset `w`.
+    Wheel {
+        w: usize,
+        side: usize,
+        quantity: WheelQuantity,
+    },
+    /// ΣY of wheelset `w`.
+    GuidingForce(usize),
+    /// Force of damper `i`.
+    DamperForce(usize),
+    /// Valve scale factor of damper `i`.
+    DamperValve(usize),
+    /// Stroke of damper `i`.
+    DamperStroke(usize),
+}
+
+impl Probe {
+    /// The channel kind this probe records.
+    pub fn kind(&self) -> ChannelKind {
+        match self {
+            Probe::Acceleration { .. } => ChannelKind::Acceleration,
+            Probe::WheelsetLateral(_) | Probe::WheelsetYaw(_) => ChannelKind::WheelsetMotion,
+            Probe::Wheel { .. } => ChannelKind::Wheel,
+            Probe::GuidingForce(_) => ChannelKind::GuidingForce,
+            Probe::DamperForce(_) => ChannelKind::DamperForce,
+            Probe::DamperValve(_) => ChannelKind::DamperValve,
+            Probe::DamperStroke(_) => ChannelKind::DamperStroke,
+        }
+    }
+}
+
+/// One output channel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Channel {
+    /// Name, unique in its set.
+    pub name: String,
+    /// SI unit (`–` for a ratio or a flag).
+    pub unit: &'static str,
+    /// How its value is read.
+    pub probe: Probe,
+}
+
+impl Channel {
+    /// What it measures.
+    pub fn kind(&self) -> ChannelKind {
+        self.probe.kind()
+    }
+}
+
+/// The damper channels, in order: the force of the yaw and secondary lateral dampers, the valve
+/// of the yaw dampers, then the force of the primary and secondary vertical dampers (added
+/// later, so appended to keep the positions of the older channels), then the strokes of the
+/// yaw and secondary lateral dampers (the frequency response's outputs, issue 11).
+const DAMPER_CHANNELS: [(&[DamperRole], ChannelKind); 4] = [
+    (
+        &[DamperRole::Yaw, DamperRole::SecondaryLateral],
+        ChannelKind::DamperForce,
+    ),
+    (&[DamperRole::Yaw], ChannelKind::DamperValve),
+    (
+        &[DamperRole::PrimaryVertical, DamperRole::SecondaryVertical],
+        ChannelKind::DamperForce,
+    ),
+    (
+        &[DamperRole::Yaw, DamperRole::SecondaryLateral],
+        ChannelKind::DamperStroke,
+    ),
+];
+
+/// Every output channel of a vehicle structure, in recording order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChannelSet {
+    channels: Vec<Channel>,
+    /// The channels' probes, in order, kept apart so the sampling loop reads a dense array.
+    probes: Vec<Probe>,
+    /// Mean static wheel load Q0, N: the vehicle's weight over its eight wheels (for ΔQ/Q0).
+    static_load: f64,
+}
+
+impl ChannelSet {
+    /// The channels of a vehicle of structure `s`.
+    pub fn new(s: &VehicleStructure) -> Result<Self> {
+        let p = &s.parameters;
+        let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
+        let side = p.get("carbody.sperling_point_lateral_offset")?;
+        let along = p.get("carbody.sperling_point_longitudinal_offset")?;
+        let mut channels = Vec::new();
+        let mut acceleration = |name: String, body: usize, point: [f64; 3], component: usize| {
+            channels.push(Channel {
+                name,
+                unit: "m/s²",
+                probe: Probe::Acceleration {
+                    body,
+                    point,
+                    component,
+                },
+            })
+        };
+        for (x, tag) in [(along, "front"), (-along, "rear")] {
+            for (axis, component) in [("ay", Y), ("az", Z)] {
+                let name = format!("carbody_floor_{axis}_{tag}");
+                acceleration(name, BODY_CARBODY, [x, side, floor], component);
+            }
+        }
+        for b in 0..N_BOGIES {
+            let body = body_frame(b);
+            acceleration(format!("frame{}_ay_centre", b + 1), body, [0.0; 3], Y);
+            for w in 2 * b..2 * b + 2 {
+                let dx = s.layout.wheelset_x[w] - s.layout.bogie_x[b];
+                let name = format!("frame{}_ay_wheelset{}", b + 1, w + 1);
+                acceleration(name, body, [dx, 0.0, 0.0], Y);
+            }
+        }
+        for w in 0..N_WHEELSETS {
+            for q in WHEELSET_MOTION_QUANTITIES {
+                let (unit, probe) = match q {
+                    WheelsetQuantity::Yaw => ("rad", Probe::WheelsetYaw(w)),
+                    _ => ("m", Probe::WheelsetLateral(w)),
+                };
+                let name = wheelset_channel(w, q);
+                channels.push(Channel { name, unit, probe });
+            }
+        }
+        let wheels = |channels: &mut Vec<Channel>, quantities: &[WheelQuantity]| {
+            for w in 0..N_WHEELSETS {
+                for side in 0..2 {
+                    for &quantity in quantities {
+                        channels.push(Channel {
+                            name: wheel_channel(w, side, quantity),
+                            unit: quantity.unit(),
+                            probe: Probe::Wheel { w, side, quantity },
+                        });
+                    }
+                }
+            }
+        };
+        wheels(&mut channels, &WHEEL_FORCE_QUANTITIES);
+        for (roles, kind) in DAMPER_CHANNELS {
+            for &role in roles {
+                for (i, placement) in s.suspension.dampers.iter().enumerate() {
+                    if placement.role != role {
+                        continue;
+                    }
+                    let name = &placement.name;
+                    channels.push(match kind {
+                        ChannelKind::DamperValve => Channel {
+                            name: format!("{name}_valve"),
+                            unit: "–",
+                            probe: Probe::DamperValve(i),
+                        },
+                        ChannelKind::DamperStroke => Channel {
+                            name: format!("{name}_stroke"),
+                            unit: "m",
+                            probe: Probe::DamperStroke(i),
+                        },
+                        _ => Channel {
+                            name: format!("{name}_force"),
+                            unit: "N",
+                            probe: Probe::DamperForce(i),
+                        },
+                    });
+                }
+            }
+        }
+        wheels(&mut channels, &CURVING_WHEEL_QUANTITIES);
+        for w in 0..N_WHEELSETS {
+            channels.push(Channel {
+                name: wheelset_channel(w, WheelsetQuantity::GuidingForce),
+                unit: "N",
+                probe: Probe::GuidingForce(w),
+            });
+        }
+        Ok(Self {
+            probes: channels.iter().map(|c| c.probe).collect(),
+            channels,
+            static_load: s.total_mass() * s.gravity / (2 * N_WHEELSETS) as f64,
+        })
+    }
+
+    /// The channels, in recording order.
+    pub fn channels(&self) -> &[Channel] {
+        &self.channels
+    }
+
+    /// Number of channels.
+    pub fn len(&self) -> usize {
+        self.channels.len()
+    }
+
+    /// Whether the set is empty (never, for a built vehicle).
+    pub fn is_empty(&self) -> bool {
+        self.channels.is_empty()
+    }
+
+    /// The channel names, in recording order.
+    pub fn names(&self) -> Vec<String> {
+        self.channels.iter().map(|c| c.name.clone()).collect()
+    }
+
+    /// Names of the channels of kind `kind`, in recording order.
+    pub fn names_of_kind(&self, kind: ChannelKind) -> Vec<String> {
+        self.channels
+            .iter()
+            .filter(|c| c.kind() == kind)
+            .map(|c| c.name.clone())
+            .collect()
+    }
+
+    /// One sample of every channel, in order, from state `y` and its derivatives `dy` (the
+    /// system's wheel and damper forces must be those of the evaluation that gave `dy`). The one
+    /// recording function: the runs record it and the frequency response linearises it.
+    pub fn sample(&self, system: &VehicleSystem, y: &[f64], dy: &[f64], mut push: impl FnMut(f64)) {
+        let s = &system.structure;
+        let acc = &dy[N_DOF..2 * N_DOF];
+        for probe in &self.probes {
+            push(match *probe {
+                Probe::Acceleration {
+                    body,
+                    point,
+                    component,
+                } => point_motion(&s.bodies[body].map.apply(acc), point)[component],
+                Probe::WheelsetLateral(w) => y[wheelset(w) + Y],
+                Probe::WheelsetYaw(w) => y[wheelset(w) + YAW],
+                Probe::Wheel { w, side, quantity } => {
+                    quantity.value(&system.wheel_forces[w][side], self.static_load)
+                }
+                Probe::GuidingForce(w) => {
+                    let [left, right] = &system.wheel_forces[w];
+                    left.lateral + right.lateral
+                }
+                Probe::DamperForce(i) => system.damper_forces[i],
+                Probe::DamperValve(i) => system.discrete[i].scale_factor,
+                Probe::DamperStroke(i) => {
+                    // On a curve the dampers act in the reference frame (`track_frame`).
+                    let states = match system.curve {
+                        Some(_) => &system.frame_work.states,
+                        None => &system.body_states,
+                    };
+                    system.dampers[i].stroke(states).0
+                }
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vehicle::parameters::ParameterSet;
+    use std::collections::HashSet;
+
+    #[test]
+    fn names_are_unique_and_kinds_follow_the_probes() {
+        let s = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+        let set = ChannelSet::new(&s).unwrap();
+        let names = set.names();
+        assert_eq!(names.iter().collect::<HashSet<_>>().len(), names.len());
+        for c in set.channels() {
+            // The name suffixes the front ends used to guess the kind agree with the probe.
+            let by_suffix = c.name.ends_with("_valve");
+            assert_eq!(
+                by_suffix,
+                c.kind() == ChannelKind::DamperValve,
+                "{}",
+                c.name
+            );
+            if let Probe::DamperValve(i) = c.probe {
+                assert_eq!(s.suspension.dampers[i].role, DamperRole::Yaw, "{}", c.name);
+            }
+        }
+        let yaw = s
+            .suspension
+            .dampers
+            .iter()
+            .filter(|d| d.role == DamperRole::Yaw);
+        assert_eq!(
+            set.names_of_kind(ChannelKind::DamperValve).len(),
+            yaw.count()
+        );
+        let kinds: HashSet<_> = set.channels().iter().map(Channel::kind).collect();
+        assert_eq!(kinds, ChannelKind::ALL.into_iter().collect());
+        assert_eq!(set.channels()[0].unit, "m/s²");
+    }
+}
