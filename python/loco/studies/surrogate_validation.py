@@ -54,11 +54,13 @@ def select_surrogates(
     seed: int = 0,
     log_target: bool = LOG_TARGET,
     candidates: Sequence[str] = CANDIDATES,
+    nested: bool = False,
 ) -> list[Selection]:
     """For each objective (column of ``y``), on the samples where it is finite: every candidate
     of :mod:`loco.studies.surrogate_selection` (or of ``candidates``) scored on the same
     ``n_splits`` folds, the best refitted on all of them (``selection.model``, the surrogate
-    Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``)."""
+    Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``); with ``nested``
+    the nested cross-validation of the choice too (``selection.nested``)."""
     out = []
     for j in range(y.shape[1]):
         ok = np.isfinite(y[:, j])
@@ -71,6 +73,7 @@ def select_surrogates(
                 seed=seed,
                 log_target=log_target,
                 candidates=candidates,
+                nested=nested,
             )
         )
     return out
