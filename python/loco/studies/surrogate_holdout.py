@@ -12,13 +12,29 @@ the model NSGA-II optimises on, within the sampling error of the held-out set (a
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from pathlib import Path
+from typing import ClassVar
+
 import numpy as np
 import numpy.typing as npt
 
+import loco
+from loco.studies.parameter_study import OBJECTIVES, StudySetup, samples_frame
+from loco.studies.parameters import names
+from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.surrogate import r2_score
+from loco.studies.surrogate_samples import HOLDOUT_SEED_OFFSET, holdout_design
 from loco.studies.surrogate_selection import Selection
 
-__all__ = ["assert_disjoint", "holdout_scores", "r2_interval"]
+__all__ = [
+    "HoldoutSamplesStage",
+    "assert_disjoint",
+    "holdout_scores",
+    "r2_interval",
+    "run_holdout",
+]
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -65,3 +81,50 @@ def r2_interval(
         draws[i] = float(r2_score(y[pick], predicted[pick])[0])
     tail = (1 - level) / 2
     return float(np.quantile(draws, tail)), float(np.quantile(draws, 1 - tail))
+
+
+@dataclass(frozen=True)
+class HoldoutSamplesStage(Stage):
+    """The stage ``surrogate_holdout`` of ``loco reproduce``: :func:`run_holdout` of ``n``
+    fresh samples (``seed``, ``setup``)."""
+
+    name: ClassVar[str] = "surrogate_holdout"
+    setup: StudySetup
+    n: int
+    seed: int = 0
+
+    def demand(self) -> Demand:
+        """Both objectives on every held-out sample."""
+        return self.setup.demand(self.n)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_holdout` into ``out_dir``."""
+        return run_holdout(self.setup, self.n, self.seed, out_dir, runtime)
+
+
+def run_holdout(
+    setup: StudySetup, n: int, seed: int, out_dir: Path, runtime: Runtime | None = None
+) -> StudyRecord:
+    """Simulate both objectives (``setup``, on ``runtime``) at the :func:`holdout_design` of
+    ``n`` samples. Writes ``holdout_samples.csv`` (the columns of ``monte_carlo.csv``) and
+    ``holdout_samples.json``."""
+    x = holdout_design(n, seed)
+    y = setup.evaluator(runtime)(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
+    failed = {o.label: int(np.isnan(y[:, j]).sum()) for j, o in enumerate(OBJECTIVES)}
+    settings = {
+        "loco_version": loco.__version__,
+        "holdout_samples": n,
+        "holdout_seed": seed + HOLDOUT_SEED_OFFSET,
+        **setup.settings(),
+    }
+    return StudyRecord(
+        name=out_dir.name,
+        title="Fresh samples the surrogates are scored on (neither trained nor selected on)",
+        tables=[
+            save_table(samples_frame(x, y), out_dir / "holdout_samples.csv"),
+            save_json(settings, out_dir / "holdout_samples.json"),
+        ],
+        parameters=settings,
+        notes=f"{n} Latin hypercube samples (seed {seed + HOLDOUT_SEED_OFFSET}), simulated like "
+        f"the training samples; failed runs: {failed}.",
+    )
