@@ -7,15 +7,16 @@ Training designs are nested: n = 300 is exactly the ``loco reproduce`` surrogate
 an independent Latin hypercube (``--blocks`` sizes, seeds ``seed + (i + 2)·7919``), so each
 training set is a uniform random design that contains the smaller ones. The held-out set is a
 Latin hypercube of ``--holdout`` points seeded ``seed + HOLDOUT_SEED_OFFSET``
-(:func:`loco.studies.surrogate_samples.holdout_design`), disjoint from every training block (checked),
-used neither to fit nor to choose a model.
+(:func:`loco.studies.surrogate_samples.holdout_design`), disjoint from every training block
+(checked), used neither to fit nor to choose a model.
 
 For each training size n: every candidate of :mod:`loco.studies.surrogate_selection` scored by
 5-fold cross-validation on the n (hyperparameters tuned inside the folds), the best chosen, and
 every candidate refitted on the n and scored on the held-out set
-(:func:`loco.studies.surrogate_holdout.holdout_scores`). The blocks beyond the first are
-simulated for ``--block-objectives`` only (default A_yb: W_y's held-out R² is already ~0.98 at
-300), which halves their cost.
+(:func:`loco.studies.surrogate_holdout.holdout_scores`). ``--nested`` adds the nested
+cross-validation of the choice (:func:`loco.studies.surrogate_selection.nested_selection_r2`,
+five times the fits). ``--block-objectives A_yb`` simulates the blocks beyond the first for A_yb
+only, which halves their cost.
 
 All runs are the study's: ``loco.run_batch`` on the seed-0 synthetic track, 500 m at 200 km/h,
 W_y on S_low and A_yb on S_high (:class:`loco.studies.parameter_study.StudySetup`). They are kept
@@ -41,7 +42,7 @@ from loco.studies.evaluators import simulator_evaluator
 from loco.studies.parameter_study import OBJECTIVES, StudySetup, labels
 from loco.studies.parameters import names
 from loco.studies.sampling import latin_hypercube
-from loco.studies.surrogate_holdout import holdout_scores, assert_disjoint
+from loco.studies.surrogate_holdout import assert_disjoint, holdout_scores
 from loco.studies.surrogate_samples import (
     EXTENSION_SEED_OFFSET,
     holdout_design,

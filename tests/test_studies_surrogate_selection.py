@@ -6,7 +6,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy.stats import qmc
-
 from sklearn.linear_model import LinearRegression
 from sklearn.model_selection import KFold
 

@@ -57,9 +57,7 @@ class GaussianProcessSurrogate:
     def fit(self, x: FloatArray, y: FloatArray) -> GaussianProcessSurrogate:
         length = np.full(x.shape[1], 0.5)
         shape = (
-            RBF(length, (1e-2, 1e3))
-            if self.kernel == "se"
-            else Matern(length, (1e-2, 1e3), nu=2.5)
+            RBF(length, (1e-2, 1e3)) if self.kernel == "se" else Matern(length, (1e-2, 1e3), nu=2.5)
         )
         kernel = ConstantKernel(1.0) * shape + WhiteKernel(1e-2, (1e-8, 1e1))
         self.model_ = GaussianProcessRegressor(kernel, normalize_y=True, random_state=self.seed)

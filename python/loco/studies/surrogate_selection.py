@@ -357,7 +357,8 @@ def _cv_scores(
 ) -> tuple[dict[str, CandidateScore], dict[str, list[Regressor]]]:
     """Every candidate fitted on each fold's training samples and scored on its test samples
     (R² of the objective); the fold models too, for :func:`_nested`."""
-    scores, models = {}, {}
+    scores: dict[str, CandidateScore] = {}
+    models: dict[str, list[Regressor]] = {}
     for kind in candidates:
         predictions = np.empty(len(y))
         r2 = np.empty(len(splits))

@@ -243,7 +243,7 @@ def validate_surrogate(
             lo, hi = r2_interval(holdout[1][okh, j], np.exp(p) if log_target else p, seed=seed)
             for row in rows:
                 if row["objective"] == objective.label:
-                    row["holdout_r2"] = held[row["model"]]
+                    row["holdout_r2"] = held[str(row["model"])]
             fresh = {"holdout_r2": held, "holdout_r2_used": held[sel.chosen],
                      "holdout_r2_used_95": [lo, hi], "holdout_samples": int(okh.sum())}  # fmt: skip
         ok_spec = np.isfinite(y[:n_spec, j])
