@@ -46,8 +46,9 @@ README's main job) keeps those sizes but uses 32 Saltelli base samples and a coa
 sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``). The FSD
 design stage has sizes of its own per preset. ``Sizes.runs()`` (the ``--quick``/``--full`` help)
 counts what every stage asks for (:meth:`loco.studies.stages.Stage.demand`) in runs of 500 m at
-200 km/h: about 1 460 for ``--quick`` (1 300 before the FSD design stage; one run costs 0.5-1 s
-of one core) and 6 300 for ``--full`` (the curving stage included).
+200 km/h: about 1 860 for ``--quick`` (1 700 before the FSD design stage, of which 400 for the
+200 held-out samples; one run costs 0.5-1 s of one core) and 7 300 for ``--full`` (the curving
+stage and 1 000 runs for the 500 held-out samples included).
 """
 
 from __future__ import annotations
@@ -150,7 +151,8 @@ FULL = Sizes(
     curving_sizes=curving.FULL_SIZES,
 )
 #: The README's main job: < 15 min on 2 cores before the FSD design stage (1 300 runs of 500 m of
-#: the 1 460 ``QUICK.runs()`` counts with it; not measured since). It keeps SPEC's
+#: the 1 460 ``QUICK.runs()`` counted with it, measured before the 400 runs of the held-out
+#: samples were added; 1 860 with them, not measured since). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11

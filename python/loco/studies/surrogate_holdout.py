@@ -6,8 +6,8 @@ the best of six scores on the same folds, so it is optimistic by the selection i
 the training design extended until the score looks good, the design could be tuned to the target
 as well. An independent Latin hypercube (:func:`loco.studies.surrogate_samples.holdout_design`,
 its own seed) scored once, after the choice, is free of both: its R² is the honest accuracy of
-the model NSGA-II optimises on, within the sampling error of the held-out set (about ±0.02 for
-300–500 points at R² ≈ 0.9, from :func:`r2_interval`).
+the model NSGA-II optimises on, within the sampling error of the held-out set
+(:func:`r2_interval`, reported by the surrogate stage).
 """
 
 from __future__ import annotations
