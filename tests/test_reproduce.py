@@ -33,6 +33,7 @@ STAGES = {
                     "speed_sweep.csv", "speed_sweep_summary.csv", "speed_sweep_peaks.csv"],
     "monte_carlo": ["monte_carlo.png", "monte_carlo.csv", "monte_carlo_summary.csv"],
     "surrogate_samples": ["surrogate_samples.csv", "surrogate_samples.json"],
+    "surrogate_holdout": ["holdout_samples.csv", "holdout_samples.json"],
     "surrogate": ["parity_W_y.png", "parity_A_yb.png", "parity_W_y_used.png",
                   "parity_A_yb_used.png", "surrogate_r2.csv", "surrogate_selection.csv",
                   "surrogate_spec.csv"],
@@ -127,6 +128,17 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     )
     for _, group in chosen.groupby("objective"):
         assert group.loc[group["used"], "r2_mean"].iloc[0] == group["r2_mean"].max()
+    # Fresh samples, disjoint from the training ones, score every candidate.
+    fresh = pd.read_csv(out / "surrogate_holdout" / "holdout_samples.csv")
+    assert len(fresh) == TINY.holdout_samples and list(fresh.columns) == list(mc.columns)
+    train = pd.concat([mc, extra])[names()].to_numpy()
+    assert not (fresh[names()].to_numpy()[:, None, :] == train[None, :, :]).all(axis=2).any()
+    assert chosen["holdout_r2"].notna().all() and (chosen["holdout_r2"] <= 1.0).all()
+    assert meta["holdout_samples"] == TINY.holdout_samples
+    for label in ("W_y", "A_yb"):
+        r2 = meta["r2"][label]
+        assert r2["meets_r2_required"] == (r2["holdout_r2_used"] >= 0.9)
+        assert len(r2["nested_choices"]) == TINY.kfold
     sweep = pd.read_csv(out / "speed_sweep" / "speed_sweep_summary.csv")
     assert (sweep["n_tracks"] == TINY.n_tracks).all()
     assert (sweep["W_y low"] <= sweep["W_y mean"]).all() and (
@@ -282,7 +294,8 @@ def test_every_stage_input_changes_its_hash(tmp_path: Path) -> None:
     full = stages(FULL, tmp_path, seed=0)
     assert [s.name for s in full] == list(STAGES)
     files = []
-    tables = ("monte_carlo/monte_carlo.csv", "surrogate_samples/surrogate_samples.csv", "b.csv")
+    tables = ("monte_carlo/monte_carlo.csv", "surrogate_samples/surrogate_samples.csv",
+              "surrogate_holdout/holdout_samples.csv", "b.csv")  # fmt: skip
     for i, table in enumerate(tables):
         (tmp_path / table).parent.mkdir(parents=True, exist_ok=True)
         (tmp_path / table).write_text(f"a\n{i}\n")

@@ -9,18 +9,23 @@ inputs is skipped on a rerun, ``--force`` runs it again):
 2. ``monte_carlo``: Latin hypercube over the six parameters, W_y (S_low) and A_yb (S_high).
 3. ``surrogate_samples``: a second Latin hypercube, so that the surrogate learns from
    ``surrogate_samples`` samples in all (:mod:`loco.studies.surrogate_samples`).
-4. ``surrogate``: k-fold held-out R² of the SPEC RBF network on the Monte Carlo's samples, and of
-   the SPEC network, a larger RBF network and a Gaussian process on all the training samples;
-   the best is the surrogate of stages 5 and 6; parity plots.
-5. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
-6. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
-7. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
-8. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
+4. ``surrogate_holdout``: a third, independent Latin hypercube of ``holdout_samples`` (200 in
+   ``--quick``, 500 in ``--full``), simulated like the others and used neither to train nor to
+   choose the surrogate (:mod:`loco.studies.surrogate_holdout`).
+5. ``surrogate``: k-fold held-out R² of the SPEC RBF network on the Monte Carlo's samples, and of
+   six candidates (:mod:`loco.studies.surrogate_selection`) on all the training samples, with the
+   nested cross-validation of the choice; the best is the surrogate of stages 6 and 7; every
+   candidate's R² on the fresh samples of stage 4, on which the requirement is judged; parity
+   plots.
+6. ``sensitivity``: Sobol' indices direct (Saltelli, simulator) and on the surrogate; convergence.
+7. ``optimisation``: NSGA-II on the surrogate, Pareto front; Pareto points re-simulated.
+8. ``damper_bench``: YD1, YD2, FSD at 1 and 4 Hz (``loco damper-bench``).
+9. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
    (the same for every damper), with paired tests of whether each ranking is significant.
-9. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
-   and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
-   preset in its ``SIZES``).
-10. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
+10. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
+    and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
+    preset in its ``SIZES``).
+11. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
     600–7000 m at 0–150 mm cant deficiency, ΣY, Y/Q and Y_qst by EN 14363
     (:mod:`loco.studies.curving`).
 
@@ -35,13 +40,15 @@ and the extension's tables take them as inputs by content, so a damaged output i
 
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
 500 m at 200 km/h; 256 Saltelli base samples for the direct indices), plus 100 more samples for
-the surrogate (300 in all, :mod:`loco.studies.surrogate_samples`). ``--quick`` (default, the
+the surrogate (300 in all, :mod:`loco.studies.surrogate_samples`) and 500 fresh ones to score
+it on (200 in ``--quick``). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
 sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``). The FSD
 design stage has sizes of its own per preset. ``Sizes.runs()`` (the ``--quick``/``--full`` help)
 counts what every stage asks for (:meth:`loco.studies.stages.Stage.demand`) in runs of 500 m at
-200 km/h: about 1 460 for ``--quick`` (1 300 before the FSD design stage; one run costs 0.5-1 s
-of one core) and 6 300 for ``--full`` (the curving stage included).
+200 km/h: about 1 860 for ``--quick`` (1 700 before the FSD design stage, of which 400 for the
+200 held-out samples; one run costs 0.5-1 s of one core) and 7 300 for ``--full`` (the curving
+stage and 1 000 runs for the 500 held-out samples included).
 """
 
 from __future__ import annotations
@@ -67,6 +74,7 @@ from loco.studies import (
     parameter_stages,
     parameter_study,
     speed_sweep,
+    surrogate_holdout,
     surrogate_samples,
     surrogate_validation,
 )
@@ -85,7 +93,8 @@ class Sizes:
     ``distance`` (m) and ``speed_kmh`` (km/h) are the study's run; ``sweep_speeds_kmh`` the
     speed sweep (km/h); ``lhs_samples`` the Monte Carlo; ``surrogate_samples`` the samples the
     surrogate of the Sobol' and NSGA-II stages learns from (the Monte Carlo's and more:
-    :mod:`loco.studies.surrogate_samples`); ``convergence_bases`` the Saltelli base
+    :mod:`loco.studies.surrogate_samples`); ``holdout_samples`` the fresh samples the surrogates
+    are scored on (:mod:`loco.studies.surrogate_holdout`); ``convergence_bases`` the Saltelli base
     sample counts N of the direct Sobol' indices (the largest is simulated: N·8 runs per
     scenario); ``surrogate_base`` the Saltelli N on the surrogate; ``kfold`` the folds of the R²;
     ``pop_size`` and ``n_gen`` NSGA-II; ``n_verify`` the Pareto points re-simulated;
@@ -100,6 +109,7 @@ class Sizes:
     sweep_speeds_kmh: tuple[float, ...]
     lhs_samples: int
     surrogate_samples: int
+    holdout_samples: int
     convergence_bases: tuple[int, ...]
     surrogate_base: int
     kfold: int
@@ -130,6 +140,7 @@ FULL = Sizes(
     sweep_speeds_kmh=tuple(float(v) for v in range(80, 301, 10)),
     lhs_samples=200,
     surrogate_samples=surrogate_samples.SURROGATE_SAMPLES,
+    holdout_samples=500,
     convergence_bases=(16, 32, 64, 128, 256),
     surrogate_base=8192,
     kfold=5,
@@ -140,7 +151,8 @@ FULL = Sizes(
     curving_sizes=curving.FULL_SIZES,
 )
 #: The README's main job: < 15 min on 2 cores before the FSD design stage (1 300 runs of 500 m of
-#: the 1 460 ``QUICK.runs()`` counts with it; not measured since). It keeps SPEC's
+#: the 1 460 ``QUICK.runs()`` counted with it, measured before the 400 runs of the held-out
+#: samples were added; 1 860 with them, not measured since). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
@@ -150,6 +162,7 @@ QUICK = dataclasses.replace(
     FULL,
     name="quick",
     sweep_speeds_kmh=tuple(float(v) for v in range(100, 301, 25)),
+    holdout_samples=200,
     convergence_bases=(8, 16, 32),
     surrogate_base=4096,
     n_verify=8,
@@ -165,6 +178,7 @@ TINY = dataclasses.replace(
     sweep_speeds_kmh=(180.0,),
     lhs_samples=16,
     surrogate_samples=24,
+    holdout_samples=6,
     convergence_bases=(2, 4),
     surrogate_base=256,
     kfold=3,
@@ -284,7 +298,12 @@ def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
         surrogate_samples.SurrogateSamplesStage(
             setup, sizes.surrogate_samples, sizes.lhs_samples, seed
         ),
-        surrogate_validation.SurrogateStage(training, spec_samples=sizes.lhs_samples),
+        surrogate_holdout.HoldoutSamplesStage(setup, sizes.holdout_samples, seed),
+        surrogate_validation.SurrogateStage(
+            training,
+            spec_samples=sizes.lhs_samples,
+            holdout=DataFile(out / "surrogate_holdout" / "holdout_samples.csv"),
+        ),
         parameter_stages.SensitivityStage(
             setup, training, seed, sizes.convergence_bases, sizes.surrogate_base
         ),

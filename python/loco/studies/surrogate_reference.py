@@ -16,7 +16,7 @@ import numpy as np
 import numpy.typing as npt
 from sklearn.exceptions import ConvergenceWarning
 from sklearn.gaussian_process import GaussianProcessRegressor
-from sklearn.gaussian_process.kernels import RBF, ConstantKernel, WhiteKernel
+from sklearn.gaussian_process.kernels import RBF, ConstantKernel, Matern, WhiteKernel
 from sklearn.model_selection import KFold
 
 from loco.studies.surrogate import r2_score
@@ -34,20 +34,32 @@ class GaussianProcessSurrogate:
 
     After :meth:`fit`: ``length_scales_`` (k,) in box units (a length at the upper bound means the
     parameter does not matter), ``noise_share_`` (white-noise variance over the target variance:
-    the share no smooth function of the parameters explains)."""
+    the share no smooth function of the parameters explains).
 
-    def __init__(self, bounds: npt.ArrayLike, *, seed: int = 0) -> None:
+    ``kernel="matern52"`` replaces the squared exponential by an ARD Matérn kernel with ν = 5/2
+    (twice differentiable rather than infinitely: it can follow the steeper rise of A_yb at the
+    hunting onset without the squared exponential's shortest length scale spreading everywhere).
+    """
+
+    KERNELS: tuple[str, ...] = ("se", "matern52")
+
+    def __init__(self, bounds: npt.ArrayLike, *, seed: int = 0, kernel: str = "se") -> None:
+        if kernel not in self.KERNELS:
+            raise ValueError(f"GaussianProcessSurrogate: kernel {kernel!r} not in {self.KERNELS}")
         self.bounds = np.asarray(bounds, dtype=np.float64)
         self.seed = seed
+        self.kernel = kernel
 
     def _scale(self, x: npt.ArrayLike) -> FloatArray:
         z = np.atleast_2d(np.asarray(x, dtype=np.float64))
         return (z - self.bounds[:, 0]) / (self.bounds[:, 1] - self.bounds[:, 0])
 
     def fit(self, x: FloatArray, y: FloatArray) -> GaussianProcessSurrogate:
-        kernel = ConstantKernel(1.0) * RBF(np.full(x.shape[1], 0.5), (1e-2, 1e3)) + WhiteKernel(
-            1e-2, (1e-8, 1e1)
+        length = np.full(x.shape[1], 0.5)
+        shape = (
+            RBF(length, (1e-2, 1e3)) if self.kernel == "se" else Matern(length, (1e-2, 1e3), nu=2.5)
         )
+        kernel = ConstantKernel(1.0) * shape + WhiteKernel(1e-2, (1e-8, 1e1))
         self.model_ = GaussianProcessRegressor(kernel, normalize_y=True, random_state=self.seed)
         with warnings.catch_warnings():
             # A length scale at its upper bound means that parameter does not matter: expected.

@@ -1,8 +1,10 @@
 """The surrogate stage of the parameter study (SPEC §6.3): the held-out R² of the SPEC RBF network
 on the Latin hypercube Monte Carlo (SPEC's 200 samples), that of every candidate of
 :mod:`loco.studies.surrogate_selection` on the surrogate's training samples (the Monte Carlo's
-and the extension of :mod:`loco.studies.surrogate_samples`), and which surrogate the Sobol' and
-NSGA-II stages (:mod:`loco.studies.parameter_stages`) use.
+and the extension of :mod:`loco.studies.surrogate_samples`), the nested cross-validation of the
+choice, which surrogate the Sobol' and NSGA-II stages (:mod:`loco.studies.parameter_stages`) use,
+and every candidate's R² on fresh samples (:mod:`loco.studies.surrogate_holdout`): the number
+the requirement of SPEC §6.3 is judged on when they exist.
 
 The models learn log(objective) (:data:`loco.studies.parameter_study.LOG_TARGET`) and are scored on
 the objective itself.
@@ -25,6 +27,7 @@ from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
 from loco.studies.stages import DataFile, Runtime, Stage, encode
 from loco.studies.surrogate import parity_plot
+from loco.studies.surrogate_holdout import assert_disjoint, holdout_scores, r2_interval
 from loco.studies.surrogate_selection import (
     CANDIDATES,
     DESCRIPTIONS,
@@ -54,11 +57,13 @@ def select_surrogates(
     seed: int = 0,
     log_target: bool = LOG_TARGET,
     candidates: Sequence[str] = CANDIDATES,
+    nested: bool = False,
 ) -> list[Selection]:
     """For each objective (column of ``y``), on the samples where it is finite: every candidate
     of :mod:`loco.studies.surrogate_selection` (or of ``candidates``) scored on the same
     ``n_splits`` folds, the best refitted on all of them (``selection.model``, the surrogate
-    Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``)."""
+    Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``); with ``nested``
+    the nested cross-validation of the choice too (``selection.nested``)."""
     out = []
     for j in range(y.shape[1]):
         ok = np.isfinite(y[:, j])
@@ -71,6 +76,7 @@ def select_surrogates(
                 seed=seed,
                 log_target=log_target,
                 candidates=candidates,
+                nested=nested,
             )
         )
     return out
@@ -113,6 +119,7 @@ class Training:
     seed: int = 0
     log_target: bool = LOG_TARGET
     candidates: tuple[str, ...] = CANDIDATES
+    nested: bool = True
 
     def fitted(self) -> tuple[FloatArray, FloatArray, list[Selection]]:
         """The samples (x SI, y objectives) of the tables, stacked, and the surrogates chosen and
@@ -129,6 +136,7 @@ class Training:
                 seed=self.seed,
                 log_target=self.log_target,
                 candidates=self.candidates,
+                nested=self.nested,
             )
             _FITTED.clear()
             _FITTED[key] = (x, y, chosen)
@@ -139,16 +147,18 @@ class Training:
 class SurrogateStage(Stage):
     """The stage ``surrogate`` of ``loco reproduce``: :func:`validate_surrogate` of the
     ``training``, the SPEC network also scored on the first ``spec_samples`` (the Monte
-    Carlo's)."""
+    Carlo's), every candidate on the fresh samples of the table ``holdout`` if given."""
 
     name: ClassVar[str] = "surrogate"
     training: Training
     spec_samples: int
+    holdout: DataFile | None = None
 
     def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
         """:func:`validate_surrogate` into ``out_dir`` (no simulation)."""
         t = self.training
         x, y, chosen = t.fitted()
+        fresh = None if self.holdout is None else load_monte_carlo(self.holdout.path)
         return validate_surrogate(
             x,
             y,
@@ -158,6 +168,7 @@ class SurrogateStage(Stage):
             log_target=t.log_target,
             selections=chosen,
             spec_samples=self.spec_samples,
+            holdout=fresh,
         )
 
 
@@ -171,6 +182,7 @@ def validate_surrogate(
     log_target: bool = LOG_TARGET,
     selections: Sequence[Selection] | None = None,
     spec_samples: int | None = None,
+    holdout: tuple[FloatArray, FloatArray] | None = None,
 ) -> StudyRecord:
     """k-fold held-out R² of the SPEC network (SPEC §6.3) and of the other surrogate candidates
     for each objective, and which one the surrogate Sobol' indices and NSGA-II use
@@ -180,6 +192,10 @@ def validate_surrogate(
     their exponential against the objective itself (scikit-learn ``KFold`` shuffled with
     ``seed``). The first ``spec_samples`` rows (default all) are the Monte Carlo's: the SPEC
     network is also scored on those alone (:func:`spec_scores`), the R² SPEC §6.3 asks about.
+    ``holdout`` (x, y) are fresh samples, disjoint from ``x`` (checked): every candidate fitted on
+    all of ``x`` is scored on them (:func:`~loco.studies.surrogate_holdout.holdout_scores`, with
+    a bootstrap 95 % interval for the one used), and whether the requirement is met is judged on
+    that score.
 
     Writes ``surrogate_r2.csv`` (R² per model and fold on every sample),
     ``surrogate_selection.csv`` (mean and worst-fold R² per model, hyperparameters, which was
@@ -190,6 +206,8 @@ def validate_surrogate(
     """
     if selections is None:
         selections = select_surrogates(x, y, n_splits=n_splits, seed=seed, log_target=log_target)
+    if holdout is not None:
+        assert_disjoint(x, holdout[0])
     n_spec = len(x) if spec_samples is None else spec_samples
     spec = spec_scores(x[:n_spec], y[:n_spec], n_splits=n_splits, seed=seed, log_target=log_target)
     folds, predictions, rows, figures, spec_folds = [], [], [], [], []
@@ -217,6 +235,17 @@ def validate_surrogate(
                 "hyperparameters": json.dumps(jsonable(score.hyperparameters)),
             })  # fmt: skip
         predictions.append(frame)
+        fresh: dict[str, Any] = {}
+        if holdout is not None:
+            held = holdout_scores(sel, holdout[0], holdout[1][:, j], log_target=log_target)
+            okh = np.isfinite(holdout[1][:, j])
+            p = sel.model.predict(holdout[0][okh])
+            lo, hi = r2_interval(holdout[1][okh, j], np.exp(p) if log_target else p, seed=seed)
+            for row in rows:
+                if row["objective"] == objective.label:
+                    row["holdout_r2"] = held[str(row["model"])]
+            fresh = {"holdout_r2": held, "holdout_r2_used": held[sel.chosen],
+                     "holdout_r2_used_95": [lo, hi], "holdout_samples": int(okh.sum())}  # fmt: skip
         ok_spec = np.isfinite(y[:n_spec, j])
         for kind, suffix, truth, predicted, n in (
             (SPEC_MODEL, "", y[:n_spec][ok_spec, j], spec[j].predictions, int(ok_spec.sum())),
@@ -239,7 +268,12 @@ def validate_surrogate(
             "spec_samples": int(ok_spec.sum()),
             "used": sel.chosen,
             "used_r2_mean": sel.scores[sel.chosen].r2_mean,
-            "meets_r2_required": sel.meets_requirement,
+            "nested_selection_r2": None if sel.nested is None else sel.nested.r2_mean,
+            "nested_choices": None if sel.nested is None else list(sel.nested.chosen),
+            "meets_r2_required": (
+                fresh["holdout_r2_used"] >= R2_REQUIRED if fresh else sel.meets_requirement
+            ),
+            **fresh,
             "why": sel.reason(),
             "r2_mean": {k: v.r2_mean for k, v in sel.scores.items()},
             "n_samples": int(ok.sum()),
@@ -251,6 +285,7 @@ def validate_surrogate(
         "log_target": log_target,
         "training_samples": len(x),
         "spec_samples": n_spec,
+        "holdout_samples": 0 if holdout is None else len(holdout[0]),
         **selection_settings(n_splits),
         "r2": summary,
     }
@@ -269,6 +304,22 @@ def validate_surrogate(
             for k, v in summary.items()
         )
         + f". Surrogate used by the surrogate Sobol' indices and NSGA-II: {used}. "
+        + "".join(
+            f"{k}: nested cross-validation of the choice {v['nested_selection_r2']:.3f}. "
+            for k, v in summary.items()
+            if v["nested_selection_r2"] is not None
+        )
+        + (
+            "On fresh samples used neither to train nor to choose (judged on these): "
+            + "; ".join(
+                f"{k} {v['holdout_r2_used']:.3f} (95 % [{v['holdout_r2_used_95'][0]:.3f}, "
+                f"{v['holdout_r2_used_95'][1]:.3f}], {v['holdout_samples']} samples)"
+                for k, v in summary.items()
+            )
+            + ". "
+            if holdout is not None
+            else ""
+        )
         + (
             f"Both objectives reach R² ≥ {R2_REQUIRED}."
             if met
