@@ -9,8 +9,8 @@ Three paths, each in one child process under a memory and CPU-time limit (as
   count or of the wrong type is a :class:`loco.ParameterError` (a
   :class:`loco.ParameterRangeError` for the range) naming the key; an in-range value builds.
 - ``file``: the value written into the vehicle file (TOML ``nan``, ``inf``, a string, a bool, an
-  array): the same errors naming the key (a wrong TOML type is the file's format error, naming the
-  file's line and the key); an in-range value builds.
+  array): the same errors naming the key (a wrong TOML type is a :class:`loco.ParameterError`
+  naming the file's line and the key, never the file's format error); an in-range value builds.
 - ``runs``: the values a build accepts (in range, or outside it with the key in the file's
   ``allow_out_of_range``: 0, −1, 1e±30, −1e30, just outside, and both ends of the range) run,
   each as one sample of a batch (the batch shares what a sample does not change: the contact
@@ -210,6 +210,12 @@ def _judge(case: dict[str, Any]) -> str | None:
     if outcome != "error":
         return f"{label}: {outcome} {case.get('type')}: {case.get('message')}"
     message = case["message"]
+    # In the file, a value's fault is the parameter's, at its line (a range error names the range).
+    if case["path"] == "file" and not (
+        case["type"] == "ParameterRangeError"
+        or (case["type"] == "ParameterError" and message.startswith("fuzz.toml:"))
+    ):
+        return f"{label}: not a parameter error at its line: {case['type']}: {message}"
     if case["path"] == "run" and case["inside"]:
         # A physical vehicle: it runs, unless it is a listed stiff or uncarried end.
         end = case.get("end")
