@@ -136,6 +136,16 @@ impl LocoError {
     }
 }
 
+/// `Interrupted` once `cancel` (set from another thread: Ctrl-C in Python) is set. Long loops call
+/// it once per step, sample, frequency or bisection, so that a stop request ends them there.
+pub fn check_cancel(cancel: Option<&std::sync::atomic::AtomicBool>) -> Result<()> {
+    if cancel.is_some_and(|flag| flag.load(std::sync::atomic::Ordering::Relaxed)) {
+        Err(LocoError::Interrupted)
+    } else {
+        Ok(())
+    }
+}
+
 /// Checks that `value` is finite and strictly positive; the error names `name`.
 pub fn check_positive(name: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
