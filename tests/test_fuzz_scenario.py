@@ -130,11 +130,8 @@ def run_case(field: str, value: Any) -> dict[str, Any]:
 def _judge(label: str, field: str, answer: dict[str, Any]) -> str | None:
     """What is wrong with an answer (None: fine)."""
     if answer["outcome"] == "error":
-        # The field by its name; a wrong profile or scenario name is refused naming either.
-        named = f"`{field}`" in answer["message"] or (
-            field in ("scenario", "rail") and ("`wheel`" in answer["message"]
-                                               or "`name`" in answer["message"])
-        )  # fmt: skip
+        # The field by its Python name, never the core's spelling of it.
+        named = f"`{field}`" in answer["message"]
         return None if named else f"{label}: error does not name `{field}`: {answer['message']}"
     if answer["outcome"] == "run":
         if answer["samples"] < 2 or not answer["finite_channels"] or answer["metrics_inf"]:
