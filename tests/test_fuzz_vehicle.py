@@ -50,11 +50,6 @@ FILE_WRONG_TYPES = ['"1.0"', "true", "[1.0]", "{ a = 1 }"]
 #: Values run with the key allowed outside its range.
 RUN_NUMBERS = [0.0, -1.0, 1e30, 1e-30]
 
-#: Physical values whose static equilibrium is beyond a run's bounds (the carbody sinks more
-#: than 1 m on the softest flexicoils under this carbody): an equilibrium error naming the
-#: coordinate, key -> the range's end.
-UNCARRIED = {"secondary.flexicoil_vertical_stiffness": "min"}
-
 
 def outside(spec: Any) -> list[float]:
     """Just below and just above the range (0.1 % of its span, at least 1 for a count)."""
@@ -204,10 +199,7 @@ def _judge(case: dict[str, Any]) -> str | None:
     ):
         return f"{label}: not a parameter error at its line: {case['type']}: {message}"
     if case["path"] == "run" and case["inside"]:
-        # A physical vehicle: it runs, unless it is a listed stiff or uncarried end.
-        end = case.get("end")
-        if UNCARRIED.get(case["key"]) == end and "equilibrium" in message:
-            return None
+        # A physical vehicle: it runs, every end of every range included.
         return f"{label}: a physical value fails: {message}"
     return None if f"`{case['key']}`" in message else f"{label}: not named: {message}"
 
@@ -241,8 +233,7 @@ def test_every_vehicle_parameter_gives_a_typed_error_naming_it_or_a_finite_run(p
         assert outcomes.count("run") > len(keys)
         ran = {(c["key"], c["end"]) for c in cases if c["outcome"] == "run"}
         ends = {(k, e) for k in keys for e in ("min", "max")}
-        expected = ends - set(UNCARRIED.items())
-        assert expected <= ran, sorted(expected - ran)
+        assert ends <= ran, sorted(ends - ran)
 
 
 def _main(path: str) -> None:
