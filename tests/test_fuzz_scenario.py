@@ -56,9 +56,17 @@ REAL_FIELDS = [
 ]
 WHOLE_FIELDS = ["seed"]
 PAIR_FIELDS = {"band": (2.0, 200.0), "fastsim_grid": (10, 10)}
-TEXT_FIELDS = ["spectrum", "creep", "scenario", "rail", "fsd_trigger"]
+TEXT_FIELDS = ["spectrum", "creep", "scenario", "wheel", "rail", "fsd_trigger"]
 FLAG_FIELDS: list[str] = []
-OBJECT_FIELDS = ["track", "yaw_damper"]
+OBJECT_FIELDS = ["track", "yaw_damper", "curve"]
+#: A valid curve section; each of its fields gets every fuzz value in turn (`curve[i].field`).
+CURVE_SECTION: dict[str, Any] = {
+    "kind": "curve",
+    "length_m": 50.0,
+    "radius_m": 2000.0,
+    "cant_mm": 50.0,
+    "direction": "left",
+}
 
 #: The base run: short, every field else at its default.
 BASE: dict[str, Any] = {"scenario": "S_norm", "speed": 200 / 3.6, "distance": 20.0}
@@ -82,6 +90,10 @@ def cases() -> list[tuple[str, str, Any]]:
         out += [(f"{field}={v!r}", field, v) for v in [1, 0.0, "yes", None]]
     for field in OBJECT_FIELDS:
         out += [(f"{field}={v!r}", field, v) for v in [3.0, "nonsense-object", [1, 2]]]
+    for key in [*CURVE_SECTION, "cant_run_off_m"]:
+        for v in [*NUMBERS, *WRONG_TYPES, "", "nonsense"]:
+            out.append((f"curve[0].{key}={v!r}", "curve", [{**CURVE_SECTION, key: v}]))
+    out += [(f"curve={v!r}", "curve", v) for v in [[], [{}], {"kind": "curve"}, None]]
     return out
 
 
@@ -104,8 +116,9 @@ def run_case(field: str, value: Any) -> dict[str, Any]:
     signal.signal(signal.SIGALRM, timeout)
     signal.alarm(CASE_SECONDS)
     settings = {**BASE, field: value}
-    if field == "rail":
-        settings = {"wheel": "jm3-new", "rail": value, "speed": BASE["speed"],
+    if field in ("wheel", "rail"):
+        # A profile by name, without the scenario's pair of them.
+        settings = {"wheel": "jm3-new", field: value, "speed": BASE["speed"],
                     "distance": BASE["distance"]}  # fmt: skip
     try:
         result = loco.simulate(loco.Locomotive.default(), loco.Scenario(**settings))
@@ -130,12 +143,11 @@ def run_case(field: str, value: Any) -> dict[str, Any]:
 def _judge(label: str, field: str, answer: dict[str, Any]) -> str | None:
     """What is wrong with an answer (None: fine)."""
     if answer["outcome"] == "error":
-        # The field by its name; a wrong profile or scenario name is refused naming either.
-        named = f"`{field}`" in answer["message"] or (
-            field in ("scenario", "rail") and ("`wheel`" in answer["message"]
-                                               or "`name`" in answer["message"])
-        )  # fmt: skip
-        return None if named else f"{label}: error does not name `{field}`: {answer['message']}"
+        # The field by its Python name, never the core's spelling of it (a curve section's
+        # field as `curve section 1 (radius_m)`).
+        message = answer["message"]
+        named = f"`{field}`" in message or f"`{field} section " in message
+        return None if named else f"{label}: error does not name `{field}`: {message}"
     if answer["outcome"] == "run":
         if answer["samples"] < 2 or not answer["finite_channels"] or answer["metrics_inf"]:
             return f"{label}: silent nonsense {answer}"

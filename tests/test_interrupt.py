@@ -122,3 +122,77 @@ def test_many_sigints_across_the_bindings() -> None:
         if a["call"] == "campaign":
             # Every chunk reported finished was stored: the rerun reads them back.
             assert a["reused"] >= a["finished_before"] and a["complete"], a
+
+
+#: The linear calls (critical speed by bisection, FRF, response PSD), each made long: a 50 × 50
+#: FASTSIM grid and a tolerance below the floats' spacing (≈60 linearisations, ~5 s idle), 2e5
+#: frequencies (~1 min). A Python thread ticks while the call runs: ticks show the GIL released.
+LINEAR = r"""
+import json, os, signal, sys, threading, time
+import numpy as np
+import loco
+
+vehicle = loco.Locomotive.default()
+fine = loco.Scenario(scenario="S_high", fastsim_grid=(50, 50))
+plain = loco.Scenario(scenario="S_high")
+many = np.linspace(0.1, 20.0, 200_000)
+calls = {
+    "critical_speed_linear": lambda: loco.critical_speed(vehicle, fine, method="linear",
+                                                         tolerance=1e-300, low=1.0, high=1000.0),
+    "frequency_response": lambda: loco.frequency_response(vehicle, plain, frequencies=many),
+    "response_psd": lambda: loco.response_psd(vehicle, plain, frequencies=many),
+}
+for name, delay in zip(sys.argv[1::2], map(float, sys.argv[2::2])):
+    ticks = []
+    stop = threading.Event()
+    def tick():
+        while not stop.wait(0.01):
+            ticks.append(1)
+    ticker = threading.Thread(target=tick)
+    timer = threading.Timer(delay, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.perf_counter()
+    ticker.start()
+    timer.start()
+    try:
+        calls[name]()
+        outcome = "finished"
+    except KeyboardInterrupt:
+        outcome = "interrupted"
+    except BaseException as e:
+        outcome = f"{type(e).__name__}: {e}"
+    late = time.perf_counter() - start - delay
+    timer.cancel()
+    stop.set()
+    ticker.join()
+    print(json.dumps({"call": name, "delay": delay, "late": late, "outcome": outcome,
+                      "ticks": len(ticks)}), flush=True)
+"""
+
+
+def test_sigint_stops_the_linear_calls() -> None:
+    import json
+
+    # Early (in the linearisation or the first solves) and later (inside the loop).
+    plan = [
+        (call, delay)
+        for call in ("critical_speed_linear", "frequency_response", "response_psd")
+        for delay in (0.3, 1.2)
+    ]
+    done = subprocess.run(
+        [sys.executable, "-c", LINEAR, *(str(x) for pair in plan for x in pair)],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert "Panic" not in done.stderr and "panicked" not in done.stderr, done.stderr
+    answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
+    assert [(a["call"], a["delay"]) for a in answers] == plan
+    for a in answers:
+        assert a["outcome"] == "interrupted", a
+        # Within one linearisation or a few frequencies of the signal (a linearisation and the
+        # Hessenberg reduction before the first frequency are not interruptible: < 1 s idle).
+        assert a["late"] < 5.0, a
+        # The GIL was free during the call: the ticker ran (~100 per second).
+        assert a["ticks"] > 10 * a["delay"], a

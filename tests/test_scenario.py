@@ -70,9 +70,10 @@ def test_settings_are_checked_by_the_core_naming_the_field() -> None:
         loco.Scenario(scenario="S_high", speed="fast").native()  # type: ignore[arg-type]
     with pytest.raises(loco.ParameterError, match="gauge"):
         loco.Scenario(scenario="S_high", gauge=-1.0).native()
-    with pytest.raises(loco.ParameterError, match="name"):
+    # By the Python spelling `scenario`, not the study file's `name`.
+    with pytest.raises(loco.ParameterError, match=r"`scenario`.*`scenario`.*`wheel`"):
         loco.Scenario(scenario="S_high", wheel="jm3-new").native()
-    with pytest.raises(loco.ParameterError, match="scenario"):
+    with pytest.raises(loco.ParameterError, match="`scenario`: unknown scenario 'S_mid'"):
         loco.Scenario(scenario="S_mid").native()
 
 

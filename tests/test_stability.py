@@ -60,6 +60,16 @@ def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:
     assert "already unstable at the lowest searched speed 100.00 m/s" in below.reason
 
 
+def test_a_tolerance_below_the_float_spacing_ends_at_the_float_resolution() -> None:
+    # Once a hang: halving a bracket of adjacent floats gives one of its ends, which never
+    # shrinks it below 1e-300. The search ends where the bracket cannot shrink any more.
+    vehicle = loco.Locomotive.default()
+    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    exact = loco.critical_speed(vehicle, scenario, tolerance=1e-300)
+    coarse = loco.critical_speed(vehicle, scenario, tolerance=1e-6)
+    assert exact.found and abs(exact - coarse) < 1e-6
+
+
 def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
     # Worn wheels hunt subcritically: after a disturbance well above the linear critical speed
     # the limit cycle survives below it, so a ramp-down loses it at or below that speed.

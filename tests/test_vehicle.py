@@ -100,10 +100,33 @@ def test_vehicle_from_a_parameter_file(tmp_path: Path) -> None:
     with pytest.raises(loco.ParameterError, match=r"carbody\.mass"):
         loco.Locomotive.from_toml(path)
     path.write_text("[carbody]\nmass = { value = 1.0, unit = 'kg' }\n", encoding="utf-8")
-    with pytest.raises(loco.ProfileFormatError, match=r"heavier\.toml"):
+    with pytest.raises(loco.ParameterError, match=r"heavier\.toml:2: .*`carbody\.mass`.*source"):
+        loco.Locomotive.from_toml(path)
+    path.write_text("[carbody\n", encoding="utf-8")
+    with pytest.raises(loco.ProfileFormatError, match=r"heavier\.toml:1"):
         loco.Locomotive.from_toml(path)
     with pytest.raises(loco.LocoIOError):
         loco.Locomotive.from_toml(tmp_path / "missing.toml")
+
+
+@pytest.mark.parametrize(
+    ("value", "given"),
+    [('"44000.0"', 'string "44000.0"'), ("true", "boolean true"), ("[44000.0]", "array")],
+)
+def test_a_file_value_of_the_wrong_type_names_the_key_and_line(
+    tmp_path: Path, value: str, given: str
+) -> None:
+    text = loco.Locomotive.default().default_toml()
+    old = 'mass = { value = 42000.0, unit = "kg"'
+    line = text[: text.index(old)].count("\n") + 1
+    path = tmp_path / "typed.toml"
+    path.write_text(text.replace("value = 42000.0", f"value = {value}", 1), encoding="utf-8")
+    with pytest.raises(loco.ParameterError) as raised:
+        loco.Locomotive.from_toml(path)
+    assert not isinstance(raised.value, loco.ProfileFormatError)
+    message = str(raised.value)
+    assert message.startswith(f"{path}:{line}: invalid parameter `carbody.mass`"), message
+    assert f"`value` must be a number, got {given}" in message, message
 
 
 def test_lead_in_is_run_but_not_recorded() -> None:

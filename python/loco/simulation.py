@@ -218,7 +218,14 @@ class Scenario:
                 settings[_CORE_NAMES.get(name, name)] = (
                     value if check is None else check(name, value)
                 )
-        return _loco.RunScenario(settings, **objects)
+        try:
+            return _loco.RunScenario(settings, **objects)
+        except _loco.ParameterError as e:
+            # The core names its own spelling (the study file's `name`); the user wrote this one.
+            message = str(e)
+            for python, core in _CORE_NAMES.items():
+                message = message.replace(f"`{core}`", f"`{python}`")
+            raise type(e)(message) from None
 
 
 #: The settings of a :class:`Scenario`, in the order of its signature.

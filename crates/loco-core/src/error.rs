@@ -26,6 +26,19 @@ pub enum LocoError {
         unit: String,
     },
 
+    /// A parameter of a file is unusable where the file states it: a value of the wrong type (a
+    /// string where a number is expected, ...), an unknown key or field, a unit of another
+    /// quantity, a non-finite value or a fractional count. `name` is the parameter's key, `line`
+    /// its 1-based line in the file `path` (0: not found). A parameter error, not a format error:
+    /// the file is valid TOML and the fault is the one parameter's.
+    #[error("{path}:{line}: invalid parameter `{name}`: {reason}")]
+    InvalidParameterInFile {
+        path: String,
+        line: usize,
+        name: String,
+        reason: String,
+    },
+
     /// An array or record is unusable: wrong shape or length, too short, NaN inside,
     /// not monotonic. `name` names the argument (and the row or column where it helps).
     #[error("invalid input `{name}`: {reason}")]
@@ -120,6 +133,16 @@ impl LocoError {
                 .unwrap_or(0),
             reason: e.message().to_string(),
         }
+    }
+}
+
+/// `Interrupted` once `cancel` (set from another thread: Ctrl-C in Python) is set. Long loops call
+/// it once per step, sample, frequency or bisection, so that a stop request ends them there.
+pub fn check_cancel(cancel: Option<&std::sync::atomic::AtomicBool>) -> Result<()> {
+    if cancel.is_some_and(|flag| flag.load(std::sync::atomic::Ordering::Relaxed)) {
+        Err(LocoError::Interrupted)
+    } else {
+        Ok(())
     }
 }
 

@@ -1,5 +1,6 @@
 //! Failures of the model name what caused them: the RK4 step against the vehicle's stiffest mode
-//! (the predicted limit separates steps that run from steps that are refused), and parameters
+//! (the predicted limit separates steps that run, divided into a few substeps where needed, from
+//! steps that are refused), and parameters
 //! allowed outside their physical range as suspects of an equilibrium or a divergence.
 
 use loco_core::vehicle::parameters::ParameterSet;
@@ -8,7 +9,7 @@ use loco_core::vehicle::scenario::{
 };
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{
-    static_equilibrium, stiffest_mode, StaticsSettings, RK4_IMAGINARY_LIMIT,
+    static_equilibrium, stiffest_mode, StaticsSettings, MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
 };
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
@@ -50,8 +51,10 @@ fn the_default_vehicle_is_stable_at_the_default_step() {
 }
 
 #[test]
-fn a_step_beyond_the_stiffest_modes_limit_is_refused_naming_step_and_a_shorter_one_runs() {
-    // Quill bearings 20 times the default stiffness: the hollow shafts' bearing mode.
+fn a_step_beyond_the_stiffest_modes_limit_is_divided_and_far_beyond_refused_naming_step() {
+    // Quill bearings twice the stiffest of the range: the hollow shafts' bearing mode needs a
+    // few substeps of the 1 ms step. The run takes the longest stable whole fraction of it and
+    // is then the run of that explicit step, sample for sample.
     let key = "hollow_shaft.bearing_radial_stiffness";
     let set = research(key, 2e10);
     let (omega, coordinate) = stiffest(set.clone());
@@ -60,6 +63,23 @@ fn a_step_beyond_the_stiffest_modes_limit_is_refused_naming_step_and_a_shorter_o
         coordinate.starts_with("hollow_shaft") || coordinate.starts_with("motor"),
         "{coordinate}"
     );
+    let k = (omega * 1e-3 / RK4_IMAGINARY_LIMIT).ceil();
+    assert!((2.0..=MAX_SUBSTEPS).contains(&k), "{k}");
+    let divided = simulate(set.clone(), &scenario(1e-3)).unwrap();
+    let explicit = simulate(set, &scenario(1e-3 / k)).unwrap();
+    assert_eq!(divided.output, explicit.output);
+    assert_eq!(divided.statistics.steps, explicit.statistics.steps);
+    assert!(divided
+        .output
+        .channels
+        .iter()
+        .flatten()
+        .all(|v| v.is_finite()));
+    // A hundred times stiffer: more than MAX_SUBSTEPS, refused naming the step, the mode's
+    // coordinate and the out-of-range stiffness as the suspect.
+    let set = research(key, 2e12);
+    let (omega, coordinate) = stiffest(set.clone());
+    assert!(omega * 1e-3 > MAX_SUBSTEPS * RK4_IMAGINARY_LIMIT, "{omega}");
     let e = simulate(set.clone(), &scenario(1e-3))
         .unwrap_err()
         .to_string();

@@ -86,9 +86,9 @@ create_exception!(
 pub fn to_py_err(err: CoreError) -> PyErr {
     let msg = err.to_string();
     match err {
-        CoreError::InvalidParameter { .. } | CoreError::InvalidInput { .. } => {
-            ParameterError::new_err(msg)
-        }
+        CoreError::InvalidParameter { .. }
+        | CoreError::InvalidParameterInFile { .. }
+        | CoreError::InvalidInput { .. } => ParameterError::new_err(msg),
         CoreError::OutOfRange { .. } => ParameterRangeError::new_err(msg),
         CoreError::Parse { .. } => ProfileFormatError::new_err(msg),
         CoreError::Io { .. } => LocoIOError::new_err(msg),

@@ -2,17 +2,19 @@
 //! the linearised vehicle from track irregularity channels to recorded channels, and output
 //! spectra on a random track.
 
-use crate::errors::run_detached;
+use crate::errors::run_detached_monitored;
 use crate::scenario::PyRunScenario;
 use crate::vehicle_handle::PyVehicle;
 use loco_core::track::{Channel, TrackSpectrum};
 use loco_core::vehicle::frequency_response::{check_frequencies, ResponseSolver};
-use loco_core::vehicle::response_psd::{response_psd as core_response_psd, PsdSettings};
+use loco_core::vehicle::response_psd::{response_psd_cancellable, PsdSettings};
 use loco_core::vehicle::track_input::scenario_track_model;
 use loco_core::LocoError;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{Complex64, IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1};
 use pyo3::prelude::*;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 /// Input channel names parsed, errors naming the field `inputs`.
 fn channels(inputs: &[String]) -> loco_core::Result<Vec<Channel>> {
@@ -54,14 +56,22 @@ fn frequency_response<'py>(
     let scenario = scenario.inner.clone();
     let structure = std::sync::Arc::clone(&vehicle.structure);
     let frequencies = frequencies.as_array().to_vec();
-    let (h, speed, wheelset_x, shape) = run_detached(py, move || {
+    // On a worker thread, so that Ctrl-C (checked every 100 ms) stops it between frequencies.
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker_cancel = Arc::clone(&cancel);
+    let work = move || {
         let inputs = channels(&inputs)?;
         check_frequencies(&frequencies)?;
         let model = scenario_track_model(structure, &scenario)?;
-        let h = ResponseSolver::new(&model, &outputs)?.response(&inputs, &frequencies)?;
+        let h = ResponseSolver::new(&model, &outputs)?.response_cancellable(
+            &inputs,
+            &frequencies,
+            Some(&worker_cancel),
+        )?;
         let shape = (outputs.len(), inputs.len(), frequencies.len());
         Ok((h.h, h.speed, h.wheelset_x.to_vec(), shape))
-    })?;
+    };
+    let (h, speed, wheelset_x, shape) = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     let array = Array3::from_shape_vec(shape, h)
         .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;
     Ok((array.into_pyarray(py), speed, wheelset_x))
@@ -91,7 +101,9 @@ fn response_psd<'py>(
     let structure = std::sync::Arc::clone(&vehicle.structure);
     let frequencies = frequencies.as_array().to_vec();
     let n_out = outputs.len();
-    let result = run_detached(py, move || {
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker_cancel = Arc::clone(&cancel);
+    let work = move || {
         let settings = PsdSettings {
             spectrum: TrackSpectrum::from_name(&spectrum)?,
             wavelength_min: band.0,
@@ -102,8 +114,15 @@ fn response_psd<'py>(
         settings.validate()?;
         check_frequencies(&frequencies)?;
         let model = scenario_track_model(structure, &scenario)?;
-        core_response_psd(&model, &outputs, &frequencies, &settings)
-    })?;
+        response_psd_cancellable(
+            &model,
+            &outputs,
+            &frequencies,
+            &settings,
+            Some(&worker_cancel),
+        )
+    };
+    let result = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     let nf = result.frequencies.len();
     let psd = Array2::from_shape_vec((n_out, nf), result.psd.concat())
         .map_err(|e| crate::errors::InternalError::new_err(e.to_string()))?;

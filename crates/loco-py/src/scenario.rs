@@ -67,8 +67,20 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         return Ok(toml::Value::Float(x));
     }
     if value.cast::<PyList>().is_ok() || value.cast::<PyTuple>().is_ok() {
-        let items: PyResult<Vec<toml::Value>> =
-            value.try_iter()?.map(|v| toml_value(key, &v?)).collect();
+        // A list of dicts is a list of sections (`curve`), whose fields the core names as
+        // `curve section 2 (radius_m)`; other items are named by the setting.
+        let items: PyResult<Vec<toml::Value>> = value
+            .try_iter()?
+            .enumerate()
+            .map(|(i, v)| {
+                let v = v?;
+                if v.cast::<PyDict>().is_ok() {
+                    toml_value(&format!("{key} section {}", i + 1), &v)
+                } else {
+                    toml_value(key, &v)
+                }
+            })
+            .collect();
         return Ok(toml::Value::Array(items?));
     }
     if let Ok(dict) = value.cast::<PyDict>() {
@@ -76,7 +88,7 @@ fn toml_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         for (k, v) in dict.iter() {
             let k: String = k.extract()?;
             if !v.is_none() {
-                let v = toml_value(&format!("{key}.{k}"), &v)?;
+                let v = toml_value(&format!("{key} ({k})"), &v)?;
                 table.insert(k, v);
             }
         }

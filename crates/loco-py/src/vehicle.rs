@@ -8,9 +8,7 @@ use crate::vehicle_handle::PyVehicle;
 use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
-use loco_core::vehicle::linearise::{
-    linear_critical_speed as core_linear_critical_speed, LinearSearch,
-};
+use loco_core::vehicle::linearise::{linear_critical_speed_cancellable, LinearSearch};
 use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, MOTIONS};
 use loco_core::vehicle::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;
@@ -258,19 +256,24 @@ fn linear_critical_speed(
         band: band.unwrap_or(default.band),
         ..default
     };
-    let speed = run_detached(py, move || {
-        core_linear_critical_speed(structure, &scenario, &search)
-    })?;
+    let (searched_low, searched_high) = (search.low, search.high);
+    // On a worker thread, so that Ctrl-C (checked every 100 ms) stops it between linearisations.
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker_cancel = Arc::clone(&cancel);
+    let work = move || {
+        linear_critical_speed_cancellable(structure, &scenario, &search, Some(&worker_cancel))
+    };
+    let speed = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
     // The core returns exactly `inf` and `low` for the two ends of the bracket; a bisection
     // result lies strictly inside it.
     let outcome = if speed.is_infinite() {
         "stable_at_high"
-    } else if speed == search.low {
+    } else if speed == searched_low {
         "unstable_at_low"
     } else {
         "found"
     };
-    Ok((speed, outcome, search.low, search.high))
+    Ok((speed, outcome, searched_low, searched_high))
 }
 
 /// What `ramp_down` returns: critical speed (m/s), outcome (`"died_out"`, `"stable_at_start"`,

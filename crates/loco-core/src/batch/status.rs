@@ -71,6 +71,7 @@ impl SampleStatus {
     pub fn from_error(error: &LocoError) -> Self {
         match error {
             LocoError::InvalidParameter { .. }
+            | LocoError::InvalidParameterInFile { .. }
             | LocoError::OutOfRange { .. }
             | LocoError::InvalidInput { .. }
             | LocoError::Parse { .. }

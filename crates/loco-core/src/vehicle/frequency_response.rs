@@ -17,10 +17,11 @@
 use super::layout::N_WHEELSETS;
 use super::shifted_hessenberg::{ShiftedHessenberg, C64};
 use super::track_input::{TrackInputModel, RAIL_INPUTS};
-use crate::error::{LocoError, Result};
+use crate::error::{check_cancel, LocoError, Result};
 use crate::track::Channel;
 use nalgebra::DMatrix;
 use std::f64::consts::PI;
+use std::sync::atomic::AtomicBool;
 
 /// Transfer functions `H[output][input](f)`, output unit per m of irregularity.
 #[derive(Debug, Clone, PartialEq)]
@@ -172,6 +173,17 @@ impl ResponseSolver {
         inputs: &[Channel],
         frequencies: &[f64],
     ) -> Result<FrequencyResponse> {
+        self.response_cancellable(inputs, frequencies, None)
+    }
+
+    /// As [`Self::response`]; `cancel`, when set from another thread, stops it with
+    /// `Interrupted` before the next frequency.
+    pub fn response_cancellable(
+        &mut self,
+        inputs: &[Channel],
+        frequencies: &[f64],
+        cancel: Option<&AtomicBool>,
+    ) -> Result<FrequencyResponse> {
         check_frequencies(frequencies)?;
         if inputs.is_empty() {
             return Err(LocoError::param("inputs", "must not be empty"));
@@ -182,6 +194,7 @@ impl ResponseSolver {
         let mut rhs = vec![vec![C64::new(0.0, 0.0); n]; r];
         let mut feed = vec![vec![C64::new(0.0, 0.0); m]; r];
         for (fi, &f) in frequencies.iter().enumerate() {
+            check_cancel(cancel)?;
             let omega = 2.0 * PI * f;
             let k = omega / self.speed;
             for (ii, channel) in inputs.iter().enumerate() {

@@ -52,9 +52,10 @@ use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
 use super::structure::IntoVehicle;
-use crate::error::{check_positive, LocoError, Result};
+use crate::error::{check_cancel, check_positive, LocoError, Result};
 use nalgebra::linalg::balancing::balance_parlett_reinsch;
 use nalgebra::{Complex, DMatrix, Schur};
+use std::sync::atomic::AtomicBool;
 
 /// Half the default contact table's grid step, m (5e-5): a central difference of this half-width
 /// spans one table cell; the default `contact_step`.
@@ -251,6 +252,17 @@ pub fn linear_critical_speed(
     scenario: &Scenario,
     search: &LinearSearch,
 ) -> Result<f64> {
+    linear_critical_speed_cancellable(vehicle, scenario, search, None)
+}
+
+/// As [`linear_critical_speed`]; `cancel`, when set from another thread, stops the search with
+/// `Interrupted` before its next linearisation.
+pub fn linear_critical_speed_cancellable(
+    vehicle: impl IntoVehicle,
+    scenario: &Scenario,
+    search: &LinearSearch,
+    cancel: Option<&AtomicBool>,
+) -> Result<f64> {
     scenario.validate()?;
     let low = check_positive("low", search.low)?;
     let high = check_positive("high", search.high)?;
@@ -263,6 +275,7 @@ pub fn linear_critical_speed(
     }
     let vehicle = PerfectTrackVehicle::new(vehicle, scenario)?;
     let zeta = |speed: f64| -> Result<f64> {
+        check_cancel(cancel)?;
         let mut system = vehicle.system(speed)?;
         let (a, _) = linearise_with(&mut system, &search.linearisation)?;
         let mode = least_damped(&a, system.len_states(), search.band)?;
@@ -278,6 +291,11 @@ pub fn linear_critical_speed(
     }
     while high - low > tolerance {
         let mid = 0.5 * (low + high);
+        // A tolerance below the spacing of floats near the speed: the bracket cannot shrink
+        // further (`mid` is one of its ends), and the loop would never end.
+        if mid <= low || mid >= high {
+            break;
+        }
         if zeta(mid)? > 0.0 {
             low = mid;
         } else {

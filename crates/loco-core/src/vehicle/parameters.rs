@@ -82,11 +82,16 @@ impl ParameterSet {
             .unwrap_or_else(|e| panic!("embedded vehicle file is invalid: {e}"))
     }
 
-    /// Parses and checks a vehicle file; `origin` names it in error messages.
+    /// Parses and checks a vehicle file; `origin` names it in error messages. A file that is not
+    /// TOML is a [`LocoError::Parse`]; a fault of one parameter (wrong type, unknown key or
+    /// field, foreign unit, non-finite value, fractional count) a
+    /// [`LocoError::InvalidParameterInFile`] naming the key and its line; a value outside its
+    /// range a [`LocoError::OutOfRange`].
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self> {
-        let parse_err = |line: usize, reason: String| LocoError::Parse {
+        let bad = |name: &str, line: usize, reason: String| LocoError::InvalidParameterInFile {
             path: origin.to_string(),
             line,
+            name: name.to_string(),
             reason,
         };
         let table: toml::Table =
@@ -94,60 +99,54 @@ impl ParameterSet {
         let mut allow = BTreeSet::new();
         let mut given: Vec<(String, FileParameter, usize)> = Vec::new();
         for (top, item) in table {
+            let line = line_of(text, None, &top);
             if top == ALLOW_OUT_OF_RANGE {
-                let line = line_of(text, None, &top);
-                let names: Vec<String> = item.try_into().map_err(|_| {
-                    parse_err(line, format!("`{top}` must be a list of parameter keys"))
-                })?;
+                let names: Vec<String> = item
+                    .try_into()
+                    .map_err(|_| bad(&top, line, "must be a list of parameter keys".to_string()))?;
                 for name in names {
                     if spec(&name).is_none() {
-                        return Err(parse_err(
-                            line,
-                            format!("`{top}`: `{name}`: {}", unknown_key_reason(&name)),
-                        ));
+                        let reason = format!("`{name}`: {}", unknown_key_reason(&name));
+                        return Err(bad(&top, line, reason));
                     }
                     allow.insert(name);
                 }
                 continue;
             }
             let toml::Value::Table(params) = item else {
-                let line = line_of(text, None, &top);
-                return Err(parse_err(
-                    line,
-                    format!(
-                        "`{top}`: expected a [section] of parameters or `{ALLOW_OUT_OF_RANGE}`"
-                    ),
-                ));
+                let reason = format!(
+                    "expected a [section] of parameters or `{ALLOW_OUT_OF_RANGE}`, got {}",
+                    describe(&item)
+                );
+                return Err(bad(&top, line, reason));
             };
             for (name, value) in params {
                 let key = format!("{top}.{name}");
                 let line = line_of(text, Some(&top), &name);
-                let p: FileParameter = value.try_into().map_err(|e: toml::de::Error| {
-                    parse_err(line, format!("`{key}`: {}", e.message().trim()))
-                })?;
+                let p = read_parameter(value).map_err(|reason| bad(&key, line, reason))?;
                 given.push((key, p, line));
             }
         }
         let mut entries = BTreeMap::new();
         for (key, p, line) in given {
             let Some(s) = spec(&key) else {
-                return Err(parse_err(
-                    line,
-                    format!("`{key}`: {}", unknown_key_reason(&key)),
-                ));
+                return Err(bad(&key, line, unknown_key_reason(&key)));
             };
             let Some(factor) = units::factor_to_si(&p.unit, &s.unit) else {
-                return Err(parse_err(
-                    line,
-                    format!(
-                        "`{key}`: unit `{}` is not a unit of {} (accepted: {})",
-                        p.unit,
-                        s.unit,
-                        units::accepted(&s.unit).join(", ")
-                    ),
-                ));
+                let reason = format!(
+                    "unit `{}` is not a unit of {} (accepted: {})",
+                    p.unit,
+                    s.unit,
+                    units::accepted(&s.unit).join(", ")
+                );
+                return Err(bad(&key, line, reason));
             };
-            let value = s.check(p.value * factor, allow.contains(&key))?;
+            let value = s
+                .check(p.value * factor, allow.contains(&key))
+                .map_err(|e| match e {
+                    LocoError::InvalidParameter { reason, .. } => bad(&key, line, reason),
+                    other => other,
+                })?;
             let source = if p.unit.trim() == s.unit {
                 p.source
             } else {
@@ -169,10 +168,11 @@ impl ParameterSet {
             .filter(|k| !entries.contains_key(*k))
             .collect();
         if !missing.is_empty() {
-            return Err(parse_err(
-                0,
-                format!("missing vehicle parameters: {}", missing.join(", ")),
-            ));
+            return Err(LocoError::Parse {
+                path: origin.to_string(),
+                line: 0,
+                reason: format!("missing vehicle parameters: {}", missing.join(", ")),
+            });
         }
         Ok(Self {
             entries,
@@ -275,6 +275,44 @@ impl ParameterSet {
     /// True when the set holds no parameter.
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
+    }
+}
+
+/// One parameter as the file states it, or why it is not one. The types are checked here rather
+/// than left to serde, whose message names neither the field nor what was given for it.
+fn read_parameter(value: toml::Value) -> std::result::Result<FileParameter, String> {
+    const FORM: &str = "{ value = <number>, unit = \"<unit>\", source = \"<text>\" }";
+    let toml::Value::Table(fields) = &value else {
+        return Err(format!("expected {FORM}, got {}", describe(&value)));
+    };
+    match fields.get("value") {
+        Some(toml::Value::Float(_) | toml::Value::Integer(_)) | None => {}
+        Some(other) => return Err(format!("`value` must be a number, got {}", describe(other))),
+    }
+    for text in ["unit", "source"] {
+        match fields.get(text) {
+            Some(toml::Value::String(_)) | None => {}
+            Some(other) => {
+                return Err(format!(
+                    "`{text}` must be a string, got {}",
+                    describe(other)
+                ))
+            }
+        }
+    }
+    value
+        .try_into()
+        .map_err(|e: toml::de::Error| format!("{} (expected {FORM})", e.message().trim()))
+}
+
+/// A TOML value for a message: its type, and the value itself when short.
+fn describe(value: &toml::Value) -> String {
+    let shown = value.to_string();
+    let kind = value.type_str();
+    if shown.chars().count() <= 40 {
+        format!("{kind} {shown}")
+    } else {
+        kind.to_string()
     }
 }
 

@@ -56,18 +56,27 @@ fn override_and_errors_name_the_key() {
         assert!(e.to_string().contains("yaw_dampers_per_side"), "{e}");
     }
     let e = parse("[a]\nb = 3").unwrap_err();
-    assert!(matches!(e, LocoError::Parse { .. }));
+    assert!(
+        matches!(e, LocoError::InvalidParameterInFile { ref name, line: 2, .. } if name == "a.b"),
+        "{e}"
+    );
+    // A file that is not TOML is the file's fault, not a parameter's.
+    let e = parse("[a\nb = 3").unwrap_err();
+    assert!(matches!(e, LocoError::Parse { line: 1, .. }), "{e}");
 }
 
 #[test]
 fn unknown_misspelt_retired_and_missing_keys_are_refused_by_name_and_line() {
     let text = edited("[carbody]\nmass =", "[carbody]\nmas =");
     let e = parse(&text).unwrap_err();
-    let LocoError::Parse { line, reason, .. } = &e else {
+    let LocoError::InvalidParameterInFile {
+        line, name, reason, ..
+    } = &e
+    else {
         panic!("{e}")
     };
     assert!(
-        reason.contains("carbody.mas") && reason.contains("`carbody.mass`"),
+        name == "carbody.mas" && reason.contains("`carbody.mass`"),
         "{e}"
     );
     assert_eq!(
@@ -204,4 +213,78 @@ fn the_shear_modulus_follows_young_modulus_and_poisson_ratio() {
     set.set("track.young_modulus", 2.0e11).unwrap();
     set.set("track.poisson_ratio", 0.3).unwrap();
     assert!((set.shear_modulus().unwrap() - 2.0e11 / 2.6).abs() < 1.0);
+}
+
+#[test]
+fn a_value_of_the_wrong_type_is_a_parameter_error_naming_the_key_and_its_line() {
+    let line_of_yaw = DEFAULT_VEHICLE_TOML[..DEFAULT_VEHICLE_TOML.find(YAW_C).unwrap()]
+        .matches('\n')
+        .count()
+        + 1;
+    let cases = [
+        (
+            "value = \"8.0e5\", unit = \"N·s/m\"",
+            "`value` must be a number, got string \"8.0e5\"",
+        ),
+        (
+            "value = true, unit = \"N·s/m\"",
+            "`value` must be a number, got boolean true",
+        ),
+        (
+            "value = [8.0e5], unit = \"N·s/m\"",
+            "`value` must be a number, got array",
+        ),
+        (
+            "value = 8.0e5, unit = 3",
+            "`unit` must be a string, got integer 3",
+        ),
+    ];
+    for (fields, expected) in cases {
+        let text = edited(YAW_C, &format!("yaw_damper_damping = {{ {fields}"));
+        let e = parse(&text).unwrap_err();
+        let LocoError::InvalidParameterInFile {
+            path,
+            line,
+            name,
+            reason,
+        } = &e
+        else {
+            panic!("{fields}: {e}")
+        };
+        assert_eq!(
+            (path.as_str(), *line, name.as_str()),
+            ("v.toml", line_of_yaw, "secondary.yaw_damper_damping"),
+            "{e}"
+        );
+        assert!(reason.contains(expected), "{e}");
+        let shown = e.to_string();
+        assert!(
+            shown.starts_with(&format!(
+                "v.toml:{line_of_yaw}: invalid parameter `secondary.yaw_damper_damping`"
+            )),
+            "{shown}"
+        );
+    }
+    // Not an inline table at all, and a non-finite value: the same class, the same place.
+    let text = edited(
+        YAW_C,
+        "yaw_damper_damping = \"soft\"\nx = { value = 1.0, unit = \"N·s/m\"",
+    );
+    let e = parse(&text).unwrap_err();
+    assert!(
+        matches!(&e, LocoError::InvalidParameterInFile { name, line, reason, .. }
+            if name == "secondary.yaw_damper_damping" && *line == line_of_yaw
+                && reason.contains("got string \"soft\"")),
+        "{e}"
+    );
+    let e = parse(&edited(
+        YAW_C,
+        "yaw_damper_damping = { value = nan, unit = \"N·s/m\"",
+    ))
+    .unwrap_err();
+    assert!(
+        matches!(&e, LocoError::InvalidParameterInFile { name, line, .. }
+            if name == "secondary.yaw_damper_damping" && *line == line_of_yaw),
+        "{e}"
+    );
 }

@@ -30,6 +30,7 @@ use crate::error::{check_positive, LocoError, Result};
 use crate::metrics::sperling::segment_index;
 use crate::metrics::{Direction, SperlingParams};
 use crate::track::{Channel, SynthesisParams, TrackSpectrum};
+use std::sync::atomic::AtomicBool;
 
 /// Settings of the linear stochastic response.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -126,10 +127,22 @@ pub fn response_psd(
     frequencies: &[f64],
     settings: &PsdSettings,
 ) -> Result<ResponsePsd> {
+    response_psd_cancellable(model, outputs, frequencies, settings, None)
+}
+
+/// As [`response_psd`]; `cancel`, when set from another thread, stops it with `Interrupted`
+/// before the next frequency of either response it solves.
+pub fn response_psd_cancellable(
+    model: &TrackInputModel,
+    outputs: &[String],
+    frequencies: &[f64],
+    settings: &PsdSettings,
+    cancel: Option<&AtomicBool>,
+) -> Result<ResponsePsd> {
     settings.validate()?;
     check_frequencies(frequencies)?;
     let mut solver = ResponseSolver::new(model, outputs)?;
-    let h = solver.response(&Channel::ALL, frequencies)?;
+    let h = solver.response_cancellable(&Channel::ALL, frequencies, cancel)?;
     let psd: Vec<Vec<f64>> = (0..outputs.len())
         .map(|o| output_psd(&h, o, settings))
         .collect();
@@ -149,14 +162,18 @@ pub fn response_psd(
         outputs: outputs.to_vec(),
         psd,
         rms,
-        sperling_lateral: expected_sperling(model, settings)?,
+        sperling_lateral: expected_sperling(model, settings, cancel)?,
         least_damping_ratio: least_damped(&model.a, model.n, LinearSearch::default().band)?
             .map_or(f64::NAN, |m| m.damping_ratio),
     })
 }
 
 /// W_y from the expected power spectrum of one Sperling segment (see the module doc).
-fn expected_sperling(model: &TrackInputModel, settings: &PsdSettings) -> Result<f64> {
+fn expected_sperling(
+    model: &TrackInputModel,
+    settings: &PsdSettings,
+    cancel: Option<&AtomicBool>,
+) -> Result<f64> {
     let p = &settings.sperling;
     let df = 1.0 / p.segment_duration;
     // Bins to twice the highest line frequency, so that a line near f_max is cut where a
@@ -164,7 +181,7 @@ fn expected_sperling(model: &TrackInputModel, settings: &PsdSettings) -> Result<
     let bins = (2.0 * p.f_max / df).ceil() as usize + 1;
     let frequencies: Vec<f64> = (1..bins).map(|k| k as f64 * df).collect();
     let mut solver = ResponseSolver::new(model, &[CARBODY_LATERAL.to_string()])?;
-    let h = solver.response(&Channel::ALL, &frequencies)?;
+    let h = solver.response_cancellable(&Channel::ALL, &frequencies, cancel)?;
     let mut power = vec![0.0];
     power.extend(output_psd(&h, 0, settings).iter().map(|s| s * df));
     Ok(segment_index(&power, df, Direction::Lateral, p))

@@ -6,7 +6,7 @@ use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
-use super::statics::{check_step, static_equilibrium, StaticsSettings};
+use super::statics::{stable_step, static_equilibrium, StaticsSettings};
 use super::structure::{IntoVehicle, VehicleStructure};
 use super::suspects::with_suspects;
 use super::track_frame::CurvedTrack;
@@ -342,31 +342,53 @@ pub fn simulate_prepared(
     TrackLimits::of(&wheel_rail).check(&track)?;
     let start = start_distance(&structure);
     let bogie_mass = structure.parameters.get("bogie_frame.mass")?;
-    let mut system = VehicleSystem::new(
-        structure,
-        wheel_rail,
-        track,
-        scenario.speed,
-        start,
-        scenario.yaw_damper.as_ref(),
-        scenario.run.step,
-    )?;
-    if !scenario.curve.is_empty() {
-        let design = curve_design(&system.wheel_rail, &scenario.curve)?;
-        system.curve = Some(Arc::new(CurvedTrack::new(
-            Arc::new(design),
-            &system.structure,
-        )));
-    }
-    let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
-    check_step(&system, &equilibrium, scenario.run.step)
+    let design = if scenario.curve.is_empty() {
+        None
+    } else {
+        Some(Arc::new(curve_design(&wheel_rail, &scenario.curve)?))
+    };
+    let build = |step: f64| -> Result<VehicleSystem> {
+        let mut system = VehicleSystem::new(
+            Arc::clone(&structure),
+            Arc::clone(&wheel_rail),
+            Arc::clone(&track),
+            scenario.speed,
+            start,
+            scenario.yaw_damper.as_ref(),
+            step,
+        )?;
+        if let Some(design) = &design {
+            system.curve = Some(Arc::new(CurvedTrack::new(
+                Arc::clone(design),
+                &system.structure,
+            )));
+        }
+        Ok(system)
+    };
+    let mut system = build(scenario.run.step)?;
+    let mut equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
+    // The scenario's step is the longest: a vehicle stiffer than it suits runs at a whole
+    // fraction of it, on a system whose dampers are built for that step.
+    let step = stable_step(&system, &equilibrium, scenario.run.step)
         .map_err(|e| with_suspects(e, &system.structure.parameters))?;
+    if step != scenario.run.step {
+        super::run_limits::check_cost(&Scenario {
+            run: RunSettings {
+                step,
+                ..scenario.run
+            },
+            ..scenario.clone()
+        })?;
+        system = build(step)?;
+        equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
+    }
     let mut y = equilibrium.state;
     if scenario.initial_lateral_offset != 0.0 {
         // On the rails: rise and roll follow the contact table, as in the critical-speed ramp.
         super::critical_speed::disturb(&system, &mut y, scenario.initial_lateral_offset);
     }
     let settings = RunSettings {
+        step,
         duration: scenario.distance / scenario.speed,
         settle: scenario.lead_in / scenario.speed,
         ..scenario.run
@@ -416,6 +438,12 @@ impl PerfectTrackVehicle {
 
     /// The system running at `speed` (m/s), not yet in equilibrium.
     pub fn system(&self, speed: f64) -> Result<VehicleSystem> {
+        self.system_with_step(speed, self.step)
+    }
+
+    /// As [`Self::system`], its dampers built for the RK4 step `step` (s) instead of the
+    /// scenario's.
+    pub fn system_with_step(&self, speed: f64, step: f64) -> Result<VehicleSystem> {
         VehicleSystem::new(
             self.structure.clone(),
             self.wheel_rail.clone(),
@@ -423,7 +451,7 @@ impl PerfectTrackVehicle {
             speed,
             start_distance(&self.structure),
             self.yaw_damper.as_ref(),
-            self.step,
+            step,
         )
     }
 }

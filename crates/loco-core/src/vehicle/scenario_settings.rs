@@ -134,7 +134,17 @@ impl CurveSetting {
     /// The sections, a file relative to `dir`.
     pub fn sections(&self, dir: &Path) -> Result<Vec<DesignSection>> {
         match self {
-            Self::File(path) => resolve_sections(&load_sections_csv(&dir.join(path))?),
+            Self::File(file) => {
+                // As the track: a name that is no file is the setting's fault, named by it.
+                let path = dir.join(file);
+                if !path.is_file() {
+                    return Err(LocoError::param(
+                        "curve",
+                        format!("'{file}' is not a curve file (CSV of sections), nor a list of sections"),
+                    ));
+                }
+                resolve_sections(&load_sections_csv(&path)?)
+            }
             Self::Sections(list) => resolve_sections(list),
         }
     }

@@ -22,7 +22,9 @@ use super::wheel_rail::ContactMode;
 use crate::error::{check_positive, LocoError, Result};
 use nalgebra::{DMatrix, DVector};
 
-pub use super::stiffest_mode::{check_step, stiffest_mode, StiffestMode, RK4_IMAGINARY_LIMIT};
+pub use super::stiffest_mode::{
+    check_step, stable_step, stiffest_mode, StiffestMode, MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
+};
 
 /// Settings of the static-equilibrium search. [`Default`] gives the values every run uses.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -56,6 +56,29 @@ pub fn check_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64) 
     ))
 }
 
+/// Most RK4 substeps [`stable_step`] divides a step into. The physical ends of the schema's ranges
+/// need at most 4 at the default 1 ms step (the hollow shaft's lightest roll and yaw inertias; its
+/// stiffest bearings and the lightest motor inertias 2-3; `tests/test_fuzz_vehicle.py`); a
+/// vehicle needing more than twice that has a mode far beyond any physical one (a research value
+/// out of range, which the error then names), and its run would cost that many times more.
+pub const MAX_SUBSTEPS: f64 = 8.0;
+
+/// The RK4 step a run with the requested (longest) `step` (s) takes: `step` itself when the
+/// vehicle's stiffest mode about `equilibrium` is stable with it (every run of a vehicle the
+/// step suits is unchanged), else the longest whole fraction `step / k` that is, so that the
+/// output samples stay on whole steps. Beyond [`MAX_SUBSTEPS`] the error of [`check_step`].
+pub fn stable_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64) -> Result<f64> {
+    let mode = stiffest_mode(system, equilibrium);
+    if mode.omega * step <= RK4_IMAGINARY_LIMIT {
+        return Ok(step);
+    }
+    let k = (mode.omega * step / RK4_IMAGINARY_LIMIT).ceil();
+    if k <= MAX_SUBSTEPS {
+        return Ok(step / k);
+    }
+    check_step(system, equilibrium, step).map(|()| step)
+}
+
 /// A start vector with no symmetry: the vehicle is symmetric left-right and nearly front-back,
 /// and a uniform vector would have no part in the antisymmetric modes (the golden-ratio sequence
 /// is equidistributed, Weyl 1916).
