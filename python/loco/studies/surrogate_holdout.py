@@ -20,12 +20,11 @@ import numpy as np
 import numpy.typing as npt
 
 import loco
-from loco.studies.parameter_study import OBJECTIVES, StudySetup, samples_frame
-from loco.studies.parameters import names
+from loco.studies.parameter_study import StudySetup, samples_frame
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.surrogate import r2_score
-from loco.studies.surrogate_samples import HOLDOUT_SEED_OFFSET, holdout_design
+from loco.studies.surrogate_samples import HOLDOUT_SEED_OFFSET, holdout_design, simulate_design
 from loco.studies.surrogate_selection import Selection
 
 __all__ = [
@@ -109,8 +108,7 @@ def run_holdout(
     ``n`` samples. Writes ``holdout_samples.csv`` (the columns of ``monte_carlo.csv``) and
     ``holdout_samples.json``."""
     x = holdout_design(n, seed)
-    y = setup.evaluator(runtime)(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
-    failed = {o.label: int(np.isnan(y[:, j]).sum()) for j, o in enumerate(OBJECTIVES)}
+    y, failed = simulate_design(setup, runtime, x)
     settings = {
         "loco_version": loco.__version__,
         "holdout_samples": n,

@@ -126,6 +126,16 @@ class SurrogateSamplesStage(Stage):
         )
 
 
+def simulate_design(
+    setup: StudySetup, runtime: Runtime | None, x: FloatArray
+) -> tuple[FloatArray, dict[str, int]]:
+    """The objectives of every row of the parameter design ``x`` (one simulation each, like the
+    Monte Carlo's) and, per objective, how many runs failed (NaN)."""
+    y = setup.evaluator(runtime)(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
+    failed = {o.label: int(np.isnan(y[:, j]).sum()) for j, o in enumerate(OBJECTIVES)}
+    return y, failed
+
+
 def run_extension(
     setup: StudySetup,
     n_total: int,
@@ -138,8 +148,7 @@ def run_extension(
     ``runtime``) beyond the Monte Carlo's ``lhs_samples``. Writes ``surrogate_samples.csv`` (the
     same columns as ``monte_carlo.csv``, possibly no rows) and ``surrogate_samples.json``."""
     x = extension_design(n_total, lhs_samples, seed)
-    y = setup.evaluator(runtime)(x, names()) if len(x) else np.empty((0, len(OBJECTIVES)))
-    failed = {o.label: int(np.isnan(y[:, j]).sum()) for j, o in enumerate(OBJECTIVES)}
+    y, failed = simulate_design(setup, runtime, x)
     settings = {
         "loco_version": loco.__version__,
         "surrogate_samples": max(n_total, lhs_samples),
