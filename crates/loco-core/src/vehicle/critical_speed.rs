@@ -34,7 +34,7 @@ use super::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
 use super::run::{integrate, Flow};
 use super::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use super::simulation::{SpeedProfile, VehicleSystem};
-use super::statics::{stable_step, static_equilibrium, Equilibrium, StaticsSettings};
+use super::statics::{in_equilibrium_at_stable_step, StaticsSettings};
 use super::structure::IntoVehicle;
 use crate::error::{check_positive, LocoError, Result};
 use std::collections::VecDeque;
@@ -168,20 +168,15 @@ pub fn nonlinear_critical_speed(
         ..scenario.clone()
     };
     let vehicle = PerfectTrackVehicle::new(vehicle, &perfect)?;
-    let build = |step: f64| -> Result<(VehicleSystem, Equilibrium)> {
+    let build = |step: f64| -> Result<VehicleSystem> {
         let mut system = vehicle.system_with_step(start_speed, step)?;
         // The ramp starts when the hunting has settled (below); until then V stays V0.
         system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
-        let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
-        Ok((system, equilibrium))
+        Ok(system)
     };
-    let (mut system, mut equilibrium) = build(scenario.run.step)?;
     // The scenario's step is the longest, as in a run (`simulate_prepared`).
-    let dt = stable_step(&system, &equilibrium, scenario.run.step)
-        .map_err(|e| super::suspects::with_suspects(e, &system.structure.parameters))?;
-    if dt != scenario.run.step {
-        (system, equilibrium) = build(dt)?;
-    }
+    let (mut system, equilibrium, dt) =
+        in_equilibrium_at_stable_step(scenario.run.step, &StaticsSettings::default(), build)?;
     let mut y = equilibrium.state;
     disturb(&system, &mut y, settings.disturbance);
 

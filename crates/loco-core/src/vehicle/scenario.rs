@@ -6,7 +6,7 @@ use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
 use super::run::{run, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
-use super::statics::{stable_step, static_equilibrium, StaticsSettings};
+use super::statics::{in_equilibrium_at_stable_step, StaticsSettings};
 use super::structure::{IntoVehicle, VehicleStructure};
 use super::suspects::with_suspects;
 use super::track_frame::CurvedTrack;
@@ -365,12 +365,10 @@ pub fn simulate_prepared(
         }
         Ok(system)
     };
-    let mut system = build(scenario.run.step)?;
-    let mut equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
     // The scenario's step is the longest: a vehicle stiffer than it suits runs at a whole
-    // fraction of it, on a system whose dampers are built for that step.
-    let step = stable_step(&system, &equilibrium, scenario.run.step)
-        .map_err(|e| with_suspects(e, &system.structure.parameters))?;
+    // fraction of it.
+    let (mut system, equilibrium, step) =
+        in_equilibrium_at_stable_step(scenario.run.step, &StaticsSettings::default(), build)?;
     if step != scenario.run.step {
         super::run_limits::check_cost(&Scenario {
             run: RunSettings {
@@ -379,8 +377,6 @@ pub fn simulate_prepared(
             },
             ..scenario.clone()
         })?;
-        system = build(step)?;
-        equilibrium = static_equilibrium(&mut system, &StaticsSettings::default())?;
     }
     let mut y = equilibrium.state;
     if scenario.initial_lateral_offset != 0.0 {

@@ -23,7 +23,8 @@ use crate::error::{check_positive, LocoError, Result};
 use nalgebra::{DMatrix, DVector};
 
 pub use super::stiffest_mode::{
-    check_step, stable_step, stiffest_mode, StiffestMode, MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
+    check_step, in_equilibrium_at_stable_step, stable_step, stiffest_mode, StiffestMode,
+    MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
 };
 
 /// Settings of the static-equilibrium search. [`Default`] gives the values every run uses.

@@ -16,7 +16,8 @@
 
 use super::layout::{dof_names, N_DOF};
 use super::simulation::VehicleSystem;
-use super::statics::Equilibrium;
+use super::statics::{static_equilibrium, Equilibrium, StaticsSettings};
+use super::suspects::with_suspects;
 use crate::error::{LocoError, Result};
 use nalgebra::{DMatrix, DVector};
 
@@ -38,7 +39,11 @@ pub struct StiffestMode {
 /// `equilibrium`: an error naming `step`, with the mode's frequency, coordinate and the longest
 /// stable step.
 pub fn check_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64) -> Result<()> {
-    let mode = stiffest_mode(system, equilibrium);
+    check_step_for(&stiffest_mode(system, equilibrium), step)
+}
+
+/// [`check_step`] for a mode already found.
+fn check_step_for(mode: &StiffestMode, step: f64) -> Result<()> {
     if mode.omega * step <= RK4_IMAGINARY_LIMIT {
         return Ok(());
     }
@@ -76,7 +81,29 @@ pub fn stable_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64)
     if k <= MAX_SUBSTEPS {
         return Ok(step / k);
     }
-    check_step(system, equilibrium, step).map(|()| step)
+    check_step_for(&mode, step).map(|()| step)
+}
+
+/// The system `build` makes for an RK4 step (s), in static equilibrium, at the step a time
+/// integration takes: built for the requested (longest) `step`, and, when its stiffest mode needs
+/// a shorter one ([`stable_step`]), built again for that step, whose dampers are made for it.
+/// Returns the system, its equilibrium and the step. A step error names the suspects among
+/// the parameters allowed outside their range.
+pub fn in_equilibrium_at_stable_step(
+    step: f64,
+    statics: &StaticsSettings,
+    build: impl Fn(f64) -> Result<VehicleSystem>,
+) -> Result<(VehicleSystem, Equilibrium, f64)> {
+    let mut system = build(step)?;
+    let equilibrium = static_equilibrium(&mut system, statics)?;
+    let stable = stable_step(&system, &equilibrium, step)
+        .map_err(|e| with_suspects(e, &system.structure.parameters))?;
+    if stable == step {
+        return Ok((system, equilibrium, step));
+    }
+    let mut system = build(stable)?;
+    let equilibrium = static_equilibrium(&mut system, statics)?;
+    Ok((system, equilibrium, stable))
 }
 
 /// A start vector with no symmetry: the vehicle is symmetric left-right and nearly front-back,
