@@ -49,18 +49,23 @@ impl Rk4Workspace {
 
     /// Advances `y` from `t` to `t + dt` (s) in one RK4 step.
     pub fn step<S: OdeSystem>(&mut self, system: &mut S, t: f64, dt: f64, y: &mut [f64]) {
-        self.step_observed(system, t, dt, y, |_, _, _| {});
+        self.step_observed(system, t, dt, t + dt, y, |_, _, _| {});
     }
 
     /// [`Self::step`], calling `observe(system, y, ẏ)` with the derivatives at the start of the
     /// step, right after they are evaluated: outputs at the step's start come free with the first
     /// stage instead of costing one more evaluation (and the system's last-evaluation fields,
-    /// such as the wheel forces, belong to that state).
+    /// such as the wheel forces, belong to that state). `t_end` (s) is the step's end as the
+    /// caller counts time, `t + dt` up to the last bit: the last stage and `after_step` take it,
+    /// so that what the system keeps for that time (the track frames of a curve) is found again
+    /// by the next step, which starts at exactly `t_end` (a fixed-step run counts `(n + 1)·dt`,
+    /// which differs from `t + dt` in the last bit in about a third of the steps).
     pub fn step_observed<S: OdeSystem>(
         &mut self,
         system: &mut S,
         t: f64,
         dt: f64,
+        t_end: f64,
         y: &mut [f64],
         observe: impl FnOnce(&S, &[f64], &[f64]),
     ) {
@@ -76,11 +81,11 @@ impl Rk4Workspace {
         stage(&mut self.stage, y, 0.5 * dt, &self.k2);
         system.derivatives(t + 0.5 * dt, &self.stage, &mut self.k3);
         stage(&mut self.stage, y, dt, &self.k3);
-        system.derivatives(t + dt, &self.stage, &mut self.k4);
+        system.derivatives(t_end, &self.stage, &mut self.k4);
         for (i, yi) in y.iter_mut().enumerate() {
             *yi += dt / 6.0 * (self.k1[i] + 2.0 * self.k2[i] + 2.0 * self.k3[i] + self.k4[i]);
         }
-        system.after_step(t + dt, dt, y);
+        system.after_step(t_end, dt, y);
     }
 }
 

@@ -166,14 +166,15 @@ pub fn integrate(
         if cancel.is_some_and(|flag| flag.load(Ordering::Relaxed)) {
             return Err(LocoError::Interrupted);
         }
+        let t_end = (n + 1) as f64 * dt;
         if flow == Flow::Observe {
-            workspace.step_observed(system, t, dt, y, |system, y0, dy0| {
+            workspace.step_observed(system, t, dt, t_end, y, |system, y0, dy0| {
                 observe(t, system, y0, dy0);
             });
         } else {
-            workspace.step(system, t, dt, y);
+            workspace.step_observed(system, t, dt, t_end, y, |_, _, _| {});
         }
-        t = (n + 1) as f64 * dt;
+        t = t_end;
         system.statistics.steps += 1;
         system.finish_step(t, y)?;
     }
