@@ -39,16 +39,16 @@ marker records the content hash of its outputs, and the stages that learn from t
 and the extension's tables take them as inputs by content, so a damaged output is never reused.
 
 Sizes: ``--full`` is SPEC §6 (200 Latin hypercube samples, population 500 × 100 generations,
-500 m at 200 km/h; 256 Saltelli base samples for the direct indices), plus 100 more samples for
-the surrogate (300 in all, :mod:`loco.studies.surrogate_samples`) and 500 fresh ones to score
+500 m at 200 km/h; 256 Saltelli base samples for the direct indices), plus 300 more samples for
+the surrogate (500 in all, :mod:`loco.studies.surrogate_samples`) and 500 fresh ones to score
 it on (200 in ``--quick``). ``--quick`` (default, the
 README's main job) keeps those sizes but uses 32 Saltelli base samples and a coarser speed
 sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``). The FSD
 design stage has sizes of its own per preset. ``Sizes.runs()`` (the ``--quick``/``--full`` help)
 counts what every stage asks for (:meth:`loco.studies.stages.Stage.demand`) in runs of 500 m at
-200 km/h: about 1 860 for ``--quick`` (1 700 before the FSD design stage, of which 400 for the
-200 held-out samples; one run costs 0.5-1 s of one core) and 7 300 for ``--full`` (the curving
-stage and 1 000 runs for the 500 held-out samples included).
+200 km/h: about 2 260 for ``--quick`` (the FSD design stage, the surrogate's 300 extra samples
+and its 200 fresh ones at two runs each included; one run costs about 0.3 s of one core) and 7 700
+for ``--full`` (the curving stage and 1 000 runs for the 500 fresh samples included).
 """
 
 from __future__ import annotations
@@ -131,7 +131,7 @@ class Sizes:
 
 
 #: SPEC §6 sizes (the direct Sobol' indices, which SPEC does not size, on 256 base samples; the
-#: surrogate of Sobol' and NSGA-II on the Monte Carlo's 200 samples and 100 more, the count the
+#: surrogate of Sobol' and NSGA-II on the Monte Carlo's 200 samples and 300 more, the count the
 #: learning curve of :data:`loco.studies.surrogate_samples.SURROGATE_SAMPLES` asks for).
 FULL = Sizes(
     name="full",
@@ -150,9 +150,9 @@ FULL = Sizes(
     n_tracks=8,
     curving_sizes=curving.FULL_SIZES,
 )
-#: The README's main job: < 15 min on 2 cores before the FSD design stage (1 300 runs of 500 m of
-#: the 1 460 ``QUICK.runs()`` counted with it, measured before the 400 runs of the held-out
-#: samples were added; 1 860 with them, not measured since). It keeps SPEC's
+#: The README's main job: 7 min 12 s on the idle 2-core machine (stop 23) for the ~2 260 runs of
+#: 500 m that ``QUICK.runs()`` counts (the surrogate's 300 extra and 200 fresh samples included).
+#: It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
