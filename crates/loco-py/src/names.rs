@@ -1,6 +1,6 @@
 //! The core's names as Python constants: `Metric` (one class attribute per run metric, generated
 //! from `loco_core::metric_table!`, so a metric is named in the core only), `ChannelKind` (the
-//! families of output channels), the metric table itself (for the docs) and the channel table of
+//! families of output channels, from `loco_core::channel_kind_table!`), the metric table itself (for the docs) and the channel table of
 //! a built vehicle (name, unit, kind per channel, from its `ChannelSet`).
 
 use crate::errors::to_py_err;
@@ -30,23 +30,18 @@ loco_core::metric_table!(metric_constants);
 #[pyclass(name = "ChannelKind", module = "loco._loco", frozen)]
 pub struct PyChannelKind;
 
-#[pymethods]
-impl PyChannelKind {
-    #[classattr]
-    const ACCELERATION: &'static str = ChannelKind::Acceleration.name();
-    #[classattr]
-    const WHEELSET_MOTION: &'static str = ChannelKind::WheelsetMotion.name();
-    #[classattr]
-    const WHEEL: &'static str = ChannelKind::Wheel.name();
-    #[classattr]
-    const GUIDING_FORCE: &'static str = ChannelKind::GuidingForce.name();
-    #[classattr]
-    const DAMPER_FORCE: &'static str = ChannelKind::DamperForce.name();
-    #[classattr]
-    const DAMPER_VALVE: &'static str = ChannelKind::DamperValve.name();
-    #[classattr]
-    const DAMPER_STROKE: &'static str = ChannelKind::DamperStroke.name();
+macro_rules! channel_kind_constants {
+    ($( $constant:ident $variant:ident $name:literal, $doc:literal; )*) => {
+        #[pymethods]
+        impl PyChannelKind {
+            $(
+                #[classattr]
+                const $constant: &'static str = ChannelKind::$variant.name();
+            )*
+        }
+    };
 }
+loco_core::channel_kind_table!(channel_kind_constants);
 
 /// Every channel kind's name, in the core's order.
 #[pyfunction]

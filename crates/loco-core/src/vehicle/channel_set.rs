@@ -23,50 +23,47 @@ use super::wheel_channels::{
 };
 use crate::error::Result;
 
-/// What a channel measures: the families a front end selects channels by.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ChannelKind {
-    /// Acceleration of a point of the carbody or a bogie frame, m/s².
-    Acceleration,
-    /// Wheelset lateral displacement (m) or yaw (rad) relative to the track frame.
-    WheelsetMotion,
-    /// A wheel-rail quantity of one wheel (force, quotient, wear number, contact angle, flange).
-    Wheel,
-    /// Track-plane lateral force of the rails on a wheelset ΣY, N.
-    GuidingForce,
-    /// Force of a damper, N.
-    DamperForce,
-    /// Frequency-valve scale factor of a yaw damper, – (0 open, 1 closed).
-    DamperValve,
-    /// Stroke of a damper (elongation from its static length), m.
-    DamperStroke,
-}
-
-impl ChannelKind {
-    /// Every kind, in declaration order.
-    pub const ALL: [ChannelKind; 7] = [
-        ChannelKind::Acceleration,
-        ChannelKind::WheelsetMotion,
-        ChannelKind::Wheel,
-        ChannelKind::GuidingForce,
-        ChannelKind::DamperForce,
-        ChannelKind::DamperValve,
-        ChannelKind::DamperStroke,
-    ];
-
-    /// The kind's name as the front ends spell it.
-    pub const fn name(self) -> &'static str {
-        match self {
-            ChannelKind::Acceleration => "acceleration",
-            ChannelKind::WheelsetMotion => "wheelset_motion",
-            ChannelKind::Wheel => "wheel",
-            ChannelKind::GuidingForce => "guiding_force",
-            ChannelKind::DamperForce => "damper_force",
-            ChannelKind::DamperValve => "damper_valve",
-            ChannelKind::DamperStroke => "damper_stroke",
+/// Calls `$callback! { $( CONSTANT Variant "name", "doc"; )* }` with every channel kind, in
+/// declaration order: the one list from which [`ChannelKind`], its [`ChannelKind::ALL`] and
+/// [`ChannelKind::name`] and the Python `ChannelKind` constants (`loco-py/src/names.rs`) are
+/// generated, so a kind is added or renamed here only.
+#[macro_export]
+macro_rules! channel_kind_table {
+    ($callback:ident) => {
+        $callback! {
+            ACCELERATION Acceleration "acceleration", "Acceleration of a point of the carbody or a bogie frame, m/s².";
+            WHEELSET_MOTION WheelsetMotion "wheelset_motion", "Wheelset lateral displacement (m) or yaw (rad) relative to the track frame.";
+            WHEEL Wheel "wheel", "A wheel-rail quantity of one wheel (force, quotient, wear number, contact angle, flange).";
+            GUIDING_FORCE GuidingForce "guiding_force", "Track-plane lateral force of the rails on a wheelset ΣY, N.";
+            DAMPER_FORCE DamperForce "damper_force", "Force of a damper, N.";
+            DAMPER_VALVE DamperValve "damper_valve", "Frequency-valve scale factor of a yaw damper, – (0 open, 1 closed).";
+            DAMPER_STROKE DamperStroke "damper_stroke", "Stroke of a damper (elongation from its static length), m.";
         }
-    }
+    };
 }
+
+macro_rules! channel_kind_enum {
+    ($( $constant:ident $variant:ident $name:literal, $doc:literal; )*) => {
+        /// What a channel measures: the families a front end selects channels by.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum ChannelKind {
+            $( #[doc = $doc] $variant, )*
+        }
+
+        impl ChannelKind {
+            /// Every kind, in declaration order.
+            pub const ALL: &'static [ChannelKind] = &[$( ChannelKind::$variant, )*];
+
+            /// The kind's name as the front ends spell it.
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $( ChannelKind::$variant => $name, )*
+                }
+            }
+        }
+    };
+}
+crate::channel_kind_table!(channel_kind_enum);
 
 /// How a channel's value is read.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -362,7 +359,7 @@ mod tests {
             yaw.count()
         );
         let kinds: HashSet<_> = set.channels().iter().map(Channel::kind).collect();
-        assert_eq!(kinds, ChannelKind::ALL.into_iter().collect());
+        assert_eq!(kinds, ChannelKind::ALL.iter().copied().collect());
         assert_eq!(set.channels()[0].unit, "m/s²");
     }
 }
