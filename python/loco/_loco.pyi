@@ -47,14 +47,13 @@ class InternalError(LocoError): ...
 
 __all__ += [
     "Profile",
+    "WheelsetContact",
     "builtin_profile_named",
     "builtin_profile_names",
     "conical_profiles",
-    "contact_geometry",
     "contact_setup_defaults",
     "jm3_tread_profile",
     "load_profile_file",
-    "rolling_radius_difference",
 ]
 
 @final
@@ -83,36 +82,26 @@ def jm3_tread_profile(
     tread_slope: float, band_radius: float, flange_thickness: float
 ) -> Profile: ...
 def contact_setup_defaults() -> list[tuple[str, float]]: ...
-def contact_geometry(
-    left_wheel: Profile,
-    right_wheel: Profile,
-    left_rail: Profile,
-    right_rail: Profile,
-    ys: npt.ArrayLike,
-    *,
-    gauge: float,
-    gauge_height: float,
-    rail_inclination: float,
-    back_to_back: float,
-    flange_back_offset: float,
-    nominal_radius_left: float,
-    nominal_radius_right: float,
-) -> dict[str, npt.NDArray[np.float64]]: ...
-def rolling_radius_difference(
-    left_wheel: Profile,
-    right_wheel: Profile,
-    left_rail: Profile,
-    right_rail: Profile,
-    ys: npt.ArrayLike,
-    *,
-    gauge: float,
-    gauge_height: float,
-    rail_inclination: float,
-    back_to_back: float,
-    flange_back_offset: float,
-    nominal_radius_left: float,
-    nominal_radius_right: float,
-) -> npt.NDArray[np.float64]: ...
+
+@final
+class WheelsetContact:
+    def __new__(
+        cls,
+        left_wheel: Profile,
+        right_wheel: Profile,
+        left_rail: Profile,
+        right_rail: Profile,
+        *,
+        gauge: float,
+        gauge_height: float,
+        rail_inclination: float,
+        back_to_back: float,
+        flange_back_offset: float,
+        nominal_radius_left: float,
+        nominal_radius_right: float,
+    ) -> WheelsetContact: ...
+    def solve(self, ys: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]: ...
+    def rolling_radius_difference(self, ys: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 
 # --- conicity (conicity.rs) ---------------------------------------------------------------------
 

@@ -82,7 +82,7 @@ class ContactGeometry:
         return np.take_along_axis(values, slot[:, :, None], axis=2)[:, :, 0]
 
 
-def _setup(
+def _wheelset(
     wheel: Profile,
     rail: Profile,
     right_wheel: Profile | None,
@@ -94,7 +94,8 @@ def _setup(
     flange_back_spacing: float | None,
     flange_back_offset: float,
     nominal_radius: float | tuple[float, float],
-) -> tuple[tuple[Profile, Profile, Profile, Profile], dict[str, float]]:
+) -> _loco.WheelsetContact:
+    """The native wheelset on its rails, its contact search prepared once."""
     if back_to_back is not None and flange_back_spacing is not None:
         raise _loco.ParameterError("give back_to_back or flange_back_spacing, not both")
     spacing = back_to_back if back_to_back is not None else flange_back_spacing
@@ -102,22 +103,19 @@ def _setup(
         r_left, r_right = nominal_radius
     else:
         r_left = r_right = nominal_radius
-    profiles = (
+    return _loco.WheelsetContact(
         wheel,
         right_wheel if right_wheel is not None else wheel,
         rail,
         right_rail if right_rail is not None else rail,
+        gauge=float(gauge),
+        gauge_height=float(gauge_height),
+        rail_inclination=float(inclination),
+        back_to_back=float(spacing if spacing is not None else SETUP_DEFAULTS["back_to_back"]),
+        flange_back_offset=float(flange_back_offset),
+        nominal_radius_left=float(r_left),
+        nominal_radius_right=float(r_right),
     )
-    kwargs = {
-        "gauge": float(gauge),
-        "gauge_height": float(gauge_height),
-        "rail_inclination": float(inclination),
-        "back_to_back": float(spacing if spacing is not None else SETUP_DEFAULTS["back_to_back"]),
-        "flange_back_offset": float(flange_back_offset),
-        "nominal_radius_left": float(r_left),
-        "nominal_radius_right": float(r_right),
-    }
-    return profiles, kwargs
 
 
 def geometry(
@@ -141,7 +139,7 @@ def geometry(
     ``right_wheel`` / ``right_rail`` are given (also as left-side profiles).
     """
     ys = np.atleast_1d(np.asarray(y, dtype=np.float64))
-    profiles, kwargs = _setup(
+    wheelset = _wheelset(
         wheel,
         rail,
         right_wheel,
@@ -154,21 +152,7 @@ def geometry(
         flange_back_offset,
         nominal_radius,
     )
-    out = _loco.contact_geometry(
-        profiles[0],
-        profiles[1],
-        profiles[2],
-        profiles[3],
-        ys,
-        gauge=kwargs["gauge"],
-        gauge_height=kwargs["gauge_height"],
-        rail_inclination=kwargs["rail_inclination"],
-        back_to_back=kwargs["back_to_back"],
-        flange_back_offset=kwargs["flange_back_offset"],
-        nominal_radius_left=kwargs["nominal_radius_left"],
-        nominal_radius_right=kwargs["nominal_radius_right"],
-    )
-    return ContactGeometry(y=ys, **out)
+    return ContactGeometry(y=ys, **wheelset.solve(ys))
 
 
 def rolling_radius_difference(
@@ -189,7 +173,7 @@ def rolling_radius_difference(
     """Δr = r_left − r_right (m) at each lateral displacement ``y`` (m) of the wheelset translated
     without roll (EN 15302's definition, see the module documentation)."""
     ys = np.atleast_1d(np.asarray(y, dtype=np.float64))
-    profiles, kwargs = _setup(
+    wheelset = _wheelset(
         wheel,
         rail,
         right_wheel,
@@ -202,20 +186,7 @@ def rolling_radius_difference(
         flange_back_offset,
         nominal_radius,
     )
-    return _loco.rolling_radius_difference(
-        profiles[0],
-        profiles[1],
-        profiles[2],
-        profiles[3],
-        ys,
-        gauge=kwargs["gauge"],
-        gauge_height=kwargs["gauge_height"],
-        rail_inclination=kwargs["rail_inclination"],
-        back_to_back=kwargs["back_to_back"],
-        flange_back_offset=kwargs["flange_back_offset"],
-        nominal_radius_left=kwargs["nominal_radius_left"],
-        nominal_radius_right=kwargs["nominal_radius_right"],
-    )
+    return wheelset.rolling_radius_difference(ys)
 
 
 # The contact API of the issue in one place: conicity (EN 15302) and Hertz/creep live in their own

@@ -184,54 +184,113 @@ fn jm3_tread_profile(
     Ok(PyProfile { inner })
 }
 
-/// Set-up of a wheelset on a track, copied from Python keyword arguments.
-#[derive(Clone)]
-struct Setup {
-    wheels: [Profile; 2],
-    rails: [Profile; 2],
-    track: TrackSetup,
-    wheelset: WheelsetSetup,
+/// A wheelset's profiles on its rails with the track and wheelset set-up (gauge m, gauge_height
+/// m below the rail top, rail_inclination rad, back_to_back m, flange_back_offset m, nominal radii
+/// m), its contact search prepared once; every profile is given as a left-side profile.
+#[pyclass(name = "WheelsetContact", module = "loco._loco", frozen)]
+pub struct PyWheelsetContact {
+    geometry: ContactGeometry,
 }
 
-impl Setup {
-    fn geometry(&self) -> Result<ContactGeometry, CoreError> {
-        ContactGeometry::new(
-            [&self.wheels[0], &self.wheels[1]],
-            [&self.rails[0], &self.rails[1]],
-            &self.track,
-            &self.wheelset,
-            &ContactSearchParams::default(),
-        )
-    }
-}
-
-#[allow(clippy::too_many_arguments)]
-fn setup(
-    left_wheel: &PyProfile,
-    right_wheel: &PyProfile,
-    left_rail: &PyProfile,
-    right_rail: &PyProfile,
-    gauge: f64,
-    gauge_height: f64,
-    rail_inclination: f64,
-    back_to_back: f64,
-    flange_back_offset: f64,
-    nominal_radius_left: f64,
-    nominal_radius_right: f64,
-) -> Setup {
-    Setup {
-        wheels: [left_wheel.inner.clone(), right_wheel.inner.clone()],
-        rails: [left_rail.inner.clone(), right_rail.inner.clone()],
-        track: TrackSetup {
+#[pymethods]
+impl PyWheelsetContact {
+    #[new]
+    #[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, *, gauge, gauge_height,
+        rail_inclination, back_to_back, flange_back_offset, nominal_radius_left,
+        nominal_radius_right))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        left_wheel: PyRef<'_, PyProfile>,
+        right_wheel: PyRef<'_, PyProfile>,
+        left_rail: PyRef<'_, PyProfile>,
+        right_rail: PyRef<'_, PyProfile>,
+        gauge: f64,
+        gauge_height: f64,
+        rail_inclination: f64,
+        back_to_back: f64,
+        flange_back_offset: f64,
+        nominal_radius_left: f64,
+        nominal_radius_right: f64,
+    ) -> PyResult<Self> {
+        let wheels = [left_wheel.inner.clone(), right_wheel.inner.clone()];
+        let rails = [left_rail.inner.clone(), right_rail.inner.clone()];
+        let track = TrackSetup {
             gauge,
             gauge_height,
             rail_inclination,
-        },
-        wheelset: WheelsetSetup {
+        };
+        let wheelset = WheelsetSetup {
             back_to_back,
             flange_back_offset,
             nominal_radius: [nominal_radius_left, nominal_radius_right],
-        },
+        };
+        let geometry = run_detached(py, move || {
+            ContactGeometry::new(
+                [&wheels[0], &wheels[1]],
+                [&rails[0], &rails[1]],
+                &track,
+                &wheelset,
+                &ContactSearchParams::default(),
+            )
+        })?;
+        Ok(Self { geometry })
+    }
+
+    /// Rigid contact geometry at each lateral displacement `ys` (m). Returns a dict of arrays:
+    /// `roll`, `rise` of shape (n,), and each point quantity of shape (n, 2, 2) indexed
+    /// [y, wheel (0 left, 1 right), slot (0 tread side, 1 flange side)], NaN where absent.
+    fn solve<'py>(
+        &self,
+        py: Python<'py>,
+        ys: PyArrayLike1<'py, f64, AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let ys = to_vec(&ys)?;
+        let g = &self.geometry;
+        let n = ys.len();
+        let (roll, rise, fields) = run_detached(py, move || {
+            let mut ws = ContactWorkspace::default();
+            let mut roll = vec![0.0; n];
+            let mut rise = vec![0.0; n];
+            let mut fields = vec![vec![f64::NAN; n * 4]; POINT_FIELDS.len()];
+            let mut guess = g.roll_at_centre();
+            for (i, &y) in ys.iter().enumerate() {
+                let c = g.solve_with(y, guess, &mut ws)?;
+                guess = c.roll;
+                roll[i] = c.roll;
+                rise[i] = c.rise;
+                for (w, wheel) in c.wheels.iter().enumerate() {
+                    for (k, point) in wheel.points.iter().enumerate() {
+                        if let Some(p) = point {
+                            for (f, v) in point_values(p).into_iter().enumerate() {
+                                fields[f][i * 4 + w * 2 + k] = v;
+                            }
+                        }
+                    }
+                }
+            }
+            Ok((roll, rise, fields))
+        })?;
+        let out = PyDict::new(py);
+        out.set_item("roll", roll.into_pyarray(py))?;
+        out.set_item("rise", rise.into_pyarray(py))?;
+        for (name, values) in POINT_FIELDS.iter().zip(fields) {
+            out.set_item(*name, values.into_pyarray(py).reshape([n, 2, 2])?)?;
+        }
+        Ok(out)
+    }
+
+    /// Rolling radius difference r_left − r_right (m) at each `ys` (m), EN 15302's definition: the
+    /// wheelset translated without roll (`loco_core::contact::rolling_radius_difference`).
+    fn rolling_radius_difference<'py>(
+        &self,
+        py: Python<'py>,
+        ys: PyArrayLike1<'py, f64, AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let ys = to_vec(&ys)?;
+        let g = &self.geometry;
+        let dr = run_detached(py, move || rolling_radius_difference(g, &ys))?;
+        Ok(dr.into_pyarray(py))
     }
 }
 
@@ -262,115 +321,6 @@ fn point_values(p: &ContactPoint) -> [f64; 9] {
     ]
 }
 
-/// Rigid contact geometry at each lateral displacement `ys` (m). Returns a dict of arrays:
-/// `roll`, `rise` of shape (n,), and each point quantity of shape (n, 2, 2) indexed
-/// [y, wheel (0 left, 1 right), slot (0 tread side, 1 flange side)], NaN where absent.
-#[pyfunction]
-#[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, ys, *, gauge, gauge_height,
-    rail_inclination, back_to_back, flange_back_offset, nominal_radius_left, nominal_radius_right))]
-#[allow(clippy::too_many_arguments)]
-fn contact_geometry<'py>(
-    py: Python<'py>,
-    left_wheel: PyRef<'py, PyProfile>,
-    right_wheel: PyRef<'py, PyProfile>,
-    left_rail: PyRef<'py, PyProfile>,
-    right_rail: PyRef<'py, PyProfile>,
-    ys: PyArrayLike1<'py, f64, AllowTypeChange>,
-    gauge: f64,
-    gauge_height: f64,
-    rail_inclination: f64,
-    back_to_back: f64,
-    flange_back_offset: f64,
-    nominal_radius_left: f64,
-    nominal_radius_right: f64,
-) -> PyResult<Bound<'py, PyDict>> {
-    let ys = to_vec(&ys)?;
-    let s = setup(
-        &left_wheel,
-        &right_wheel,
-        &left_rail,
-        &right_rail,
-        gauge,
-        gauge_height,
-        rail_inclination,
-        back_to_back,
-        flange_back_offset,
-        nominal_radius_left,
-        nominal_radius_right,
-    );
-    let n = ys.len();
-    let (roll, rise, fields) = run_detached(py, move || {
-        let g = s.geometry()?;
-        let mut ws = ContactWorkspace::default();
-        let mut roll = vec![0.0; n];
-        let mut rise = vec![0.0; n];
-        let mut fields = vec![vec![f64::NAN; n * 4]; POINT_FIELDS.len()];
-        let mut guess = g.roll_at_centre();
-        for (i, &y) in ys.iter().enumerate() {
-            let c = g.solve_with(y, guess, &mut ws)?;
-            guess = c.roll;
-            roll[i] = c.roll;
-            rise[i] = c.rise;
-            for (w, wheel) in c.wheels.iter().enumerate() {
-                for (k, point) in wheel.points.iter().enumerate() {
-                    if let Some(p) = point {
-                        for (f, v) in point_values(p).into_iter().enumerate() {
-                            fields[f][i * 4 + w * 2 + k] = v;
-                        }
-                    }
-                }
-            }
-        }
-        Ok((roll, rise, fields))
-    })?;
-    let out = PyDict::new(py);
-    out.set_item("roll", roll.into_pyarray(py))?;
-    out.set_item("rise", rise.into_pyarray(py))?;
-    for (name, values) in POINT_FIELDS.iter().zip(fields) {
-        out.set_item(*name, values.into_pyarray(py).reshape([n, 2, 2])?)?;
-    }
-    Ok(out)
-}
-
-/// Rolling radius difference r_left − r_right (m) at each `ys` (m), EN 15302's definition: the
-/// wheelset translated without roll (`loco_core::contact::rolling_radius_difference`).
-#[pyfunction(name = "rolling_radius_difference")]
-#[pyo3(signature = (left_wheel, right_wheel, left_rail, right_rail, ys, *, gauge, gauge_height,
-    rail_inclination, back_to_back, flange_back_offset, nominal_radius_left, nominal_radius_right))]
-#[allow(clippy::too_many_arguments)]
-fn py_rolling_radius_difference<'py>(
-    py: Python<'py>,
-    left_wheel: PyRef<'py, PyProfile>,
-    right_wheel: PyRef<'py, PyProfile>,
-    left_rail: PyRef<'py, PyProfile>,
-    right_rail: PyRef<'py, PyProfile>,
-    ys: PyArrayLike1<'py, f64, AllowTypeChange>,
-    gauge: f64,
-    gauge_height: f64,
-    rail_inclination: f64,
-    back_to_back: f64,
-    flange_back_offset: f64,
-    nominal_radius_left: f64,
-    nominal_radius_right: f64,
-) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let ys = to_vec(&ys)?;
-    let s = setup(
-        &left_wheel,
-        &right_wheel,
-        &left_rail,
-        &right_rail,
-        gauge,
-        gauge_height,
-        rail_inclination,
-        back_to_back,
-        flange_back_offset,
-        nominal_radius_left,
-        nominal_radius_right,
-    );
-    let dr = run_detached(py, move || rolling_radius_difference(&s.geometry()?, &ys))?;
-    Ok(dr.into_pyarray(py))
-}
-
 /// The study's track and wheelset set-up, the defaults of the contact functions
 /// (`TrackSetup::default()`, `WheelsetSetup::default()`): gauge (m), gauge_height (m below the
 /// rail top), rail_inclination (rad), back_to_back (m), flange_back_offset (m),
@@ -399,7 +349,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;
     m.add_function(wrap_pyfunction!(conical_profiles, m)?)?;
     m.add_function(wrap_pyfunction!(jm3_tread_profile, m)?)?;
-    m.add_function(wrap_pyfunction!(contact_geometry, m)?)?;
-    m.add_function(wrap_pyfunction!(py_rolling_radius_difference, m)?)?;
+    m.add_class::<PyWheelsetContact>()?;
     Ok(())
 }
