@@ -33,7 +33,7 @@ def main() -> None:
 
     columns = names()
     params = latin_hypercube(args.samples, seed=1)
-    scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
+    scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
 
     def python_run(threads: int) -> float:
         start = time.perf_counter()

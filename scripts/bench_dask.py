@@ -93,7 +93,7 @@ def main() -> None:
     parser.add_argument("--cluster-cores", type=int, default=64)
     args = parser.parse_args()
     threads = args.workers
-    scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
+    scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
     print(
         f"loco {loco.__version__}, {os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}; "
         f"{args.distance:g} m per run; local: {threads} threads; Dask: {args.workers} workers"

@@ -54,7 +54,7 @@ def main() -> None:
             values = []
             for step in (args.step, args.step / 2):
                 scenario = loco.Scenario(
-                    scenario=name,
+                    name=name,
                     speed=200 / 3.6,
                     distance=500.0,
                     seed=args.seed,

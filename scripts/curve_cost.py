@@ -29,7 +29,7 @@ def best(curve: object, repeats: int) -> tuple[float, float]:
     evaluations = 0.0
     for _ in range(repeats):
         scenario = loco.Scenario(
-            scenario="S_norm", speed=SPEED, distance=300.0, track="perfect", curve=curve
+            name="S_norm", speed=SPEED, distance=300.0, track="perfect", curve=curve
         )
         started = time.perf_counter()
         result = loco.simulate(loco.Locomotive(), scenario)

@@ -41,7 +41,7 @@ def run_case(
     offsets = curving.wheelset_offsets(vehicle)
     distance = curving.RUN_IN + case.transition_m + case.curve_m + offsets[-1] + 1.0
     scenario = loco.Scenario(
-        scenario="S_norm",
+        name="S_norm",
         speed=speed,
         distance=distance,
         lead_in=curving.LEAD_IN,
@@ -156,7 +156,7 @@ def main() -> None:
     )
     r0 = vehicle["track.wheel_rolling_radius"]
     b0 = vehicle["track.contact_point_half_distance"]
-    scenario = loco.Scenario(scenario="S_norm", speed=speed, distance=100.0, yaw_damper="YD2")
+    scenario = loco.Scenario(name="S_norm", speed=speed, distance=100.0, yaw_damper="YD2")
     straight = loco.critical_speed(vehicle, scenario)
     print(f"  S_norm, YD2, straight: linear critical speed {straight * 3.6:.0f} km/h")
     for lam in sorted({0.11, round(local, 3), 0.3, 0.45}):

@@ -54,7 +54,7 @@ def main() -> int:
     p = dampers.YD1.parameters()
     damping, stiffness = float(p["damping"]), float(p["series_stiffness"])
     scenario = loco.Scenario(
-        scenario="S_low",
+        name="S_low",
         speed=args.speed_kmh / 3.6,
         distance=args.distance,
         lead_in=args.lead_in,

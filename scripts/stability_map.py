@@ -67,7 +67,7 @@ RAMP_START = 300.0 / 3.6  # m/s: start of the nonlinear ramp-down
 
 def scenario(yaw_damper: dampers.Damper, name: str | None = None) -> loco.Scenario:
     return loco.Scenario(
-        scenario=name or "S_norm", speed=200 / 3.6, distance=100.0, yaw_damper=yaw_damper
+        name=name or "S_norm", speed=200 / 3.6, distance=100.0, yaw_damper=yaw_damper
     )
 
 
@@ -117,7 +117,7 @@ def main() -> int:
         row["linear_kmh"] = loco.critical_speed(vehicle, scenario(law, pair), high=HIGH) * 3.6
         if args.nonlinear:
             fixed = FIXED_VALVE.get(name, law)
-            s = loco.Scenario(scenario=pair, speed=RAMP_START, distance=100.0, yaw_damper=fixed)
+            s = loco.Scenario(name=pair, speed=RAMP_START, distance=100.0, yaw_damper=fixed)
             try:
                 ramp = loco.stability.ramp_down(vehicle, s)
                 row["nonlinear_kmh"] = ramp.critical_speed * 3.6

@@ -14,7 +14,7 @@ import loco
 from loco.batch import STATUS_NAMES
 
 # 5.3 s at 200 km/h: one full Sperling segment, so every metric is defined.
-SCENARIO = loco.Scenario(scenario="S_high", speed=200 / 3.6, distance=295.0, seed=3)
+SCENARIO = loco.Scenario(name="S_high", speed=200 / 3.6, distance=295.0, seed=3)
 
 
 def test_bit_identical_for_any_thread_count_and_equal_to_simulate() -> None:
@@ -105,7 +105,7 @@ def test_bad_options_raise() -> None:
 
 def test_threads_zero_is_one_per_core_as_in_the_binary() -> None:
     # `loco-batch --threads 0` and `run_batch(threads=0)`: one thread per core, same numbers.
-    scenario = loco.Scenario(scenario="S_high", distance=20.0)
+    scenario = loco.Scenario(name="S_high", distance=20.0)
     x = np.array([[8e5], [2e5]])
     per_core = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=0, progress=False)
     one = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=1, progress=False)
@@ -115,7 +115,7 @@ def test_threads_zero_is_one_per_core_as_in_the_binary() -> None:
 
 def test_ctrl_c_stops_the_batch_promptly() -> None:
     params = np.full((16, 1), 8e5)
-    scenario = loco.Scenario(scenario="S_high", distance=2000.0)  # ~36 s of simulated time each
+    scenario = loco.Scenario(name="S_high", distance=2000.0)  # ~36 s of simulated time each
 
     def interrupt() -> None:
         time.sleep(1.0)

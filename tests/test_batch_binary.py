@@ -75,7 +75,7 @@ def test_binary_matches_python_bit_for_bit(tmp_path: Path) -> None:
     vehicle = loco.Locomotive(toml_text=allowed + loco.Locomotive.default().default_toml())
     vehicle = vehicle.replace(C_sy=3.0e4)
     scenario = loco.Scenario(
-        scenario="S_high", speed=200 / 3.6, distance=295.0, seed=5, yaw_damper=loco.dampers.FSD
+        name="S_high", speed=200 / 3.6, distance=295.0, seed=5, yaw_damper=loco.dampers.FSD
     )
     expected = loco.run_batch(
         PARAMS, NAMES, vehicle=vehicle, scenario=scenario, threads=1, progress=False, histories=[1]
@@ -144,7 +144,7 @@ def test_study_file_selects_the_hydraulic_valve(tmp_path: Path) -> None:
     rows = _rows(out)
     vehicle = loco.Locomotive.default().replace(C_sy=3.0e4)
     scenario = loco.Scenario(
-        scenario="S_high",
+        name="S_high",
         speed=200 / 3.6,
         distance=60.0,
         seed=5,
@@ -183,7 +183,7 @@ def test_the_same_scenario_keys_mean_the_same_run_in_both_front_ends(tmp_path: P
     done = _batch(study, samples, "-o", out, "--threads", "0", "--quiet")
     assert done.returncode == 0, done.stderr
     rows = _rows(out)
-    scenario = loco.Scenario(scenario="S_high", **settings)  # type: ignore[arg-type]
+    scenario = loco.Scenario(name="S_high", **settings)  # type: ignore[arg-type]
     x = np.array([[8e5], [2e5]])
     expected = loco.run_batch(x, ["C_sx"], scenario=scenario, threads=0, progress=False)
     assert expected.n_failed == 0 and np.isfinite(expected.metric("wy_max")).all()

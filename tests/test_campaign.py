@@ -30,7 +30,7 @@ from loco.studies.report import StudyRecord, save_table
 from loco.studies.sampling import latin_hypercube
 from loco.studies.stages import Runtime, Stage, StageRunner
 
-SCENARIO = loco.Scenario(scenario="S_high", distance=300.0, seed=3)
+SCENARIO = loco.Scenario(name="S_high", distance=300.0, seed=3)
 N = 10
 
 
@@ -89,7 +89,7 @@ import sys, numpy as np, loco
 from loco.campaign import run_campaign
 from loco.studies.parameters import names
 design = np.load(sys.argv[1])
-scenario = loco.Scenario(scenario="S_high", distance=300.0, seed=3)
+scenario = loco.Scenario(name="S_high", distance=300.0, seed=3)
 def stored(idx):
     print("stored", *idx.tolist(), flush=True)
 run_campaign(design, names(), scenario=scenario, store=sys.argv[2], chunk_size=2, threads=2,

@@ -55,7 +55,7 @@ def test_channel_table_names_and_kinds_the_channels_a_run_records() -> None:
     table = channel_table(vehicle.native)
     assert {c.kind for c in table} == set(CHANNEL_KINDS)
     assert ChannelKind.DAMPER_VALVE in CHANNEL_KINDS
-    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=40.0, track="perfect")
+    scenario = loco.Scenario(name="S_norm", speed=50.0, distance=40.0, track="perfect")
     result = loco.simulate(vehicle, scenario)
     assert result.channel_names == [c.name for c in table]
     valves = result.channels_of_kind(ChannelKind.DAMPER_VALVE)

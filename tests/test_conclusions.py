@@ -27,7 +27,7 @@ def metrics(scenario: str, damper: str) -> list[dict[str, float]]:
         loco.simulate(
             vehicle,
             loco.Scenario(
-                scenario=scenario,
+                name=scenario,
                 speed=SPEED,
                 distance=500.0,
                 lead_in=500.0,
@@ -68,6 +68,6 @@ def test_low_conicity_ride_is_excellent_whatever_the_yaw_damper() -> None:
 @pytest.mark.parametrize(("damper", "above"), [("YD1", False), ("YD2", True)])
 def test_linear_critical_speed_on_worn_wheels(damper: str, above: bool) -> None:
     # Linear critical speed, S_high: YD1 34.2 m/s (123 km/h), YD2 95.3 m/s (343 km/h).
-    scenario = loco.Scenario(scenario="S_high", speed=SPEED, yaw_damper=DAMPERS[damper])
+    scenario = loco.Scenario(name="S_high", speed=SPEED, yaw_damper=DAMPERS[damper])
     v = loco.critical_speed(loco.Locomotive.default(), scenario)
     assert (v > 1.1 * SPEED) is above, v

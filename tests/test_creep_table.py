@@ -18,9 +18,9 @@ def test_tabulated_fastsim_gives_the_direct_metrics_within_its_error(scenario: s
     # The table's creep forces are within about 2 % of μN of FASTSIM's (contact.fastsim_table);
     # on a run that error shifts the ride and stability figures by a fraction of that.
     vehicle = loco.Locomotive.default()
-    direct = loco.simulate(vehicle, loco.Scenario(scenario=scenario, distance=295.0, seed=2))
+    direct = loco.simulate(vehicle, loco.Scenario(name=scenario, distance=295.0, seed=2))
     table = loco.simulate(
-        vehicle, loco.Scenario(scenario=scenario, distance=295.0, seed=2, creep="table")
+        vehicle, loco.Scenario(name=scenario, distance=295.0, seed=2, creep="table")
     )
     for metric in ("wy_max", "ayb_peak_lp", "ayc_dominant_hz"):
         assert table.metrics[metric] == pytest.approx(direct.metrics[metric], rel=0.03), metric
@@ -32,7 +32,7 @@ def test_scenario_creep_model_reaches_the_run() -> None:
     vehicle = loco.Locomotive.default()
     runs = {
         creep: loco.simulate(
-            vehicle, loco.Scenario(scenario="S_high", distance=295.0, seed=2, creep=creep)
+            vehicle, loco.Scenario(name="S_high", distance=295.0, seed=2, creep=creep)
         )
         for creep in ("fastsim", "fastrip")
     }
@@ -42,6 +42,6 @@ def test_scenario_creep_model_reaches_the_run() -> None:
 
 def test_scenario_creep_model_errors_name_the_field() -> None:
     with pytest.raises(ParameterError, match="`creep`"):
-        loco.Scenario(scenario="S_low", creep="kalker").native()
+        loco.Scenario(name="S_low", creep="kalker").native()
     with pytest.raises(ParameterError, match=re.escape('creep="table"')):
-        loco.Scenario(scenario="S_low", creep_table=True)
+        loco.Scenario(name="S_low", creep_table=True)

@@ -31,7 +31,7 @@ def _sections(direction: str) -> list[dict[str, float | str]]:
 def _run(curve: object, distance: float = 120.0) -> loco.SimulationResult:
     speed = float(np.sqrt(G * 0.15 / (2 * B) * 1200.0))  # 100 mm cant deficiency
     scenario = loco.Scenario(
-        scenario="S_norm", speed=speed, distance=distance, track="perfect", curve=curve
+        name="S_norm", speed=speed, distance=distance, track="perfect", curve=curve
     )
     return loco.simulate(loco.Locomotive(), scenario)
 

@@ -28,7 +28,7 @@ STRAIGHT = 20.0
 def _run(deficiency_mm: float) -> tuple[loco.SimulationResult, float]:
     speed = curving.speed_for_deficiency(RADIUS, CANT, deficiency_mm, VEHICLE)
     scenario = loco.Scenario(
-        scenario="S_norm",
+        name="S_norm",
         speed=speed,
         distance=STRAIGHT + CASE.transition_m + 80.0,
         track="perfect",

@@ -30,7 +30,7 @@ from loco.studies.sampling import latin_hypercube
 pytest.importorskip("distributed", reason="needs pip install 'loco[distributed]'")
 
 # The FSD yaw damper makes the scenario carry a native object to the workers.
-SCENARIO = loco.Scenario(scenario="S_low", distance=300.0, seed=2, yaw_damper=dampers.FSD)
+SCENARIO = loco.Scenario(name="S_low", distance=300.0, seed=2, yaw_damper=dampers.FSD)
 # K_px far beyond any vehicle is a research value the vehicle file must allow explicitly.
 VEHICLE = loco.Locomotive(
     toml_text='allow_out_of_range = ["rotary_arm.node_stiffness_longitudinal"]\n'
@@ -104,7 +104,7 @@ def test_local_cluster_bit_identical_to_threads(
 
 def test_nsga2_generations_through_the_cluster(cluster: DaskExecutor) -> None:
     def evaluator(executor: DaskExecutor | None) -> object:
-        scenario = loco.Scenario(scenario="S_high", distance=300.0, seed=2)
+        scenario = loco.Scenario(name="S_high", distance=300.0, seed=2)
         return simulator_evaluator(scenario, ["wy_max", "ayb_peak_lp"], threads=2,
                                    executor=executor, progress=False)  # fmt: skip
 
@@ -163,7 +163,7 @@ from loco.studies.parameters import names
 from loco.studies.sampling import latin_hypercube
 
 if __name__ == "__main__":
-    scenario = loco.Scenario(scenario="S_high", distance=300.0, seed=2)
+    scenario = loco.Scenario(name="S_high", distance=300.0, seed=2)
     def stored(idx):
         print("stored", *idx.tolist(), flush=True)
     with DaskExecutor(n_workers=1) as dask:

@@ -47,7 +47,7 @@ def test_measured_csv_sine_matches_the_transfer_function(
     csv = _sine_csv(tmp_path / "sine.csv", wavelength, SPEED * (settle + fit) + 80.0)
     track = loco.track.load(str(csv), step=0.1, run_in=60.0)
     scenario = loco.Scenario(
-        scenario="S_low",
+        name="S_low",
         yaw_damper=loco.dampers.YD2,
         track=track,
         lead_in=settle * SPEED,
@@ -70,7 +70,7 @@ def test_measured_csv_sine_matches_the_transfer_function(
 
 
 def test_frequency_response_views_and_plot(vehicle: loco.Locomotive, tmp_path: Path) -> None:
-    scenario = loco.Scenario(scenario="S_norm")
+    scenario = loco.Scenario(name="S_norm")
     f = np.linspace(0.2, 10.0, 25)
     h = loco.frequency_response(vehicle, scenario, frequencies=f)
     assert h.h.shape == (len(loco.track_response.DEFAULT_OUTPUTS), 4, 25)
@@ -90,7 +90,7 @@ def test_frequency_response_views_and_plot(vehicle: loco.Locomotive, tmp_path: P
 
 
 def test_response_psd_bookkeeping(vehicle: loco.Locomotive) -> None:
-    scenario = loco.Scenario(scenario="S_norm")
+    scenario = loco.Scenario(name="S_norm")
     f = np.linspace(0.2, 20.0, 100)
     full = loco.response_psd(vehicle, scenario, ["carbody_floor_ay_front"], f)
     half = loco.response_psd(vehicle, scenario, ["carbody_floor_ay_front"], f, amplitude_scale=0.5)
@@ -114,7 +114,7 @@ def test_response_psd_bookkeeping(vehicle: loco.Locomotive) -> None:
     assert full.stable and full.least_damping_ratio > 0.0
     # Worn wheels with the soft yaw damper hunt at 200 km/h (see test_stability.py).
     hunting = loco.response_psd(
-        vehicle, loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1), frequencies=f
+        vehicle, loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1), frequencies=f
     )
     assert not hunting.stable
 
@@ -136,11 +136,11 @@ def test_bad_inputs_raise_typed_errors(
 ) -> None:
     args: dict[str, object] = {"frequencies": [1.0, 2.0]} | kwargs
     with pytest.raises(loco.ParameterError, match=match):
-        loco.frequency_response(vehicle, loco.Scenario(scenario="S_norm"), **args)  # type: ignore[arg-type]
+        loco.frequency_response(vehicle, loco.Scenario(name="S_norm"), **args)  # type: ignore[arg-type]
 
 
 def test_response_psd_rejects_a_bad_spectrum_and_band(vehicle: loco.Locomotive) -> None:
-    scenario = loco.Scenario(scenario="S_norm")
+    scenario = loco.Scenario(name="S_norm")
     with pytest.raises(loco.ParameterError, match="spectrum"):
         loco.response_psd(vehicle, scenario, frequencies=[1.0], spectrum="nope")
     with pytest.raises(loco.ParameterError, match="wavelength_max"):

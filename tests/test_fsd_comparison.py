@@ -52,7 +52,7 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     assert result is not None
     single = loco.simulate(
         loco.Locomotive.default(),
-        loco.Scenario(scenario="S_high", distance=300.0, lead_in=LEAD_IN, seed=2,
+        loco.Scenario(name="S_high", distance=300.0, lead_in=LEAD_IN, seed=2,
                       yaw_damper=DAMPERS["YD1"]),
     )  # fmt: skip
     assert single.metrics["ayb_psd_peak"] == result.metrics["ayb_psd_peak"]

@@ -32,10 +32,10 @@ def test_designs_are_simulated_as_the_hydraulic_fsd(evaluated: pd.DataFrame) -> 
     # The spec's design vector is the preset FSD-H: the same runs give the same numbers.
     law = fsd_design.design_damper(SPEC_FSD)
     assert dampers.describe(law) == dampers.describe(dampers.FSD_HYDRAULIC)
-    s = loco.Scenario(scenario="S_low", speed=200 / 3.6, distance=300.0, yaw_damper=law)
+    s = loco.Scenario(name="S_low", speed=200 / 3.6, distance=300.0, yaw_damper=law)
     wy = loco.simulate(loco.Locomotive.default(), s).metrics["wy_max"]
     assert evaluated.loc[0, "W_y"] == wy
-    high = loco.Scenario(scenario="S_high", speed=200 / 3.6, distance=100.0, yaw_damper=law)
+    high = loco.Scenario(name="S_high", speed=200 / 3.6, distance=100.0, yaw_damper=law)
     v = loco.critical_speed(loco.Locomotive.default(), high, high=fsd_design.SEARCH_HIGH)
     assert evaluated.loc[0, "v_crit_kmh"] == pytest.approx(float(v) * 3.6)
 
@@ -99,8 +99,8 @@ def test_sweep_cases_run_in_parallel_keep_their_numbers() -> None:
     serial = fsd_conicity.run_conicity_sweep(laws, [0.3], threads=1, **args)
     pd.testing.assert_frame_equal(sweep, serial)
     s = loco.Scenario(
-        scenario="S_norm", speed=200 / 3.6, distance=300.0, lead_in=0.0, seed=5, yaw_damper="YD1"
-    ).replace(scenario=None, wheel=fsd_conicity.conicity_wheel(0.3), rail="cn60")
+        name="S_norm", speed=200 / 3.6, distance=300.0, lead_in=0.0, seed=5, yaw_damper="YD1"
+    ).replace(name=None, wheel=fsd_conicity.conicity_wheel(0.3), rail="cn60")
     alone = loco.simulate(loco.Locomotive.default(), s)
     first = sweep[(sweep["damper"] == "YD1") & (sweep["track"] == 0)].iloc[0]
     assert first["ayb_peak_lp"] == alone.metrics["ayb_peak_lp"]

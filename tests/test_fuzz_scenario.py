@@ -56,7 +56,7 @@ REAL_FIELDS = [
 ]
 WHOLE_FIELDS = ["seed"]
 PAIR_FIELDS = {"band": (2.0, 200.0), "fastsim_grid": (10, 10)}
-TEXT_FIELDS = ["spectrum", "creep", "scenario", "wheel", "rail", "fsd_trigger"]
+TEXT_FIELDS = ["spectrum", "creep", "name", "wheel", "rail", "fsd_trigger"]
 FLAG_FIELDS: list[str] = []
 OBJECT_FIELDS = ["track", "yaw_damper", "curve"]
 #: A valid curve section; each of its fields gets every fuzz value in turn (`curve[i].field`).
@@ -69,7 +69,7 @@ CURVE_SECTION: dict[str, Any] = {
 }
 
 #: The base run: short, every field else at its default.
-BASE: dict[str, Any] = {"scenario": "S_norm", "speed": 200 / 3.6, "distance": 20.0}
+BASE: dict[str, Any] = {"name": "S_norm", "speed": 200 / 3.6, "distance": 20.0}
 
 
 def cases() -> list[tuple[str, str, Any]]:

@@ -147,7 +147,7 @@ def run_cases() -> list[dict[str, Any]]:
         toml_text=f"allow_out_of_range = [{allowed}]\n" + loco.Locomotive.default().default_toml(),
         origin="research.toml",
     )
-    scenario = loco.Scenario(scenario="S_norm", speed=200 / 3.6, distance=1.0, track="perfect")
+    scenario = loco.Scenario(name="S_norm", speed=200 / 3.6, distance=1.0, track="perfect")
     out: list[dict[str, Any]] = []
     for contact in (False, True):
         keys = [k for k, s in schema.items() if ("contact" in s.affects) == contact]

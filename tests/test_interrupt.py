@@ -14,7 +14,7 @@ import loco
 print("started", flush=True)
 try:
     loco.simulate(loco.Locomotive.default(),
-                  loco.Scenario(scenario="S_high", distance=50_000.0, track="perfect"))
+                  loco.Scenario(name="S_high", distance=50_000.0, track="perfect"))
 except KeyboardInterrupt:
     print("interrupted", flush=True)
 """
@@ -53,12 +53,12 @@ from loco.campaign import run_campaign
 
 random.seed(int(sys.argv[1]))
 vehicle = loco.Locomotive.default()
-long_run = loco.Scenario(scenario="S_high", distance=50_000.0, track="perfect")
-short = loco.Scenario(scenario="S_high", distance=300.0, seed=3)
+long_run = loco.Scenario(name="S_high", distance=50_000.0, track="perfect")
+short = loco.Scenario(name="S_high", distance=300.0, seed=3)
 # Hunting at 396 km/h, a ramp down to where it dies out near 360 km/h: ~2 s of wall time on an
 # idle machine at 0.12 m/s² (the ramp's distance limit, 100 km, allows no slower ramp), so its
 # Ctrl-C comes within the first 1.2 s; so does the campaign's (24 short runs, ~2 s idle).
-hunting = loco.Scenario(scenario="S_high", speed=110.0, distance=100.0, track="perfect")
+hunting = loco.Scenario(name="S_high", speed=110.0, distance=100.0, track="perfect")
 latest = {"critical_speed_nonlinear": 1.2, "campaign": 1.2}
 finished = []
 calls = {
@@ -133,8 +133,8 @@ import numpy as np
 import loco
 
 vehicle = loco.Locomotive.default()
-fine = loco.Scenario(scenario="S_high", fastsim_grid=(50, 50))
-plain = loco.Scenario(scenario="S_high")
+fine = loco.Scenario(name="S_high", fastsim_grid=(50, 50))
+plain = loco.Scenario(name="S_high")
 many = np.linspace(0.1, 20.0, 200_000)
 calls = {
     "critical_speed_linear": lambda: loco.critical_speed(vehicle, fine, method="linear",

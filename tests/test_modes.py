@@ -23,7 +23,7 @@ def test_mass_matrix_carries_the_vehicle_mass() -> None:
 
 def test_hunting_mode_of_worn_wheels_is_the_bogies_lateral_and_yaw() -> None:
     # S_high with YD1 near its linear critical speed (39.2 m/s): the least damped mode.
-    scenario = loco.Scenario(scenario="S_high", speed=39.0, yaw_damper=loco.dampers.YD1)
+    scenario = loco.Scenario(name="S_high", speed=39.0, yaw_damper=loco.dampers.YD1)
     eigen = loco.eigen(loco.Locomotive.default(), scenario)
     mode = eigen.least_damped()
     assert repr(eigen).startswith(f"Eigen(speed=39 m/s, {len(eigen.modes)} modes, least damped")
@@ -44,7 +44,7 @@ def test_hunting_mode_of_worn_wheels_is_the_bogies_lateral_and_yaw() -> None:
 
 def test_low_conicity_sway_is_carbody_lateral_and_roll() -> None:
     # S_low with the stiff YD2 yaw damper at 200 km/h (SPEC §6): the 1-1.5 Hz mode.
-    scenario = loco.Scenario(scenario="S_low", speed=200 / 3.6, yaw_damper=loco.dampers.YD2)
+    scenario = loco.Scenario(name="S_low", speed=200 / 3.6, yaw_damper=loco.dampers.YD2)
     mode = loco.eigen(loco.Locomotive.default(), scenario).least_damped(1.0, 1.5)
     groups = mode.groups()
     assert max(groups, key=lambda g: groups[g]) == "carbody"

@@ -45,8 +45,8 @@ def test_objects_print_readably() -> None:
     assert yd2 == "Damper(maxwell, c=800 kN·s/m, k_series=22.5 kN/mm)", yd2
     fsd = repr(loco.dampers.FSD)
     assert fsd.startswith("Damper(fsd, c1=200 kN·s/m, c2=800 kN·s/m, f_p=2 Hz"), fsd
-    scenario = loco.Scenario(scenario="S_high", speed=50.0, yaw_damper=loco.dampers.YD2)
-    assert repr(scenario) == f"Scenario(scenario='S_high', speed=50.0, yaw_damper={yd2})"
+    scenario = loco.Scenario(name="S_high", speed=50.0, yaw_damper=loco.dampers.YD2)
+    assert repr(scenario) == f"Scenario(name='S_high', speed=50.0, yaw_damper={yd2})"
     assert repr(loco.Scenario()) == "Scenario()"
     assert repr(loco.Locomotive.default()) == "Locomotive(default vehicle)"
     assert repr(loco.Locomotive.default().replace(C_sx=2e5)) == (

@@ -29,12 +29,12 @@ def test_defaults_are_the_cores() -> None:
 
 
 def test_only_the_given_settings_are_kept() -> None:
-    s = loco.Scenario(scenario="S_high", speed=50.0, track=None, band=[3.0, 100.0])
-    assert s.given() == {"scenario": "S_high", "speed": 50.0, "band": (3.0, 100.0)}
-    assert repr(s) == "Scenario(scenario='S_high', speed=50.0, band=(3.0, 100.0))"
+    s = loco.Scenario(name="S_high", speed=50.0, track=None, band=[3.0, 100.0])
+    assert s.given() == {"name": "S_high", "speed": 50.0, "band": (3.0, 100.0)}
+    assert repr(s) == "Scenario(name='S_high', speed=50.0, band=(3.0, 100.0))"
     assert s.distance == loco.Scenario.defaults()["distance"]
     changed = s.replace(speed=60.0, band=None)
-    assert changed.given() == {"scenario": "S_high", "speed": 60.0}
+    assert changed.given() == {"name": "S_high", "speed": 60.0}
     assert changed == loco.Scenario("S_high", speed=60.0) and changed != s
     assert pickle.loads(pickle.dumps(s)) == s
     with pytest.raises(AttributeError):
@@ -47,34 +47,35 @@ def test_only_the_given_settings_are_kept() -> None:
         ("perfect_track", 'track="perfect"'),
         ("creep_table", 'creep="table"'),
         ("track_kind", "track="),
+        ("scenario", 'name="S_high"'),
     ],
 )
 def test_replaced_spellings_name_the_new_one(old: str, new: str) -> None:
     with pytest.raises(loco.ParameterError, match=old) as e:
-        loco.Scenario(scenario="S_high", **{old: True})  # type: ignore[arg-type]
+        loco.Scenario(speed=50.0, **{old: "S_high"})  # type: ignore[arg-type]
     assert new in str(e.value)
     with pytest.raises(TypeError, match="spedd"):
-        loco.Scenario(scenario="S_high", spedd=50.0)  # type: ignore[call-arg]
+        loco.Scenario(name="S_high", spedd=50.0)  # type: ignore[call-arg]
 
 
 def test_settings_are_checked_by_the_core_naming_the_field() -> None:
     # The study file's rules: no synthesis setting with a perfect track (tests/test_batch_binary
     # checks the same study file is refused by loco-batch).
     with pytest.raises(loco.ParameterError, match="seed"):
-        loco.Scenario(scenario="S_high", track="perfect", seed=3).native()
+        loco.Scenario(name="S_high", track="perfect", seed=3).native()
     with pytest.raises(loco.ParameterError, match="fsd_trigger"):
-        loco.Scenario(scenario="S_high", yaw_damper="YD1", fsd_trigger="hydraulic").native()
+        loco.Scenario(name="S_high", yaw_damper="YD1", fsd_trigger="hydraulic").native()
     with pytest.raises(loco.ParameterError, match="yaw_damper"):
-        loco.Scenario(scenario="S_high", yaw_damper="fsd").native()
+        loco.Scenario(name="S_high", yaw_damper="fsd").native()
     with pytest.raises(loco.ParameterError, match="`speed`"):
-        loco.Scenario(scenario="S_high", speed="fast").native()  # type: ignore[arg-type]
+        loco.Scenario(name="S_high", speed="fast").native()  # type: ignore[arg-type]
     with pytest.raises(loco.ParameterError, match="gauge"):
-        loco.Scenario(scenario="S_high", gauge=-1.0).native()
-    # By the Python spelling `scenario`, not the study file's `name`.
-    with pytest.raises(loco.ParameterError, match=r"`scenario`.*`scenario`.*`wheel`"):
-        loco.Scenario(scenario="S_high", wheel="jm3-new").native()
-    with pytest.raises(loco.ParameterError, match="`scenario`: unknown scenario 'S_mid'"):
-        loco.Scenario(scenario="S_mid").native()
+        loco.Scenario(name="S_high", gauge=-1.0).native()
+    # One spelling: the core's message names the field as Python and the study file write it.
+    with pytest.raises(loco.ParameterError, match=r"`name`.*`name`.*`wheel`"):
+        loco.Scenario(name="S_high", wheel="jm3-new").native()
+    with pytest.raises(loco.ParameterError, match="`name`: unknown scenario 'S_mid'"):
+        loco.Scenario(name="S_mid").native()
 
 
 def test_presets_are_the_cores() -> None:
@@ -89,7 +90,7 @@ def _run(scenario: loco.Scenario) -> loco.SimulationResult:
 
 def test_a_preset_damper_by_name_runs_as_the_damper_object() -> None:
     base = dict(
-        scenario="S_low", speed=50.0, distance=15.0, track="perfect", initial_lateral_offset=3e-3
+        name="S_low", speed=50.0, distance=15.0, track="perfect", initial_lateral_offset=3e-3
     )
     by_name = _run(loco.Scenario(**base, yaw_damper="FSD", fsd_trigger="hydraulic"))  # type: ignore[arg-type]
     by_object = _run(loco.Scenario(**base, yaw_damper=loco.dampers.FSD_HYDRAULIC))  # type: ignore[arg-type]
@@ -103,7 +104,7 @@ def test_track_setup_reaches_the_contact() -> None:
     # the wheels run on other tread points, so a disturbed run differs; the study's values
     # given explicitly are the defaults bit for bit.
     base = dict(
-        scenario="S_high", speed=50.0, distance=10.0, track="perfect", initial_lateral_offset=3e-3
+        name="S_high", speed=50.0, distance=10.0, track="perfect", initial_lateral_offset=3e-3
     )
     default = _run(loco.Scenario(**base))  # type: ignore[arg-type]
     d = loco.Scenario.defaults()

@@ -12,7 +12,7 @@ import pytest
 import loco
 from loco.stability import CriticalSpeed
 
-S = {"scenario": "S_norm"}
+S = {"name": "S_norm"}
 
 
 def _refusal(settings: dict[str, object], field: str) -> str:
@@ -46,7 +46,7 @@ def _refusal(settings: dict[str, object], field: str) -> str:
         ({"track": 1}, "track", "expected a name (str)"),
         ({"yaw_damper": 2e5}, "yaw_damper", "expected a name (str)"),
         ({"gauge": "1.435"}, "gauge", "expected a real number"),
-        ({"scenario": 3}, "scenario", "expected a name (str)"),
+        ({"name": 3}, "name", "expected a name (str)"),
     ],
 )
 def test_a_wrong_type_is_a_parameter_error_naming_the_field(
@@ -57,7 +57,7 @@ def test_a_wrong_type_is_a_parameter_error_naming_the_field(
 
 def test_numpy_and_integral_values_are_accepted() -> None:
     native = loco.Scenario(
-        scenario="S_norm", speed=np.float64(50.0), seed=np.int64(3), fastsim_grid=(12.0, 8)
+        name="S_norm", speed=np.float64(50.0), seed=np.int64(3), fastsim_grid=(12.0, 8)
     ).native()
     assert native.speed == 50.0
 

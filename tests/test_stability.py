@@ -13,10 +13,10 @@ import loco.conicity
 def test_hunting_mode_loses_damping_with_speed_and_weak_yaw_dampers() -> None:
     vehicle = loco.Locomotive.default()
     slow = loco.eigen(
-        vehicle, loco.Scenario(scenario="S_high", speed=80 / 3.6, yaw_damper=loco.dampers.YD1)
+        vehicle, loco.Scenario(name="S_high", speed=80 / 3.6, yaw_damper=loco.dampers.YD1)
     )
     fast = loco.eigen(
-        vehicle, loco.Scenario(scenario="S_high", speed=300 / 3.6, yaw_damper=loco.dampers.YD1)
+        vehicle, loco.Scenario(name="S_high", speed=300 / 3.6, yaw_damper=loco.dampers.YD1)
     )
     assert slow.least_damped().damping_ratio > 0.0
     hunting = fast.least_damped()
@@ -30,10 +30,10 @@ def test_hunting_mode_loses_damping_with_speed_and_weak_yaw_dampers() -> None:
 def test_critical_speed_rises_with_the_stiffer_yaw_damper() -> None:
     vehicle = loco.Locomotive.default()
     yd1 = loco.critical_speed(
-        vehicle, loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1), tolerance=2.0
+        vehicle, loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1), tolerance=2.0
     )
     yd2 = loco.critical_speed(
-        vehicle, loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD2), tolerance=2.0
+        vehicle, loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD2), tolerance=2.0
     )
     assert 20.0 < yd1 < 300 / 3.6
     assert yd2 > yd1
@@ -43,7 +43,7 @@ def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:
     # The core's bisection (its own eigenvalue solver) agrees with numpy's eigenvalues: the
     # least damped mode is damped just below the result and undamped just above it.
     vehicle = loco.Locomotive.default()
-    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    scenario = loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1)
     speed = loco.critical_speed(vehicle, scenario, tolerance=0.5)
     assert 20.0 < speed < 110.0
     for offset, stable in ((-0.5, True), (0.5, False)):
@@ -64,7 +64,7 @@ def test_a_tolerance_below_the_float_spacing_ends_at_the_float_resolution() -> N
     # Once a hang: halving a bracket of adjacent floats gives one of its ends, which never
     # shrinks it below 1e-300. The search ends where the bracket cannot shrink any more.
     vehicle = loco.Locomotive.default()
-    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    scenario = loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1)
     exact = loco.critical_speed(vehicle, scenario, tolerance=1e-300)
     coarse = loco.critical_speed(vehicle, scenario, tolerance=1e-6)
     assert exact.found and abs(exact - coarse) < 1e-6
@@ -74,7 +74,7 @@ def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
     # Worn wheels hunt subcritically: after a disturbance well above the linear critical speed
     # the limit cycle survives below it, so a ramp-down loses it at or below that speed.
     vehicle = loco.Locomotive.default()
-    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    scenario = loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1)
     linear = loco.critical_speed(vehicle, scenario, tolerance=2.0)
     assert 20.0 < linear < 100.0
     start = scenario.replace(speed=1.3 * linear)
@@ -90,7 +90,7 @@ def test_nonlinear_critical_speed_is_at_or_below_the_linear_one() -> None:
 
 def test_ramp_down_reports_its_record_and_checks_its_inputs() -> None:
     vehicle = loco.Locomotive.default()
-    slow = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD2, speed=30.0)
+    slow = loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD2, speed=30.0)
     ramp = loco.stability.ramp_down(vehicle, slow, end_speed=25.0)
     # Stiff yaw dampers at 30 m/s: the disturbance dies during the hold, no ramp is needed.
     assert ramp.outcome == "stable_at_start"
@@ -108,7 +108,7 @@ def test_ramp_down_reports_its_record_and_checks_its_inputs() -> None:
 
 def test_linear_critical_speed_falls_as_the_conicity_rises() -> None:
     vehicle = loco.Locomotive.default()
-    scenario = loco.Scenario(scenario="S_high", yaw_damper=loco.dampers.YD1)
+    scenario = loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1)
     speeds = [
         loco.critical_speed(vehicle, scenario, conicity=c, tolerance=1.0, high=400 / 3.6)
         for c in (0.05, 0.2, 0.4)

@@ -47,15 +47,15 @@ def test_non_physical_parameters_are_refused_by_name(overrides: dict, name: str)
 def test_bad_scenarios_raise_typed_errors() -> None:
     vehicle = loco.Locomotive.default()
     with pytest.raises(loco.ParameterError, match="speed"):
-        loco.simulate(vehicle, loco.Scenario(scenario="S_high", speed=0.0, distance=50.0))
+        loco.simulate(vehicle, loco.Scenario(name="S_high", speed=0.0, distance=50.0))
     with pytest.raises(loco.ParameterError, match="speed"):
-        loco.simulate(vehicle, loco.Scenario(scenario="S_high", speed=200.0, distance=50.0))
+        loco.simulate(vehicle, loco.Scenario(name="S_high", speed=200.0, distance=50.0))
     with pytest.raises(loco.ParameterError, match="scenario"):
-        loco.simulate(vehicle, loco.Scenario(scenario="S_nope"))
+        loco.simulate(vehicle, loco.Scenario(name="S_nope"))
 
 
 def test_short_run_on_perfect_track_returns_channels() -> None:
-    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=40.0, track="perfect")
+    scenario = loco.Scenario(name="S_norm", speed=50.0, distance=40.0, track="perfect")
     result = loco.simulate(loco.Locomotive.default(), scenario)
     assert result.channels.shape == (len(result.channel_names), result.time.size)
     assert result.time[1] - result.time[0] == pytest.approx(1 / 500)
@@ -78,7 +78,7 @@ def test_short_run_on_perfect_track_returns_channels() -> None:
 
 def test_full_run_gives_metrics_and_fsd_valve_state() -> None:
     scenario = loco.Scenario(
-        scenario="S_high", speed=200 / 3.6, distance=300.0, seed=3, yaw_damper=loco.dampers.FSD
+        name="S_high", speed=200 / 3.6, distance=300.0, seed=3, yaw_damper=loco.dampers.FSD
     )
     result = loco.simulate(loco.Locomotive.default(), scenario)
     assert 0.5 < result.metrics["wy_max"] < 5.0
@@ -133,7 +133,7 @@ def test_lead_in_is_run_but_not_recorded() -> None:
     # 100 m of lead-in at 50 m/s is 2 s = 1000 samples: the recorded 50 m are the last samples of
     # one 150 m run on the same track (the track covers lead-in + distance either way).
     vehicle = loco.Locomotive.default()
-    common = {"scenario": "S_high", "speed": 50.0, "seed": 4, "yaw_damper": loco.dampers.FSD}
+    common = {"name": "S_high", "speed": 50.0, "seed": 4, "yaw_damper": loco.dampers.FSD}
     whole = loco.simulate(vehicle, loco.Scenario(distance=150.0, **common))
     tail = loco.simulate(vehicle, loco.Scenario(distance=50.0, lead_in=100.0, **common))
     assert tail.time[0] == 0.0 and len(tail.time) == 501
@@ -164,7 +164,7 @@ def test_the_native_handle_is_built_once_and_travels_by_its_file(tmp_path: Path)
     with pytest.raises(loco.ParameterError, match="C_sxx"):
         soft["C_sxx"]
     # The handle's run is the run of a vehicle built again from its file and overrides.
-    scenario = loco.Scenario(scenario="S_norm", speed=50.0, distance=10.0, track="perfect")
+    scenario = loco.Scenario(name="S_norm", speed=50.0, distance=10.0, track="perfect")
     a = loco.simulate(soft, scenario)
     b = loco.simulate(back, scenario)
     assert np.array_equal(a.channels, b.channels)

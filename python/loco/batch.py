@@ -3,7 +3,7 @@
 >>> import numpy as np, loco
 >>> params = np.array([[2e5, 3.5e6], [8e5, 3.5e6]])          # C_sx (N·s/m), K_py (N/m)
 >>> result = loco.run_batch(params, ["C_sx", "K_py"],
-...                         scenario=loco.Scenario(scenario="S_high"))  # doctest: +SKIP
+...                         scenario=loco.Scenario(name="S_high"))  # doctest: +SKIP
 >>> result.to_frame()[["C_sx", "wy_max", "ayb_peak_lp", "status"]]  # doctest: +SKIP
 
 Every sample runs on the same synthesised track (common random numbers: differences between
@@ -146,7 +146,7 @@ def run_batch(
         The base vehicle (default: the embedded one).
     scenario : Scenario, optional
         Wheel and rail, speed, distance, track, yaw damper
-        (default: ``Scenario(scenario="S_high")``).
+        (default: ``Scenario(name="S_high")``).
     threads : int, optional
         Worker threads (default or 0: one per core, as ``loco-batch --threads 0``). Results do
         not depend on it.
@@ -192,7 +192,7 @@ def run_batch(
             per_sample_track=per_sample_track,
         )
     vehicle = vehicle or Locomotive.default()
-    scenario = scenario or Scenario(scenario="S_high")
+    scenario = scenario or Scenario(name="S_high")
     x = np.asarray(params, dtype=np.float64)
     if x.ndim != 2:
         raise _loco.ParameterError(

@@ -199,7 +199,7 @@ def run_campaign(
     """
     context = current() or CampaignContext()
     vehicle = vehicle or Locomotive.default()
-    scenario = scenario or Scenario(scenario="S_high")
+    scenario = scenario or Scenario(name="S_high")
     x = np.asarray(params, dtype=np.float64)
     if x.ndim != 2 or x.shape[1] != len(names):
         raise _loco.ParameterError(

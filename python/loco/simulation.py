@@ -1,7 +1,7 @@
 """Simulating the locomotive: scenarios, a single run and its result.
 
 >>> import loco
->>> scenario = loco.Scenario(scenario="S_high", speed=200 / 3.6)
+>>> scenario = loco.Scenario(name="S_high", speed=200 / 3.6)
 >>> result = loco.simulate(loco.Locomotive.default(), scenario)  # doctest: +SKIP
 >>> result.metrics[loco.Metric.WY_MAX]  # doctest: +SKIP
 """
@@ -46,18 +46,14 @@ SCENARIOS: dict[str, tuple[str, str]] = {n: (w, r) for n, w, r in _loco.scenario
 #: The creep models a scenario accepts (``Scenario(creep=...)``), from the core.
 CREEP_MODELS: tuple[str, ...] = tuple(_loco.creep_model_names())
 
-#: Python spellings that differ from the core's (the study file's ``[scenario]`` keys).
-_CORE_NAMES = {"scenario": "name"}
-
 #: Every setting with a default, at its default, from the core (``ScenarioSettings::defaults``).
 _DEFAULTS: dict[str, Any] = {
-    {v: k for k, v in _CORE_NAMES.items()}.get(k, k): v
-    for k, v in _loco.scenario_defaults().items()
-    if k not in ("per_sample_track", "speed_kmh")
+    k: v for k, v in _loco.scenario_defaults().items() if k not in ("per_sample_track", "speed_kmh")
 }
 
 #: Spellings that were replaced, with what to write instead.
 _REPLACED = {
+    "scenario": 'replaced by `name` (the study file\'s spelling); write name="S_high"',
     "perfect_track": 'replaced by `track`; write track="perfect"',
     "track_kind": 'replaced by `track`; write track="perfect" or track="synthetic"',
     "creep_table": 'replaced by `creep`; write creep="table" (or "fastsim", "fastrip")',
@@ -85,7 +81,7 @@ class Scenario:
     the others (:meth:`defaults`, the same defaults and checks as the study file's ``[scenario]``
     section of ``loco-batch``). Reading a setting gives its value, given or default.
 
-    Give either ``scenario`` (``"S_low"``, ``"S_norm"``, ``"S_high"``: :data:`SCENARIOS`) or
+    Give either ``name`` (``"S_low"``, ``"S_norm"``, ``"S_high"``: :data:`SCENARIOS`) or
     ``wheel`` (a :class:`loco.profiles.Profile`, a built-in name or a profile file) with an
     optional ``rail`` (default ``cn60``). ``track`` is ``"synthetic"`` (default: synthesised from
     ``spectrum`` — ``"cn-hsr"``, ``"german-low"``, ``"german-high"`` —, ``seed`` and the
@@ -106,12 +102,12 @@ class Scenario:
     each ``kind`` (``"straight"``, ``"transition"``, ``"curve"``) and ``length_m``; a curve adds
     ``radius_m``, ``cant_mm`` and ``direction`` (``"left"`` or ``"right"``), a transition
     (clothoid, linear cant run-off) may give ``cant_run_off_m``; s = 0 is where the leading
-    wheelset starts; irregularities come on top. ``perfect_track`` and
-    ``creep_table`` were replaced (``track="perfect"``, ``creep="table"``): refused with
-    :class:`loco.ParameterError` saying so.
+    wheelset starts; irregularities come on top. ``scenario``, ``perfect_track`` and
+    ``creep_table`` were replaced (``name="S_high"``, ``track="perfect"``, ``creep="table"``):
+    refused with :class:`loco.ParameterError` saying so.
     """
 
-    scenario: str | None = _Setting()  # type: ignore[assignment]
+    name: str | None = _Setting()  # type: ignore[assignment]
     wheel: Profile | str | None = _Setting()  # type: ignore[assignment]
     rail: Profile | str = _Setting()  # type: ignore[assignment]
     speed: float = _Setting()  # type: ignore[assignment]
@@ -135,7 +131,7 @@ class Scenario:
 
     def __init__(
         self,
-        scenario: str | None = None,
+        name: str | None = None,
         *,
         wheel: Profile | str | None = None,
         rail: Profile | str | None = None,
@@ -159,15 +155,15 @@ class Scenario:
         curve: str | os.PathLike[str] | Sequence[Mapping[str, float | str]] | None = None,
         **replaced: object,
     ) -> None:
-        for name in replaced:
-            if name not in _REPLACED:
-                raise TypeError(f"Scenario() got an unexpected keyword argument '{name}'")
-            raise _loco.ParameterError(f"invalid parameter `{name}`: {_REPLACED[name]}")
+        for old in replaced:
+            if old not in _REPLACED:
+                raise TypeError(f"Scenario() got an unexpected keyword argument '{old}'")
+            raise _loco.ParameterError(f"invalid parameter `{old}`: {_REPLACED[old]}")
         given = {k: v for k, v in locals().items() if k in SETTINGS and v is not None}
-        for name, value in given.items():
+        for setting, value in given.items():
             if isinstance(value, list):
                 value = tuple(value)
-            object.__setattr__(self, name, value)
+            object.__setattr__(self, setting, value)
 
     def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"Scenario is immutable; use replace({name}=...)")
@@ -206,26 +202,17 @@ class Scenario:
         given = self.given()
         if seed is not None:
             given["seed"] = seed
-        for name, value in given.items():
+        for setting, value in given.items():
             if isinstance(value, (Profile, Damper)):
-                objects[name] = value
+                objects[setting] = value
             elif isinstance(value, Track):
-                objects[name] = value.native
+                objects[setting] = value.native
             elif isinstance(value, os.PathLike):
-                settings[name] = os.fspath(value)
+                settings[setting] = os.fspath(value)
             else:
-                check = _CHECKS.get(name)
-                settings[_CORE_NAMES.get(name, name)] = (
-                    value if check is None else check(name, value)
-                )
-        try:
-            return _loco.RunScenario(settings, **objects)
-        except _loco.ParameterError as e:
-            # The core names its own spelling (the study file's `name`); the user wrote this one.
-            message = str(e)
-            for python, core in _CORE_NAMES.items():
-                message = message.replace(f"`{core}`", f"`{python}`")
-            raise type(e)(message) from None
+                check = _CHECKS.get(setting)
+                settings[setting] = value if check is None else check(setting, value)
+        return _loco.RunScenario(settings, **objects)
 
 
 #: The settings of a :class:`Scenario`, in the order of its signature.
@@ -282,7 +269,7 @@ _CHECKS: dict[str, Any] = {
     **{
         n: _name_or_path
         for n in (
-            "scenario",
+            "name",
             "spectrum",
             "creep",
             "fsd_trigger",

@@ -65,7 +65,7 @@ def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:
     if conicity is None:
         return scenario
     wheel, rail = _loco.conical_profiles(float(conicity))
-    return scenario.replace(scenario=None, wheel=wheel, rail=rail)
+    return scenario.replace(name=None, wheel=wheel, rail=rail)
 
 
 def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = None) -> Eigen:

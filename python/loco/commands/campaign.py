@@ -28,7 +28,7 @@ def _describe(meta: dict[str, object]) -> str:
     if not isinstance(inputs, dict):
         return ""
     scenario = inputs.get("scenario", {})
-    case = scenario.get("scenario") if isinstance(scenario, dict) else None
+    case = scenario.get("name") if isinstance(scenario, dict) else None
     names = ", ".join(str(n) for n in inputs.get("names", []))
     return f"{case or 'custom scenario'}; columns {names}; loco {inputs.get('loco_version')}"
 

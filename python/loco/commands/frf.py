@@ -53,7 +53,7 @@ def run(args: argparse.Namespace) -> int:
         else loco.Locomotive.from_toml(args.vehicle)
     )
     scenario = loco.Scenario(
-        scenario=args.scenario,
+        name=args.scenario,
         speed=float(args.speed) / 3.6,
         yaw_damper=dampers.PRESETS[args.damper],
         spectrum=args.spectrum,

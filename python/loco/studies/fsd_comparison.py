@@ -323,7 +323,7 @@ def run_fsd_comparison(stage: FsdComparisonStage, runtime: Runtime | None = None
     for scenario_name, label, channel in CASES:
         for name, law in stage.damper_set.items():
             scenario = loco.Scenario(
-                scenario=scenario_name,
+                name=scenario_name,
                 speed=stage.speed_kmh / 3.6,
                 distance=stage.distance,
                 lead_in=stage.lead_in,

@@ -162,13 +162,13 @@ def run_conicity_sweep(
     def one(job: tuple[float, str]) -> TrackRuns:
         c, name = job
         scenario = loco.Scenario(
-            scenario="S_norm",
+            name="S_norm",
             speed=speed_kmh / 3.6,
             distance=distance,
             lead_in=lead_in,
             seed=seed,
             yaw_damper=laws[name],
-        ).replace(scenario=None, wheel=wheels[c], rail=RAIL)
+        ).replace(name=None, wheel=wheels[c], rail=RAIL)
         return run_over_tracks(scenario, n_tracks, threads=1, progress=False)
 
     # One case per worker, its tracks in turn: a case's few tracks would leave cores idle, and

@@ -125,7 +125,7 @@ def parallel_map(fn: Callable[[Any], T], items: Sequence[Any], threads: int | No
 
 def _run(setup: DesignSetup, law: dampers.Damper, scenario: str, metric: str) -> float:
     s = loco.Scenario(
-        scenario=scenario,
+        name=scenario,
         speed=setup.speed_kmh / 3.6,
         distance=setup.distance,
         lead_in=setup.lead_in,
@@ -137,7 +137,7 @@ def _run(setup: DesignSetup, law: dampers.Damper, scenario: str, metric: str) ->
 
 
 def _critical_kmh(setup: DesignSetup, law: dampers.Damper) -> float:
-    s = loco.Scenario(scenario="S_high", speed=setup.speed_kmh / 3.6, distance=100.0)
+    s = loco.Scenario(name="S_high", speed=setup.speed_kmh / 3.6, distance=100.0)
     vehicle = loco.Locomotive.default()
     return float(loco.critical_speed(vehicle, s.replace(yaw_damper=law), high=SEARCH_HIGH)) * 3.6
 

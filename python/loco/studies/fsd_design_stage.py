@@ -105,7 +105,7 @@ def linear_critical_speeds(
     vehicle = loco.Locomotive.default()
 
     def one(job: tuple[str, str]) -> float:
-        s = loco.Scenario(scenario=job[0], speed=speed_kmh / 3.6, distance=100.0)
+        s = loco.Scenario(name=job[0], speed=speed_kmh / 3.6, distance=100.0)
         v = loco.critical_speed(
             vehicle, s.replace(yaw_damper=laws[job[1]]), high=fsd_design.SEARCH_HIGH
         )

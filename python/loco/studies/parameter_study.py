@@ -102,7 +102,7 @@ class StudySetup:
     def scenario(self, name: str) -> loco.Scenario:
         """The scenario ``name`` at the study speed and distance, vehicle file's yaw damper."""
         return loco.Scenario(
-            scenario=name, speed=self.speed_kmh / 3.6, distance=self.distance, seed=self.track_seed
+            name=name, speed=self.speed_kmh / 3.6, distance=self.distance, seed=self.track_seed
         )
 
     def evaluator(self, runtime: Runtime | None = None) -> Evaluator:

@@ -302,7 +302,7 @@ def run_speed_sweep(stage: SpeedSweepStage, runtime: Runtime | None = None) -> S
         rows = []
         for v in speeds:
             scenario = loco.Scenario(
-                scenario=name,
+                name=name,
                 speed=v / 3.6,
                 distance=stage.distance,
                 lead_in=stage.lead_in,
