@@ -33,7 +33,7 @@ def main() -> None:
     fig, axes = plt.subplots(2, 2, figsize=(11, 7), constrained_layout=True)
     for row, (name, label) in enumerate([("S_low", "A_yc"), ("S_high", "A_yb")]):
         channel = channels[label]
-        scenario = loco.Scenario(scenario=name, speed=200 / 3.6, yaw_damper=loco.dampers.YD2)
+        scenario = loco.Scenario(name=name, speed=200 / 3.6, yaw_damper=loco.dampers.YD2)
         result = loco.simulate(vehicle, scenario)
         signal = result.channel(channel)
         f, p = loco.metrics.psd(signal, result.sampling_rate)
