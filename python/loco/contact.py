@@ -10,7 +10,7 @@ wheelset, as the vehicle model does, which moves flange contact about r·φ ≈ 
 
 Track set-up keywords (SI units): ``gauge`` (m, measured ``gauge_height`` below the rail top),
 ``inclination`` (rad, rail cant toward the track centre; 0 for already canted rail profiles),
-``back_to_back`` or its synonym ``flange_back_spacing`` (m, between the wheels' inner faces),
+``back_to_back`` (m, between the wheels' inner faces; EN 15302's flange back spacing),
 ``flange_back_offset`` (m, from a wheel's inner face to its taping line) and ``nominal_radius``
 (m, one value or a (left, right) pair). Defaults are the study's: 1435 mm gauge at 16 mm, 1:40,
 back-to-back 1353 mm, 70 mm, 625 mm (:data:`SETUP_DEFAULTS`, from the core).
@@ -90,15 +90,11 @@ def _wheelset(
     gauge: float,
     gauge_height: float,
     inclination: float,
-    back_to_back: float | None,
-    flange_back_spacing: float | None,
+    back_to_back: float,
     flange_back_offset: float,
     nominal_radius: float | tuple[float, float],
 ) -> _loco.WheelsetContact:
     """The native wheelset on its rails, its contact search prepared once."""
-    if back_to_back is not None and flange_back_spacing is not None:
-        raise _loco.ParameterError("give back_to_back or flange_back_spacing, not both")
-    spacing = back_to_back if back_to_back is not None else flange_back_spacing
     if isinstance(nominal_radius, tuple):
         r_left, r_right = nominal_radius
     else:
@@ -111,7 +107,7 @@ def _wheelset(
         gauge=float(gauge),
         gauge_height=float(gauge_height),
         rail_inclination=float(inclination),
-        back_to_back=float(spacing if spacing is not None else SETUP_DEFAULTS["back_to_back"]),
+        back_to_back=float(back_to_back),
         flange_back_offset=float(flange_back_offset),
         nominal_radius_left=float(r_left),
         nominal_radius_right=float(r_right),
@@ -128,8 +124,7 @@ def geometry(
     gauge: float = SETUP_DEFAULTS["gauge"],
     gauge_height: float = SETUP_DEFAULTS["gauge_height"],
     inclination: float = SETUP_DEFAULTS["rail_inclination"],
-    back_to_back: float | None = None,
-    flange_back_spacing: float | None = None,
+    back_to_back: float = SETUP_DEFAULTS["back_to_back"],
     flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
     nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
 ) -> ContactGeometry:
@@ -148,7 +143,6 @@ def geometry(
         gauge_height,
         inclination,
         back_to_back,
-        flange_back_spacing,
         flange_back_offset,
         nominal_radius,
     )
@@ -165,8 +159,7 @@ def rolling_radius_difference(
     gauge: float = SETUP_DEFAULTS["gauge"],
     gauge_height: float = SETUP_DEFAULTS["gauge_height"],
     inclination: float = SETUP_DEFAULTS["rail_inclination"],
-    back_to_back: float | None = None,
-    flange_back_spacing: float | None = None,
+    back_to_back: float = SETUP_DEFAULTS["back_to_back"],
     flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
     nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
 ) -> _FloatArray:
@@ -182,7 +175,6 @@ def rolling_radius_difference(
         gauge_height,
         inclination,
         back_to_back,
-        flange_back_spacing,
         flange_back_offset,
         nominal_radius,
     )
