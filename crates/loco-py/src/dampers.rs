@@ -1,8 +1,7 @@
-//! Bindings of `loco_core::dampers`: the `Damper` class, its constructors and presets, and the
-//! bench. Python arguments are SI (N·s/m, N/m, kg, Hz, s, m, m², kg/m³, m²/s).
+//! Bindings of `loco_core::dampers`: the `Damper` class, its constructors and presets (the bench
+//! is `damper_bench.rs`). Python arguments are SI (N·s/m, N/m, kg, Hz, s, m, m², kg/m³, m²/s).
 
 use crate::errors::run_detached;
-use loco_core::dampers::bench::{self, BenchMotion, BenchOptions, BenchRecord};
 use loco_core::dampers::{
     BlowOff, Damper, FsdDamper, FsdParams, FsdTrigger, FsdTriggerParams, HydraulicDamper,
     HydraulicFrequencyValve, HydraulicParams, HydraulicValve, HydraulicValveParams, MaxwellDamper,
@@ -13,6 +12,9 @@ use loco_core::LocoError as CoreError;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+
+/// A float array handed to Python.
+pub(crate) type Arr<'py> = Bound<'py, PyArray1<f64>>;
 
 /// A validated damper (immutable). Build it with `maxwell`, `fsd`, `hydraulic` or a preset.
 #[pyclass(frozen, name = "Damper", module = "loco._loco")]
@@ -393,117 +395,6 @@ fn damper_preset_names() -> Vec<&'static str> {
     presets::DAMPER_PRESETS.to_vec()
 }
 
-type Arr<'py> = Bound<'py, PyArray1<f64>>;
-type BenchTuple<'py> = (
-    Arr<'py>,
-    Arr<'py>,
-    Arr<'py>,
-    Arr<'py>,
-    Arr<'py>,
-    Arr<'py>,
-    Option<(f64, f64, f64)>,
-    f64,
-    Arr<'py>,
-);
-
-fn to_tuple(py: Python<'_>, r: BenchRecord) -> BenchTuple<'_> {
-    (
-        r.time_s.into_pyarray(py),
-        r.displacement_m.into_pyarray(py),
-        r.velocity_mps.into_pyarray(py),
-        r.force_n.into_pyarray(py),
-        r.scale_factor.into_pyarray(py),
-        r.estimated_frequency_hz.into_pyarray(py),
-        r.equivalent
-            .map(|e| (e.damping_nspm, e.stiffness_npm, e.energy_per_cycle_j)),
-        r.dissipated_energy_j,
-        r.valve_volume_m3.into_pyarray(py),
-    )
-}
-
-fn options(
-    steps_per_cycle: usize,
-    samples_per_cycle: usize,
-    equivalent_cycles: usize,
-) -> BenchOptions {
-    BenchOptions {
-        steps_per_cycle,
-        samples_per_cycle,
-        equivalent_cycles,
-    }
-}
-
-/// Sine bench: (time, displacement, velocity, force, scale factor, estimated frequency,
-/// (c_eq, k_eq, energy per cycle), dissipated energy).
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (damper, frequency, amplitude, cycles, steps_per_cycle, samples_per_cycle, equivalent_cycles))]
-fn damper_bench_sine<'py>(
-    py: Python<'py>,
-    damper: &PyDamper,
-    frequency: f64,
-    amplitude: f64,
-    cycles: usize,
-    steps_per_cycle: usize,
-    samples_per_cycle: usize,
-    equivalent_cycles: usize,
-) -> PyResult<BenchTuple<'py>> {
-    let inner = damper.inner;
-    let motion = BenchMotion::Sine {
-        frequency_hz: frequency,
-        amplitude_m: amplitude,
-        cycles,
-    };
-    let opts = options(steps_per_cycle, samples_per_cycle, equivalent_cycles);
-    let record = run_detached(py, move || bench::run(&inner, &motion, &opts))?;
-    Ok(to_tuple(py, record))
-}
-
-/// Linear sweep bench; same tuple as the sine bench with no equivalent values.
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (damper, start_frequency, end_frequency, amplitude, duration, steps_per_cycle, samples_per_cycle))]
-fn damper_bench_sweep<'py>(
-    py: Python<'py>,
-    damper: &PyDamper,
-    start_frequency: f64,
-    end_frequency: f64,
-    amplitude: f64,
-    duration: f64,
-    steps_per_cycle: usize,
-    samples_per_cycle: usize,
-) -> PyResult<BenchTuple<'py>> {
-    let inner = damper.inner;
-    let motion = BenchMotion::Sweep {
-        start_frequency_hz: start_frequency,
-        end_frequency_hz: end_frequency,
-        amplitude_m: amplitude,
-        duration_s: duration,
-    };
-    let opts = options(steps_per_cycle, samples_per_cycle, 1);
-    let record = run_detached(py, move || bench::run(&inner, &motion, &opts))?;
-    Ok(to_tuple(py, record))
-}
-
-/// Recorded-motion bench; same tuple as the sine bench with no equivalent values.
-#[pyfunction]
-fn damper_bench_recorded<'py>(
-    py: Python<'py>,
-    damper: &PyDamper,
-    time: PyReadonlyArray1<'py, f64>,
-    displacement: PyReadonlyArray1<'py, f64>,
-) -> PyResult<BenchTuple<'py>> {
-    let inner = damper.inner;
-    let motion = BenchMotion::Recorded {
-        time_s: time.as_array().to_vec(),
-        displacement_m: displacement.as_array().to_vec(),
-    };
-    let record = run_detached(py, move || {
-        bench::run(&inner, &motion, &BenchOptions::default())
-    })?;
-    Ok(to_tuple(py, record))
-}
-
 /// Adds this file's functions and classes to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyDamper>()?;
@@ -516,8 +407,5 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fsd_trigger_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_reference_stroke_amplitude, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_valve_opening_band, m)?)?;
-    m.add_function(wrap_pyfunction!(damper_bench_sine, m)?)?;
-    m.add_function(wrap_pyfunction!(damper_bench_sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(damper_bench_recorded, m)?)?;
     Ok(())
 }

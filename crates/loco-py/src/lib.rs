@@ -8,6 +8,7 @@ mod batch;
 mod conicity;
 mod contact;
 mod creep;
+mod damper_bench;
 mod dampers;
 mod errors;
 mod frequency_response;
@@ -33,6 +34,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     metrics::register(m)?;
     names::register(m)?;
     dampers::register(m)?;
+    damper_bench::register(m)?;
     scenario::register(m)?;
     vehicle_handle::register(m)?;
     vehicle::register(m)?;
