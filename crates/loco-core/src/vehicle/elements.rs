@@ -36,9 +36,10 @@ pub fn add_force(wrenches: &mut Wrenches, body: usize, u: &[f64; 6], r: [f64; 3]
     add_force_at(wrenches, body, add(r, cross([u[3], u[4], u[5]], r)), f);
 }
 
-/// Adds force `f` (N) acting at the rotated lever arm `arm` (m) of `body`.
+/// Adds force `f` (N) acting at the lever arm `arm` (m from the centre of gravity, track axes,
+/// already turned with the body) of `body`.
 #[inline]
-fn add_force_at(wrenches: &mut Wrenches, body: usize, arm: [f64; 3], f: [f64; 3]) {
+pub fn add_force_at(wrenches: &mut Wrenches, body: usize, arm: [f64; 3], f: [f64; 3]) {
     let m = cross(arm, f);
     let w = &mut wrenches[body];
     w[0] += f[0];
