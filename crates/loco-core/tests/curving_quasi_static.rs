@@ -535,7 +535,7 @@ fn balanced_cant_wheel_loads_differ_by_the_roll_moment_of_the_outward_running_ve
     // The S_norm pair at R = 1200 m (the 4.1 % of `curving.rs`): the whole rail wrench closes
     // the bodies' balance the same way (measured 1400 against 1381 N·m, 1.4 %), so what the
     // balance at ±l misses (it explains 7.4 of the 15.3 kN) is where the contact points sit on
-    // the rail heads and at what height the lateral forces act: 5.9 kN·m, the loads' resultant
+    // the rail heads and at what height the lateral forces act: 6.1 kN·m, the loads' resultant
     // about 8 mm inward of ±l over the vehicle's 740 kN (two-point contact on the leading outer
     // wheels, the gauge-side point well inside the tread's).
     let (measured, predicted, mean, m) = load_balance(0.0, 1200.0, 28.08);
