@@ -29,11 +29,22 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--distance", type=float, default=500.0, help="m")
     parser.add_argument("--binary", type=Path, default=ROOT / "target/release/loco-batch")
+    parser.add_argument(
+        "--integrator", choices=loco.simulation.INTEGRATORS, default="rk4", help="time scheme"
+    )
     args = parser.parse_args()
+    step = 2e-3 if args.integrator == "etdrk4" else 1e-3
 
     columns = names()
     params = latin_hypercube(args.samples, seed=1)
-    scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
+    scenario = loco.Scenario(
+        name="S_high",
+        speed=200 / 3.6,
+        distance=args.distance,
+        seed=1,
+        integrator=args.integrator,
+        step=step,
+    )
 
     def python_run(threads: int) -> float:
         start = time.perf_counter()
@@ -46,7 +57,7 @@ def main() -> None:
         study = Path(tmp) / "study.toml"
         study.write_text(
             f'[scenario]\nname = "S_high"\nspeed = {200 / 3.6!r}\ndistance = {args.distance!r}\n'
-            "seed = 1\n",
+            f'seed = 1\nintegrator = "{args.integrator}"\nstep = {step!r}\n',
             encoding="utf-8",
         )
         samples = Path(tmp) / "samples.csv"

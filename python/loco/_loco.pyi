@@ -446,9 +446,16 @@ def damper_bench_recorded(damper: Damper, time: _F64, displacement: _F64) -> _Be
 
 # --- scenario (scenario.rs) -----------------------------------------------------------------------
 
-__all__ += ["RunScenario", "creep_model_names", "scenario_defaults", "scenario_presets"]
+__all__ += [
+    "RunScenario",
+    "creep_model_names",
+    "integrator_names",
+    "scenario_defaults",
+    "scenario_presets",
+]
 
 def creep_model_names() -> list[str]: ...
+def integrator_names() -> list[str]: ...
 def scenario_defaults() -> dict[
     str, bool | int | float | str | tuple[float, float] | tuple[int, int]
 ]: ...

@@ -46,6 +46,9 @@ SCENARIOS: dict[str, tuple[str, str]] = {n: (w, r) for n, w, r in _loco.scenario
 #: The creep models a scenario accepts (``Scenario(creep=...)``), from the core.
 CREEP_MODELS: tuple[str, ...] = tuple(_loco.creep_model_names())
 
+#: The integration schemes a scenario accepts (``Scenario(integrator=...)``), from the core.
+INTEGRATORS: tuple[str, ...] = tuple(_loco.integrator_names())
+
 #: Every setting with a default, at its default, from the core (``ScenarioSettings::defaults``).
 _DEFAULTS: dict[str, Any] = {
     k: v for k, v in _loco.scenario_defaults().items() if k not in ("per_sample_track", "speed_kmh")
@@ -102,7 +105,13 @@ class Scenario:
     each ``kind`` (``"straight"``, ``"transition"``, ``"curve"``) and ``length_m``; a curve adds
     ``radius_m``, ``cant_mm`` and ``direction`` (``"left"`` or ``"right"``), a transition
     (clothoid, linear cant run-off) may give ``cant_run_off_m``; s = 0 is where the leading
-    wheelset starts; irregularities come on top. ``scenario``, ``perfect_track`` and
+    wheelset starts; irregularities come on top. ``integrator`` is the time integration scheme
+    (:data:`INTEGRATORS`) with its fixed ``step`` (s): ``"rk4"`` (default), the classical RK4,
+    the reference at the default 1 ms; or ``"etdrk4"``, RK4's four stages with the gearbox
+    bearings' stiff springs solved exactly, for ``step=2e-3``: 1.7 times faster, within 0.14 %
+    of the reference in W_y and A_yb over the study's parameter box and 0.6 % in the A_yc PSD
+    peak (a step beyond 1 ms is cut to 1 ms while a wheelset is more than 3 mm off centre, and
+    not taken at all where it would reduce a damper law). ``scenario``, ``perfect_track`` and
     ``creep_table`` were replaced (``name="S_high"``, ``track="perfect"``, ``creep="table"``):
     refused with :class:`loco.ParameterError` saying so.
     """
@@ -120,6 +129,7 @@ class Scenario:
     yaw_damper: Damper | str = _Setting()  # type: ignore[assignment]
     fsd_trigger: str = _Setting()  # type: ignore[assignment]
     step: float = _Setting()  # type: ignore[assignment]
+    integrator: str = _Setting()  # type: ignore[assignment]
     output_rate: float = _Setting()  # type: ignore[assignment]
     fastsim_grid: tuple[int, int] = _Setting()  # type: ignore[assignment]
     creep: str = _Setting()  # type: ignore[assignment]
@@ -145,6 +155,7 @@ class Scenario:
         yaw_damper: Damper | str | None = None,
         fsd_trigger: str | None = None,
         step: float | None = None,
+        integrator: str | None = None,
         output_rate: float | None = None,
         fastsim_grid: tuple[int, int] | None = None,
         creep: str | None = None,
@@ -272,6 +283,7 @@ _CHECKS: dict[str, Any] = {
             "name",
             "spectrum",
             "creep",
+            "integrator",
             "fsd_trigger",
             "wheel",
             "rail",

@@ -1,5 +1,6 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
-//! creep model), with FaStrip and with the FASTSIM table, the same FASTSIM run on a curved track
+//! creep model), the same with the exponential scheme at 2 ms (`integrator = "etdrk4"`), with
+//! FaStrip and with the FASTSIM table, the same FASTSIM run on a curved track
 //! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m
 //! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), the same
 //! on a curve of the curving study (R = 3000 m, 60 mm cant), and one evaluation of its right-hand
@@ -8,8 +9,9 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::creep_model::CreepModel;
-use loco_core::vehicle::integrator::OdeSystem;
+use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::run::{RunSettings, EXPONENTIAL_STEP};
 use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
 };
@@ -34,6 +36,27 @@ fn bench_vehicle(c: &mut Criterion) {
                 wheel_rail.clone(),
                 track.clone(),
                 black_box(&scenario),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    // The same run with the exponential scheme at its 2 ms step (FASTSIM).
+    let exponential = Scenario {
+        run: RunSettings {
+            integrator: Integrator::ExponentialRk4,
+            step: EXPONENTIAL_STEP,
+            ..scenario.run
+        },
+        ..scenario.clone()
+    };
+    group.bench_function("run_500m_200kmh_etdrk4", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                wheel_rail.clone(),
+                track.clone(),
+                black_box(&exponential),
                 None,
             )
             .unwrap()

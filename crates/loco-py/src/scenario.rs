@@ -7,6 +7,7 @@ use crate::errors::to_py_err;
 use crate::track::PyTrack;
 use loco_core::toml_fields::read_table;
 use loco_core::vehicle::creep_model::CreepModel;
+use loco_core::vehicle::integrator::Integrator;
 use loco_core::vehicle::presets::SCENARIOS;
 use loco_core::vehicle::scenario::Scenario;
 use loco_core::vehicle::scenario_settings::CurveSetting;
@@ -20,7 +21,7 @@ use std::sync::Arc;
 /// A checked run scenario (SI units), from the settings of `loco_core`'s `ScenarioSettings`
 /// (the study file's `[scenario]` keys, same names, types and checks: `name`, `wheel`, `rail`,
 /// `speed`, `distance`, `lead_in`, `track`, `spectrum`, `seed`, `band`, `yaw_damper`,
-/// `fsd_trigger`, `step`, `output_rate`, `fastsim_grid`, `creep`, `initial_lateral_offset`,
+/// `fsd_trigger`, `step`, `integrator`, `output_rate`, `fastsim_grid`, `creep`, `initial_lateral_offset`,
 /// `gauge`, `gauge_height`, `rail_inclination`, `curve`), every one optional (`scenario_defaults()`), and
 /// the objects a caller holds instead of names (wheel and rail profiles, a track, a damper).
 #[pyclass(name = "RunScenario", module = "loco._loco", frozen)]
@@ -221,10 +222,17 @@ fn creep_model_names() -> Vec<&'static str> {
     CreepModel::NAMES.to_vec()
 }
 
+/// The names of the integration schemes a scenario accepts (`Integrator::NAMES`).
+#[pyfunction]
+fn integrator_names() -> Vec<&'static str> {
+    Integrator::NAMES.to_vec()
+}
+
 /// Adds the class and its function to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRunScenario>()?;
     m.add_function(wrap_pyfunction!(creep_model_names, m)?)?;
+    m.add_function(wrap_pyfunction!(integrator_names, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_presets, m)?)?;
     Ok(())

@@ -172,6 +172,7 @@ pub fn nonlinear_critical_speed(
         let mut system = vehicle.system_with_step(start_speed, step)?;
         // The ramp starts when the hunting has settled (below); until then V stays V0.
         system.speed = SpeedProfile::ramp(start_speed, settings.deceleration);
+        system.integrator = scenario.run.integrator;
         Ok(system)
     };
     // The scenario's step is the longest, as in a run (`simulate_prepared`).

@@ -357,6 +357,7 @@ pub fn simulate_prepared(
             scenario.yaw_damper.as_ref(),
             step,
         )?;
+        system.integrator = scenario.run.integrator;
         if let Some(design) = &design {
             system.curve = Some(Arc::new(CurvedTrack::new(
                 Arc::clone(design),

@@ -9,6 +9,7 @@
 //! both units) are refused with an error naming the field.
 
 use super::creep_model::CreepModel;
+use super::integrator::Integrator;
 use super::presets::{scenario_profiles, yaw_damper_preset, FILE_DAMPER, STUDY_RAIL};
 use super::run::RunSettings;
 use super::scenario::{Scenario, TrackSpec};
@@ -61,6 +62,9 @@ pub struct ScenarioSettings {
     pub fsd_trigger: Option<String>,
     /// Integration step, s.
     pub step: Option<f64>,
+    /// Integration scheme: `rk4` (default, the classical RK4, the reference at 1 ms) or `etdrk4`
+    /// (the gearbox bearings solved exactly, for a 2 ms step); see [`Integrator`].
+    pub integrator: Option<String>,
     /// Output sampling rate, Hz.
     pub output_rate: Option<f64>,
     /// Grid (nx, ny) of the creep model (FASTSIM's, FaStrip's, the table's solver).
@@ -245,6 +249,7 @@ impl ScenarioSettings {
             yaw_damper: Some(FILE_DAMPER.to_string()),
             fsd_trigger: Some(FsdTrigger::DEFAULT.to_string()),
             step: Some(run.step),
+            integrator: Some(run.integrator.name().to_string()),
             output_rate: Some(run.output_rate),
             fastsim_grid: Some([fastsim.nx, fastsim.ny]),
             creep: Some(CreepModel::default().name().to_string()),
@@ -298,6 +303,10 @@ impl ScenarioSettings {
                 "replaced by `creep`: write creep = \"table\" (or \"fastsim\", \"fastrip\")",
             ));
         }
+        let integrator = match &self.integrator {
+            Some(name) => Integrator::from_name(name)?,
+            None => Integrator::default(),
+        };
         let creep = match &self.creep {
             Some(name) => CreepModel::from_name(name)?,
             None => CreepModel::default(),
@@ -323,6 +332,7 @@ impl ScenarioSettings {
             yaw_damper,
             run: RunSettings {
                 step: or(self.step, defaults.step),
+                integrator,
                 output_rate: or(self.output_rate, defaults.output_rate),
                 ..RunSettings::default()
             },

@@ -14,7 +14,7 @@
 
 use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
-use super::integrator::OdeSystem;
+use super::integrator::{Integrator, OdeSystem};
 use super::layout::{
     body_wheelset, coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF,
     N_WHEELSETS, X, Y, YAW,
@@ -135,6 +135,8 @@ pub struct VehicleSystem {
     pub curve: Option<Arc<CurvedTrack>>,
     /// The curve terms' workspace (reference-frame states, the design at every body).
     pub(crate) frame_work: Box<FrameWork>,
+    /// The scheme a run's time loop steps with (the stable-step check follows it).
+    pub integrator: Integrator,
     /// Number of continuous states.
     n_states: usize,
     /// First error met inside a right-hand side (reported after the step).
@@ -191,6 +193,7 @@ impl VehicleSystem {
             rail_inputs: None,
             curve: None,
             frame_work: Box::default(),
+            integrator: Integrator::default(),
             n_states: offset,
             error: None,
             statistics: RunStatistics::default(),
@@ -307,6 +310,22 @@ impl VehicleSystem {
         }
         self.structure
             .generalized_forces(&self.wrenches, &mut self.gen_force);
+    }
+
+    /// The largest lateral displacement of a wheelset from its rails' centre line in state `y`
+    /// at time `t` (s) or, moving on at its lateral velocity, `ahead` (s) later, m.
+    pub fn largest_lateral_excursion(&self, t: f64, y: &[f64], ahead: f64) -> f64 {
+        (0..N_WHEELSETS)
+            .map(|w| {
+                let rails = match &self.rail_inputs {
+                    Some(inputs) => inputs[w],
+                    None => self.track.at(self.wheelset_distance(w, t)),
+                };
+                let now = y[wheelset(w) + Y] - 0.5 * (rails.y_left + rails.y_right);
+                let later = now + ahead * y[N_DOF + wheelset(w) + Y];
+                now.abs().max(later.abs())
+            })
+            .fold(0.0, f64::max)
     }
 
     /// Generalized forces for a state (used by the static search and the linearisation).

@@ -14,9 +14,12 @@
 //! the mode lies (its coordinate, for the error message) comes from a few steps of inverse
 //! iteration shifted to that eigenvalue.
 
+use super::integrator::Integrator;
 use super::layout::{dof_names, N_DOF};
+use super::run::REFERENCE_STEP;
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, Equilibrium, StaticsSettings};
+use super::stiff_linear_part::gearbox_bearings;
 use super::suspects::with_suspects;
 use crate::error::{LocoError, Result};
 use nalgebra::{DMatrix, DVector};
@@ -96,14 +99,28 @@ pub fn in_equilibrium_at_stable_step(
 ) -> Result<(VehicleSystem, Equilibrium, f64)> {
     let mut system = build(step)?;
     let equilibrium = static_equilibrium(&mut system, statics)?;
-    let stable = stable_step(&system, &equilibrium, step)
+    let mut stable = stable_step(&system, &equilibrium, step)
         .map_err(|e| with_suspects(e, &system.structure.parameters))?;
+    // A step beyond the reference must not reduce a damper law the reference keeps (a Maxwell
+    // damper's series spring made rigid, an FSD's mass left out): the reduced laws are checked
+    // at the reference step, and a compliance slower than it matters. Such a vehicle runs at
+    // the reference step.
+    if stable > REFERENCE_STEP
+        && damper_forms(&build(stable)?) != damper_forms(&build(REFERENCE_STEP)?)
+    {
+        stable = step / (step / REFERENCE_STEP).ceil();
+    }
     if stable == step {
         return Ok((system, equilibrium, step));
     }
     let mut system = build(stable)?;
     let equilibrium = static_equilibrium(&mut system, statics)?;
     Ok((system, equilibrium, stable))
+}
+
+/// The number of internal states of each damper law: a reduced law has fewer.
+fn damper_forms(system: &VehicleSystem) -> Vec<usize> {
+    system.dampers.iter().map(|d| d.law.n_states()).collect()
 }
 
 /// A start vector with no symmetry: the vehicle is symmetric left-right and nearly front-back,
@@ -118,7 +135,18 @@ fn start_vector(n: usize) -> DVector<f64> {
 /// and N·m/rad, with the system's mass matrix).
 pub fn stiffest_mode(system: &VehicleSystem, equilibrium: &Equilibrium) -> StiffestMode {
     let mass = &system.structure.mass;
-    let jacobian = &equilibrium.jacobian;
+    // The exponential scheme solves the gearbox bearings' springs exactly: the step is bounded
+    // by the rest of the Jacobian (∂Q/∂q holds −Jᵀ K J of the bearings; adding it back removes
+    // them).
+    let without_bearings;
+    let jacobian = match system.integrator {
+        Integrator::Rk4 => &equilibrium.jacobian,
+        Integrator::ExponentialRk4 => {
+            without_bearings =
+                &equilibrium.jacobian + gearbox_bearings(&system.structure).stiffness_matrix(mass);
+            &without_bearings
+        }
+    };
     // M⁻¹J column by column with the block Cholesky factor (a few hundred flops per column).
     // (Both matrices are column-major: column j is the slice [j·N, (j+1)·N).)
     let mut a = DMatrix::zeros(N_DOF, N_DOF);

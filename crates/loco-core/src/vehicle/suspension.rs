@@ -19,6 +19,10 @@ use super::layout::*;
 use super::parameters::ParameterSet;
 use crate::error::{check_non_negative, check_positive, Result};
 
+/// Name prefix of the gearbox bearings (one element per wheelset, `gearbox_bearings_wheelset1`,
+/// ...): the stiffest springs, integrated exactly by [`super::stiff_linear_part`].
+pub const GEARBOX_BEARINGS: &str = "gearbox_bearings";
+
 /// Where a damper sits; the vehicle model chooses its law (the yaw damper can be YD1, YD2, any
 /// Maxwell damper or the FSD damper).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -375,7 +379,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
         }
         let axle = [layout.wheelset_x[w], 0.0, r0];
         let mut bearing = bushing(
-            format!("gearbox_bearings_{tag}"),
+            format!("{GEARBOX_BEARINGS}_{tag}"),
             attach(bodies, m, hs, axle),
             [radial, bearings * bearing_axial, radial],
         );

@@ -1,0 +1,84 @@
+//! One 500 m run at 200 km/h (`DISTANCE` m if set) with each integration scheme and step, the
+//! run metrics against RK4 at 0.25 ms and the wall time (release build, one core):
+//! `cargo run --release -p loco-core --example integrator_compare -- [S_high|S_low]
+//! [parameter=value ...]`.
+
+use loco_core::vehicle::integrator::Integrator;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::run::RunSettings;
+use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
+use loco_core::vehicle::structure::VehicleStructure;
+use std::sync::Arc;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let name = args.get(1).map_or("S_high", String::as_str);
+    let mut parameters = ParameterSet::default_vehicle();
+    for kv in args.iter().skip(2) {
+        let (k, v) = kv.split_once('=').expect("key=value");
+        parameters.set(k, v.parse().unwrap()).unwrap();
+    }
+    let distance: f64 = std::env::var("DISTANCE").map_or(500.0, |d| d.parse().unwrap());
+    let base = Scenario::study(name, 200.0 / 3.6, distance, 1).unwrap();
+    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &base).unwrap());
+    let track = Arc::new(build_track(&base, &structure).unwrap());
+    let cases = [
+        (Integrator::Rk4, 0.25e-3),
+        (Integrator::Rk4, 0.5e-3),
+        (Integrator::Rk4, 1e-3),
+        (Integrator::ExponentialRk4, 1e-3),
+        (Integrator::ExponentialRk4, 2e-3),
+    ];
+    let mut reference = None;
+    for (integrator, step) in cases {
+        let scenario = Scenario {
+            run: RunSettings {
+                step,
+                integrator,
+                ..base.run
+            },
+            ..base.clone()
+        };
+        let t = std::time::Instant::now();
+        let result = simulate_prepared(
+            structure.clone(),
+            wheel_rail.clone(),
+            track.clone(),
+            &scenario,
+            None,
+        );
+        let wall = t.elapsed().as_secs_f64();
+        match result {
+            Ok(r) => {
+                let m = vec![
+                    ("wy_max".to_string(), r.metrics.wy_max),
+                    ("ayb_peak_lp".to_string(), r.metrics.ayb_peak_lp),
+                    ("ayc_psd_peak".to_string(), r.metrics.ayc_psd_peak),
+                ];
+                let rel: Vec<String> = match &reference {
+                    None => {
+                        reference = Some(m.clone());
+                        vec![]
+                    }
+                    Some(refm) => m
+                        .iter()
+                        .zip(refm.iter())
+                        .map(|((k, v), (_, r0))| format!("{k} {:+.4}%", 100.0 * (v / r0 - 1.0)))
+                        .collect(),
+                };
+                println!(
+                    "{name} {:7} {:.2e}s steps {} rhs {} wall {:.3}s {:?} {}",
+                    integrator.name(),
+                    step,
+                    r.statistics.steps,
+                    r.statistics.rhs_evaluations,
+                    wall,
+                    m,
+                    rel.join(" ")
+                );
+            }
+            Err(e) => println!("{name} {} {step}: {e}", integrator.name()),
+        }
+    }
+}

@@ -1,0 +1,172 @@
+//! Exponential fourth-order Runge–Kutta with the stiff linear springs integrated exactly.
+//!
+//! The vehicle's equations split into `ẏ = L y + N(t, y)`: `L` the springs of
+//! [`StiffLinearPart`] (the gearbox bearings), `N = f − L y` all the rest (contact, creep, dampers,
+//! the other suspension, the bearings' small nonlinear terms), so that the split changes nothing in
+//! the equations. ETDRK4 (Cox and Matthews, J. Comput. Phys. 176, 2002, eq. 26–29; in the
+//! φ-function form of Hochbruck and Ostermann, Acta Numerica 19, 2010, §2.5) evaluates `N` at
+//! four stages, like RK4, and solves the linear part exactly between them; with `L = 0` it is the
+//! classical RK4. The step is then bounded by the stiffest mode of the rest, not by the
+//! bearings' 230–330 Hz: 2 ms instead of 1.4 ms, with the output rate of 500 Hz on whole steps.
+//!
+//! Each stage is the exact solution of `ẏ = L y + w0 + w1·t + w2·t²/2` from a start state
+//! ([`propagate`]): the deflections `z = J q` of the stiff springs follow their small linear system
+//! through a precomputed [`Propagator`], and every coordinate follows the polynomial forcing plus
+//! the springs' accelerations `−B ∫z` (velocities) and `−B ∫∫z` (positions).
+
+use super::integrator::OdeSystem;
+use super::stiff_linear_part::{Propagator, StiffLinearPart};
+use std::sync::Arc;
+
+/// Preallocated stages of ETDRK4 for one step length.
+#[derive(Debug, Clone)]
+pub struct ExponentialRk4 {
+    part: Arc<StiffLinearPart>,
+    /// Propagators over half and the whole step.
+    half: Propagator,
+    full: Propagator,
+    /// Step the propagators are made for, s.
+    dt: f64,
+    k: [Vec<f64>; 4],
+    /// The first stage's state, which the third stage starts from.
+    a: Vec<f64>,
+    stage: Vec<f64>,
+    w: [Vec<f64>; 3],
+    /// Deflection inputs and outputs of the propagators (5r and 2r).
+    input: Vec<f64>,
+    output: Vec<f64>,
+}
+
+impl ExponentialRk4 {
+    /// Workspace for a system of `n` states `[q | q̇ | others]` with the stiff part `part` and
+    /// the fixed step `dt` (s).
+    pub fn new(part: Arc<StiffLinearPart>, n: usize, dt: f64) -> Self {
+        let r = part.len();
+        Self {
+            half: part.propagator(0.5 * dt),
+            full: part.propagator(dt),
+            part,
+            dt,
+            k: std::array::from_fn(|_| vec![0.0; n]),
+            a: vec![0.0; n],
+            stage: vec![0.0; n],
+            w: std::array::from_fn(|_| vec![0.0; n]),
+            input: vec![0.0; 5 * r],
+            output: vec![0.0; 2 * r],
+        }
+    }
+
+    /// The step the workspace is made for, s.
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// Advances `y` from `t` over the workspace's step to `t_end` (s; `t + dt` as the caller
+    /// counts time, see [`super::integrator::Rk4Workspace::step_observed`]), calling
+    /// `observe(system, y, ẏ)` with the full derivatives at the step's start.
+    pub fn step_observed<S: OdeSystem>(
+        &mut self,
+        system: &mut S,
+        t: f64,
+        t_end: f64,
+        y: &mut [f64],
+        observe: impl FnOnce(&S, &[f64], &[f64]),
+    ) {
+        let h = self.dt;
+        let Self {
+            part,
+            half,
+            full,
+            k: [k1, k2, k3, k4],
+            a,
+            stage,
+            w: [w0, w1, w2],
+            input,
+            output,
+            ..
+        } = self;
+        let part: &StiffLinearPart = part;
+        let mut scratch = Scratch { input, output };
+        system.derivatives(t, y, k1);
+        observe(system, y, k1);
+        remove_linear(part, y, k1, scratch.output);
+        propagate(part, half, y, &[k1], &mut scratch, a);
+        system.derivatives(t + 0.5 * h, a, k2);
+        remove_linear(part, a, k2, scratch.output);
+        propagate(part, half, y, &[k2], &mut scratch, stage);
+        system.derivatives(t + 0.5 * h, stage, k3);
+        remove_linear(part, stage, k3, scratch.output);
+        for ((w, x3), x1) in w0.iter_mut().zip(k3.iter()).zip(k1.iter()) {
+            *w = 2.0 * x3 - x1;
+        }
+        propagate(part, half, a, &[w0], &mut scratch, stage);
+        system.derivatives(t_end, stage, k4);
+        remove_linear(part, stage, k4, scratch.output);
+        // N along the step as the quadratic w0 + w1·t + w2·t²/2 (the φ1, φ2, φ3 weights).
+        for i in 0..y.len() {
+            let (n1, n23, n4) = (k1[i], k2[i] + k3[i], k4[i]);
+            w1[i] = (-3.0 * n1 + 2.0 * n23 - n4) / h;
+            w2[i] = 4.0 * (n1 - n23 + n4) / (h * h);
+        }
+        propagate(part, full, y, &[k1, w1, w2], &mut scratch, stage);
+        y.copy_from_slice(stage);
+        system.after_step(t_end, h, y);
+    }
+}
+
+/// The propagators' deflection buffers.
+struct Scratch<'a> {
+    input: &'a mut [f64],
+    output: &'a mut [f64],
+}
+
+/// Turns `k = f(y)` into `N(y) = f(y) − L y` with `L y = [P q̇; −B J q]`: the springs' part
+/// of the velocities `P q̇ = G J q̇` out of the coordinate rows, `+B J q` into the velocity rows.
+fn remove_linear(part: &StiffLinearPart, y: &[f64], k: &mut [f64], z: &mut [f64]) {
+    let (n, r) = (part.n_dof(), part.len());
+    let (z, u) = z.split_at_mut(r);
+    let u = &mut u[..r];
+    part.deflections(&y[..n], z);
+    part.deflections(&y[n..2 * n], u);
+    part.add_projection(u, -1.0, &mut k[..n]);
+    part.add_response(z, 1.0, &mut k[n..2 * n]);
+}
+
+/// `out` = the exact solution at `tau` of `ẏ = L y + Σ w_k t^k/k!` from `y0`, with one to three
+/// forcing vectors `w` (combinations of `N`, whose coordinate rows `(I − P) q̇` deflect no
+/// spring). Outside the springs' part this is the polynomial RK4 takes; inside it the
+/// propagator adds the springs' motion.
+fn propagate(
+    part: &StiffLinearPart,
+    propagator: &Propagator,
+    y0: &[f64],
+    w: &[&[f64]],
+    scratch: &mut Scratch,
+    out: &mut [f64],
+) {
+    let (n, r, tau) = (part.n_dof(), part.len(), propagator.tau);
+    let input = &mut *scratch.input;
+    input.fill(0.0);
+    part.deflections(&y0[..n], &mut input[..r]);
+    part.deflections(&y0[n..2 * n], &mut input[r..2 * r]);
+    for (i, wi) in w.iter().enumerate() {
+        part.deflections(&wi[n..2 * n], &mut input[(2 + i) * r..(3 + i) * r]);
+    }
+    propagator.apply(input, scratch.output);
+    // τ^(k+1)/(k+1)! for k = 0..2.
+    let c = [tau, tau * tau / 2.0, tau * tau * tau / 6.0];
+    for (i, o) in out.iter_mut().enumerate() {
+        let mut s = y0[i];
+        for (k, wk) in w.iter().enumerate() {
+            s += c[k] * wk[i];
+        }
+        *o = s;
+    }
+    let output = &*scratch.output;
+    part.add_response(&output[..r], -1.0, &mut out[n..2 * n]);
+    part.add_response(&output[r..2 * r], 1.0, &mut out[..n]);
+}
+
+#[cfg(test)]
+#[path = "exponential_rk4_tests.rs"]
+mod tests;
