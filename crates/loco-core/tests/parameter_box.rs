@@ -1,6 +1,9 @@
 //! The default integration settings across the SPEC §6 parameter box: every corner runs, and
 //! halving the step changes the study's metrics by less than 1 % (issue 5, "Integration").
 
+mod box_support;
+
+use box_support::{damper_corners, vehicle, SOFT_CORNER, STIFF_CORNER};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate, start_distance, Scenario,
@@ -15,14 +18,6 @@ use std::sync::Arc;
 const SPEED: f64 = 200.0 / 3.6;
 /// 310 m at 200 km/h is 5.6 s: one 5 s Sperling segment after the first samples.
 const DISTANCE: f64 = 310.0;
-
-fn vehicle(overrides: &[(&str, f64)]) -> ParameterSet {
-    let mut p = ParameterSet::default_vehicle();
-    for (name, value) in overrides {
-        p.set(name, *value).unwrap();
-    }
-    p
-}
 
 fn scenario(name: &str, step: f64) -> Scenario {
     let mut s = Scenario::study(name, SPEED, DISTANCE, 1).unwrap();
@@ -51,20 +46,7 @@ fn lateral_damper_rigid(parameters: ParameterSet, dt: f64) -> bool {
 
 #[test]
 fn every_damper_corner_of_the_study_box_runs_at_the_default_step() {
-    // Corners of C_sy × K_ncsy (10–60 kN·s/m × 10–50 kN/mm) paired with those of C_sx × K_ncsx
-    // (200–1200 kN·s/m × 10–50 kN/mm): four vehicles cover all four corners of both.
-    let corners: Vec<[(&str, f64); 4]> = [(10e3, 10e6), (10e3, 50e6), (60e3, 10e6), (60e3, 50e6)]
-        .iter()
-        .zip([(200e3, 10e6), (200e3, 50e6), (1200e3, 10e6), (1200e3, 50e6)])
-        .map(|(&(c_sy, k_sy), (c_sx, k_sx))| {
-            [
-                ("C_sy", c_sy),
-                ("K_ncsy", k_sy),
-                ("C_sx", c_sx),
-                ("K_ncsx", k_sx),
-            ]
-        })
-        .collect();
+    let corners = damper_corners();
     // The stiff-spring corner needs the rigid form at 1 ms (k/c = 5e3 1/s) and not at 0.5 ms.
     let stiff = vehicle(&corners[1]);
     assert!(lateral_damper_rigid(stiff.clone(), 1e-3));
@@ -88,29 +70,11 @@ fn every_damper_corner_of_the_study_box_runs_at_the_default_step() {
 
 #[test]
 fn halving_the_step_changes_wy_and_ayb_by_less_than_one_percent() {
-    // The nominal vehicle and two opposite corners of the six-parameter box: the softest bogie
-    // (least yaw damping, softest primary, stiff-spring lateral damper in its rigid form at 1 ms
-    // and compliant at 0.5 ms) and the stiffest one.
-    let soft = [
-        ("K_px", 10e6),
-        ("K_py", 2e6),
-        ("C_sx", 200e3),
-        ("C_sy", 10e3),
-        ("K_ncsx", 10e6),
-        ("K_ncsy", 50e6),
-    ];
-    let stiff = [
-        ("K_px", 50e6),
-        ("K_py", 10e6),
-        ("C_sx", 1200e3),
-        ("C_sy", 60e3),
-        ("K_ncsx", 50e6),
-        ("K_ncsy", 10e6),
-    ];
+    // The nominal vehicle and two opposite corners of the six-parameter box.
     let vehicles: [(&str, &[(&str, f64)]); 3] = [
         ("nominal", &[]),
-        ("soft corner", &soft),
-        ("stiff corner", &stiff),
+        ("soft corner", &SOFT_CORNER),
+        ("stiff corner", &STIFF_CORNER),
     ];
     let cases: Vec<(usize, &str)> = (0..vehicles.len())
         .flat_map(|i| [(i, "S_low"), (i, "S_high")])

@@ -56,22 +56,20 @@ impl ExponentialRk4 {
         }
     }
 
-    /// The step the workspace is made for, s.
-    pub fn dt(&self) -> f64 {
-        self.dt
-    }
-
-    /// Advances `y` from `t` over the workspace's step to `t_end` (s; `t + dt` as the caller
-    /// counts time, see [`super::integrator::Rk4Workspace::step_observed`]), calling
+    /// Advances `y` from `t` over the step `dt` (s; the workspace's, for which its propagators
+    /// are made) to `t_end` (`t + dt` as the caller counts time, see
+    /// [`super::integrator::Rk4Workspace::step_observed`], whose signature this is), calling
     /// `observe(system, y, ẏ)` with the full derivatives at the step's start.
     pub fn step_observed<S: OdeSystem>(
         &mut self,
         system: &mut S,
         t: f64,
+        dt: f64,
         t_end: f64,
         y: &mut [f64],
         observe: impl FnOnce(&S, &[f64], &[f64]),
     ) {
+        debug_assert_eq!(dt, self.dt, "the propagators are made for another step");
         let h = self.dt;
         let Self {
             part,

@@ -2,11 +2,32 @@ use super::super::integrator::{OdeSystem, Rk4Workspace};
 use super::super::stiff_linear_part::StiffLinearPart;
 use super::*;
 
-/// Two unit masses: `x0` on a stiff spring to ground (`stiff`, 1/s²) and joined to `x1` by a soft
-/// one; `x1` on a hardening spring with light damping, driven at 3 Hz; one first-order state
-/// (a lag of `x1`) after the velocities, as the dampers' internal states are.
+/// Two unit masses: `x0` on a spring to ground (`stiff`, 1/s², the linear part) and joined to
+/// `x1` by a soft one; `x1` on its own spring (`rest`: linear and cubic stiffness, damping),
+/// driven at 3 Hz; one first-order state (a lag of `x1`) after the velocities, as the dampers'
+/// internal states are.
+#[derive(Clone, Copy)]
 struct Toy {
     stiff: f64,
+    rest: [f64; 3],
+}
+
+impl Toy {
+    /// `x1` on a soft hardening spring with light damping.
+    fn soft(stiff: f64) -> Self {
+        Self {
+            stiff,
+            rest: [900.0, 4e5, 0.8],
+        }
+    }
+
+    /// `x1` on a stiff linear spring (1000 rad/s) with damping, left to `N`.
+    fn stiff_rest(stiff: f64) -> Self {
+        Self {
+            stiff,
+            rest: [1e6, 0.0, 40.0],
+        }
+    }
 }
 
 impl OdeSystem for Toy {
@@ -15,11 +36,12 @@ impl OdeSystem for Toy {
     }
     fn derivatives(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
         let (x0, x1, v0, v1, s) = (y[0], y[1], y[2], y[3], y[4]);
+        let [k1, k3, c1] = self.rest;
         let coupling = 400.0 * (x1 - x0);
         dy[0] = v0;
         dy[1] = v1;
         dy[2] = -self.stiff * x0 + coupling;
-        dy[3] = -coupling - 900.0 * x1 - 4e5 * x1.powi(3) - 0.8 * v1
+        dy[3] = -coupling - k1 * x1 - k3 * x1.powi(3) - c1 * v1
             + 50.0 * (2.0 * std::f64::consts::PI * 3.0 * t).sin();
         dy[4] = 20.0 * (x1 - s);
     }
@@ -35,27 +57,29 @@ fn toy_part(stiff: f64) -> Arc<StiffLinearPart> {
     ))
 }
 
-fn run_exponential(stiff: f64, dt: f64, duration: f64) -> Vec<f64> {
-    let mut toy = Toy { stiff };
-    let mut ws = ExponentialRk4::new(toy_part(stiff), 5, dt);
+/// The toy from [`start`] over `duration` (s) in steps of `dt` (s), with the exponential scheme
+/// (`x0`'s spring as the linear part) or RK4.
+fn run(mut toy: Toy, exponential: bool, dt: f64, duration: f64) -> Vec<f64> {
+    let mut ws = ExponentialRk4::new(toy_part(toy.stiff), 5, dt);
+    let mut rk4 = Rk4Workspace::new(5);
     let mut y = start();
-    let steps = (duration / dt).round() as usize;
-    for n in 0..steps {
+    for n in 0..(duration / dt).round() as usize {
         let t = n as f64 * dt;
-        ws.step_observed(&mut toy, t, (n + 1) as f64 * dt, &mut y, |_, _, _| {});
+        if exponential {
+            ws.step_observed(&mut toy, t, dt, (n + 1) as f64 * dt, &mut y, |_, _, _| {});
+        } else {
+            rk4.step(&mut toy, t, dt, &mut y);
+        }
     }
     y
 }
 
+fn run_exponential(stiff: f64, dt: f64, duration: f64) -> Vec<f64> {
+    run(Toy::soft(stiff), true, dt, duration)
+}
+
 fn run_rk4(stiff: f64, dt: f64, duration: f64) -> Vec<f64> {
-    let mut toy = Toy { stiff };
-    let mut ws = Rk4Workspace::new(5);
-    let mut y = start();
-    let steps = (duration / dt).round() as usize;
-    for n in 0..steps {
-        ws.step(&mut toy, n as f64 * dt, dt, &mut y);
-    }
-    y
+    run(Toy::soft(stiff), false, dt, duration)
 }
 
 /// The soft mass displaced: the stiff spring is excited only through the coupling, as the
@@ -164,38 +188,8 @@ fn converges_with_high_order() {
 /// which damps that mode away numerically.
 #[test]
 fn a_stiff_rest_keeps_rk4_stability() {
-    struct StiffRest;
-    impl OdeSystem for StiffRest {
-        fn dimension(&self) -> usize {
-            5
-        }
-        fn derivatives(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
-            let (x0, x1, v0, v1, s) = (y[0], y[1], y[2], y[3], y[4]);
-            let coupling = 400.0 * (x1 - x0);
-            dy[0] = v0;
-            dy[1] = v1;
-            dy[2] = -2500.0 * x0 + coupling;
-            dy[3] = -coupling - 1e6 * x1 - 40.0 * v1
-                + 50.0 * (2.0 * std::f64::consts::PI * 3.0 * t).sin();
-            dy[4] = 20.0 * (x1 - s);
-        }
-        fn after_step(&mut self, _t: f64, _dt: f64, _y: &[f64]) {}
-    }
-    let run = |dt: f64, exponential: bool| {
-        let mut system = StiffRest;
-        let mut y = start();
-        let mut ws = ExponentialRk4::new(toy_part(2500.0), 5, dt);
-        let mut rk4 = Rk4Workspace::new(5);
-        for n in 0..(1.0 / dt).round() as usize {
-            let t = n as f64 * dt;
-            if exponential {
-                ws.step_observed(&mut system, t, (n + 1) as f64 * dt, &mut y, |_, _, _| {});
-            } else {
-                rk4.step(&mut system, t, dt, &mut y);
-            }
-        }
-        y
-    };
+    let toy = Toy::stiff_rest(2500.0);
+    let run = |dt: f64, exponential: bool| run(toy, exponential, dt, 1.0);
     let reference = run(1e-5, false);
     let stable = distance(&run(2e-3, true), &reference);
     assert!(stable < 1e-5, "ETDRK4 error {stable:e} at 2 ms");

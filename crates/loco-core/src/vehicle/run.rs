@@ -7,10 +7,11 @@ use super::channel_set::ChannelSet;
 use super::exponential_rk4::ExponentialRk4;
 use super::integrator::{Integrator, OdeSystem, Rk4Workspace};
 use super::simulation::VehicleSystem;
-use super::stiff_linear_part::gearbox_bearings;
+use super::stiff_linear_part::{gearbox_bearings, StiffLinearPart};
 use super::structure::VehicleStructure;
 use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 /// The reference step of the classical RK4 ([`Integrator::Rk4`]), the default, s: the
 /// convergence study's (`scripts/convergence_study.py`).
@@ -212,30 +213,16 @@ enum Scheme {
 }
 
 impl Scheme {
-    /// The workspace of `system.integrator` for steps of `dt` (s).
-    fn new(system: &VehicleSystem, dt: f64) -> Self {
-        match system.integrator {
-            Integrator::Rk4 => Self::Rk4(Rk4Workspace::new(system.dimension())),
-            Integrator::ExponentialRk4 => Self::Exponential(Box::new(ExponentialRk4::new(
-                std::sync::Arc::new(gearbox_bearings(&system.structure)),
+    /// The workspace of `system.integrator` for steps of `dt` (s); `bearings` is the stiff part
+    /// the exponential scheme solves (built once per run and shared).
+    fn new(system: &VehicleSystem, dt: f64, bearings: &Option<Arc<StiffLinearPart>>) -> Self {
+        match bearings {
+            None => Self::Rk4(Rk4Workspace::new(system.dimension())),
+            Some(part) => Self::Exponential(Box::new(ExponentialRk4::new(
+                Arc::clone(part),
                 system.dimension(),
                 dt,
             ))),
-        }
-    }
-
-    fn step(
-        &mut self,
-        system: &mut VehicleSystem,
-        t: f64,
-        dt: f64,
-        t_end: f64,
-        y: &mut [f64],
-        observe: impl FnOnce(&VehicleSystem, &[f64], &[f64]),
-    ) {
-        match self {
-            Self::Rk4(ws) => ws.step_observed(system, t, dt, t_end, y, observe),
-            Self::Exponential(ws) => ws.step_observed(system, t, t_end, y, observe),
         }
     }
 }
@@ -250,11 +237,13 @@ struct Stepper {
 
 impl Stepper {
     fn new(system: &VehicleSystem, dt: f64) -> Self {
+        let bearings = (system.integrator == Integrator::ExponentialRk4)
+            .then(|| Arc::new(gearbox_bearings(&system.structure)));
         // The tolerance keeps a step of exactly the reference whole.
         let parts = (dt / REFERENCE_STEP * (1.0 - 1e-9)).ceil() as usize;
         Self {
-            long: Scheme::new(system, dt),
-            cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64))),
+            long: Scheme::new(system, dt, &bearings),
+            cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64, &bearings))),
         }
     }
 
@@ -275,15 +264,31 @@ impl Stepper {
             {
                 let h = dt / *parts as f64;
                 let at = |i: usize| if i == *parts { t_end } else { t + i as f64 * h };
-                scheme.step(system, t, h, at(1), y, observe);
+                step_with(scheme, system, t, h, at(1), y, observe);
                 for i in 1..*parts {
                     system.statistics.steps += 1;
                     system.finish_step(at(i), y)?;
-                    scheme.step(system, at(i), h, at(i + 1), y, |_, _, _| {});
+                    step_with(scheme, system, at(i), h, at(i + 1), y, |_, _, _| {});
                 }
             }
-            _ => self.long.step(system, t, dt, t_end, y, observe),
+            _ => step_with(&mut self.long, system, t, dt, t_end, y, observe),
         }
         Ok(())
+    }
+}
+
+/// One step of either scheme (the same signature).
+fn step_with(
+    scheme: &mut Scheme,
+    system: &mut VehicleSystem,
+    t: f64,
+    dt: f64,
+    t_end: f64,
+    y: &mut [f64],
+    observe: impl FnOnce(&VehicleSystem, &[f64], &[f64]),
+) {
+    match scheme {
+        Scheme::Rk4(ws) => ws.step_observed(system, t, dt, t_end, y, observe),
+        Scheme::Exponential(ws) => ws.step_observed(system, t, dt, t_end, y, observe),
     }
 }

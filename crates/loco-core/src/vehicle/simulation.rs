@@ -286,12 +286,10 @@ impl VehicleSystem {
                 self.body_states.velocity[body_wheelset(w)][YAW] =
                     own_yaw + curve.wheelset_frame_yaw_rate(speed, &self.frame_work, w);
             }
-            let rails = if let Some(inputs) = &self.rail_inputs {
-                inputs[w]
-            } else if statics {
+            let rails = if statics && self.rail_inputs.is_none() {
                 RailIrregularity::default()
             } else {
-                self.track.at(self.wheelset_distance(w, t))
+                self.rails_at(w, t)
             };
             let result = self.wheel_rail.apply(
                 w,
@@ -312,15 +310,21 @@ impl VehicleSystem {
             .generalized_forces(&self.wrenches, &mut self.gen_force);
     }
 
+    /// The rails under wheelset `w` at time `t` (s): the track's, or the linearisation's inputs.
+    #[inline]
+    fn rails_at(&self, w: usize, t: f64) -> RailIrregularity {
+        match &self.rail_inputs {
+            Some(inputs) => inputs[w],
+            None => self.track.at(self.wheelset_distance(w, t)),
+        }
+    }
+
     /// The largest lateral displacement of a wheelset from its rails' centre line in state `y`
     /// at time `t` (s) or, moving on at its lateral velocity, `ahead` (s) later, m.
     pub fn largest_lateral_excursion(&self, t: f64, y: &[f64], ahead: f64) -> f64 {
         (0..N_WHEELSETS)
             .map(|w| {
-                let rails = match &self.rail_inputs {
-                    Some(inputs) => inputs[w],
-                    None => self.track.at(self.wheelset_distance(w, t)),
-                };
+                let rails = self.rails_at(w, t);
                 let now = y[wheelset(w) + Y] - 0.5 * (rails.y_left + rails.y_right);
                 let later = now + ahead * y[N_DOF + wheelset(w) + Y];
                 now.abs().max(later.abs())

@@ -114,6 +114,19 @@ impl StiffLinearPart {
         self.rows.is_empty()
     }
 
+    /// Angular frequencies of the springs on their own (rad/s, ascending): `√λ` of `J B`, the
+    /// modes of the deflections with everything else free, which the exact solution covers.
+    pub fn frequencies(&self) -> Vec<f64> {
+        let mut omega: Vec<f64> = self
+            .own
+            .complex_eigenvalues()
+            .iter()
+            .map(|l| l.re.max(0.0).sqrt())
+            .collect();
+        omega.sort_by(f64::total_cmp);
+        omega
+    }
+
     /// Number of coordinates.
     pub fn n_dof(&self) -> usize {
         self.n_dof

@@ -356,4 +356,36 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn the_gearbox_bearings_are_the_stiffest_modes_and_the_rest_fits_a_2_ms_step() {
+        // Independent of the exponential scheme: the full vehicle's stiffest mode (Arnoldi on the
+        // equilibrium Jacobian) against the bearings' own system `J M⁻¹ Jᵀ K`, and what is left
+        // when the bearings are taken out of the Jacobian.
+        let (mut sys, eq, _) = vehicle_matrix(None);
+        let full = stiffest_mode(&sys, &eq);
+        let bearings = gearbox_bearings(&sys.structure).frequencies();
+        let own = *bearings.last().unwrap();
+        eprintln!(
+            "full {:.1} rad/s `{}`; bearings {:.1}–{own:.1} rad/s",
+            full.omega, full.coordinate, bearings[0]
+        );
+        assert!(
+            (own / full.omega - 1.0).abs() < 0.01,
+            "{own} against {}",
+            full.omega
+        );
+        sys.integrator = Integrator::ExponentialRk4;
+        let rest = stiffest_mode(&sys, &eq);
+        eprintln!(
+            "without the bearings {:.1} rad/s `{}`",
+            rest.omega, rest.coordinate
+        );
+        assert!(
+            rest.omega < bearings[0],
+            "{} not below the bearings",
+            rest.omega
+        );
+        assert!(rest.omega * 2e-3 <= RK4_IMAGINARY_LIMIT, "{}", rest.omega);
+    }
 }
