@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 import loco
-from loco.simulation import INTEGRATORS
+from loco.simulation import INTEGRATOR_STEPS, INTEGRATORS
 
 SHORT = {"speed": 200 / 3.6, "distance": 310.0}
 
@@ -17,6 +17,24 @@ def test_the_schemes_come_from_the_core_and_rk4_at_1_ms_is_the_default() -> None
     defaults = loco.Scenario.defaults()
     assert defaults["integrator"] == "rk4"
     assert defaults["step"] == pytest.approx(1e-3)
+
+
+def test_a_scheme_named_without_a_step_runs_at_its_own() -> None:
+    assert INTEGRATOR_STEPS == {"rk4": pytest.approx(1e-3), "etdrk4": pytest.approx(2e-3)}
+    assert loco.Scenario("S_high", integrator="etdrk4").step == pytest.approx(2e-3)
+    assert loco.Scenario("S_high", integrator="etdrk4", step=1e-3).step == pytest.approx(1e-3)
+    assert loco.Scenario("S_high").step == pytest.approx(1e-3)
+    # The core resolves the same step: the run takes 2 ms steps (S_high's nominal vehicle stays
+    # within 3 mm of the centre, so none is cut), half as many as at 1 ms.
+    short = {"speed": 200 / 3.6, "distance": 60.0}
+    vehicle = loco.Locomotive()
+    named = loco.simulate(vehicle, loco.Scenario("S_high", integrator="etdrk4", **short))  # type: ignore[arg-type]
+    given = loco.simulate(
+        vehicle,
+        loco.Scenario("S_high", integrator="etdrk4", step=2e-3, **short),  # type: ignore[arg-type]
+    )
+    assert named.statistics["steps"] == given.statistics["steps"]
+    assert named.metrics["ayb_peak_lp"] == given.metrics["ayb_peak_lp"]
 
 
 @pytest.mark.parametrize("name", ["S_low", "S_high"])

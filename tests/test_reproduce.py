@@ -19,7 +19,8 @@ import pytest
 
 import loco
 from loco import dampers
-from loco.cli import main
+from loco.cli import build_parser, main
+from loco.commands import reproduce as reproduce_command
 from loco.commands.reproduce import FULL, QUICK, TINY, reproduce, stages
 from loco.store import find_campaigns
 from loco.studies import fsd_comparison, fsd_design_stage
@@ -315,3 +316,34 @@ def test_every_stage_input_changes_its_hash(tmp_path: Path) -> None:
     moved = tmp_path / "moved.csv"
     moved.write_bytes(files[0].path.read_bytes())
     assert encode(DataFile(moved)) == encode(files[0])
+
+
+def _integrators(value: Any) -> list[str]:
+    """Every ``integrator`` field in a stage input, nested dataclasses included."""
+    if not dataclasses.is_dataclass(value) or isinstance(value, type):
+        return []
+    found = []
+    for field in dataclasses.fields(value):
+        v = getattr(value, field.name)
+        found += [v] if field.name == "integrator" else _integrators(v)
+    return found
+
+
+def test_the_integrator_reaches_every_stage_that_simulates(tmp_path: Path) -> None:
+    """``--integrator etdrk4`` sets the scheme of every stage that runs the simulator (the
+    surrogate and the damper bench run none) and is part of each one's hash."""
+    default = stages(FULL, tmp_path, seed=0)
+    fast = stages(FULL, tmp_path, seed=0, integrator="etdrk4")
+    simulating = set(STAGES) - {"surrogate", "damper_bench"}
+    for d, f in zip(default, fast, strict=True):
+        assert _integrators(d) == (["rk4"] if d.name in simulating else []), d.name
+        assert _integrators(f) == (["etdrk4"] if f.name in simulating else []), f.name
+        assert (d.stage_hash() != f.stage_hash()) == (d.name in simulating), d.name
+    parsed = build_parser().parse_args(["reproduce", "--quick", "--integrator", "etdrk4"])
+    assert parsed.integrator == "etdrk4"
+    assert "--integrator etdrk4" in reproduce_command._command_line(parsed)
+    assert "--integrator" not in reproduce_command._command_line(
+        build_parser().parse_args(["reproduce", "--quick"])
+    )
+    with pytest.raises(SystemExit):
+        build_parser().parse_args(["reproduce", "--integrator", "euler"])

@@ -450,12 +450,14 @@ __all__ += [
     "RunScenario",
     "creep_model_names",
     "integrator_names",
+    "integrator_steps",
     "scenario_defaults",
     "scenario_presets",
 ]
 
 def creep_model_names() -> list[str]: ...
 def integrator_names() -> list[str]: ...
+def integrator_steps() -> list[tuple[str, float]]: ...
 def scenario_defaults() -> dict[
     str, bool | int | float | str | tuple[float, float] | tuple[int, int]
 ]: ...

@@ -1,6 +1,6 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
 //! creep model), the same with the exponential scheme at 2 ms (`integrator = "etdrk4"`), with
-//! FaStrip and with the FASTSIM table, the same FASTSIM run on a curved track
+//! FaStrip, with the FASTSIM table and with the table at 2 ms, the same FASTSIM run on a curved track
 //! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m
 //! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), the same
 //! on a curve of the curving study (R = 3000 m, 60 mm cant), and one evaluation of its right-hand
@@ -92,6 +92,23 @@ fn bench_vehicle(c: &mut Criterion) {
                 table_contact.clone(),
                 track.clone(),
                 black_box(&table),
+                None,
+            )
+            .unwrap()
+        })
+    });
+    // The table with the exponential scheme at its 2 ms step: both speed options together.
+    let table_exponential = Scenario {
+        run: exponential.run,
+        ..table.clone()
+    };
+    group.bench_function("run_500m_200kmh_table_etdrk4", |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                table_contact.clone(),
+                track.clone(),
+                black_box(&table_exponential),
                 None,
             )
             .unwrap()

@@ -19,13 +19,26 @@ fn main() {
         parameters.set(k, v.parse().unwrap()).unwrap();
     }
     let distance: f64 = std::env::var("DISTANCE").map_or(500.0, |d| d.parse().unwrap());
-    let base = Scenario::study(name, 200.0 / 3.6, distance, 1).unwrap();
+    let mut base = Scenario::study(name, 200.0 / 3.6, distance, 1).unwrap();
+    match std::env::var("CURVE").as_deref() {
+        Ok("study") => {
+            base.curve = loco_core::track::design::DesignSection::study_curve(
+                loco_core::track::design::CurveDirection::Left,
+            )
+        }
+        Ok("reference") => {
+            base.curve = loco_core::track::design::DesignSection::reference_curve(
+                0.1,
+                loco_core::track::design::CurveDirection::Left,
+            )
+        }
+        _ => {}
+    }
     let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &base).unwrap());
     let track = Arc::new(build_track(&base, &structure).unwrap());
     let cases = [
         (Integrator::Rk4, 0.25e-3),
-        (Integrator::Rk4, 0.5e-3),
         (Integrator::Rk4, 1e-3),
         (Integrator::ExponentialRk4, 1e-3),
         (Integrator::ExponentialRk4, 2e-3),

@@ -1,9 +1,14 @@
 //! The exponential integration (ETDRK4 at 2 ms) against the reference (RK4 at 1 ms) across the
 //! SPEC §6 parameter box, at the nominal vehicle, the two opposite corners of the six
-//! parameters and the four damper corners, both scenarios: W_y and A_yb stay within issue 16's
-//! 0.5 % gate (0.14 % at most); the A_yc PSD peak, a Welch estimate's maximum over a 5.6 s
-//! record, within 1 % (0.57 % at the corner C_sy 10 kN·s/m, K_ncsy 10 kN/mm, where the
-//! reference itself moves by 0.2 % between 0.25 and 1 ms): the gate is not met there.
+//! parameters and the four damper corners, both scenarios, on the study's 500 m runs: W_y, A_yb
+//! and the A_yc PSD peak stay within issue 16's 0.5 % gate (0.42 % at most, at the corner C_sy
+//! 10 kN·s/m, K_ncsy 50 kN/mm, where RK4 itself moves A_yb by 5.5 % between 0.25 and 1 ms, its
+//! lateral damper's series spring rigid at 1 ms and compliant at 0.25 ms).
+//!
+//! On 310 m (a 5.6 s record, one Welch segment's worth, as `parameter_box.rs` runs for CI time)
+//! the A_yc PSD peak is a noisier statistic: 0.57 % at the corner C_sy 10 kN·s/m, K_ncsy
+//! 10 kN/mm, C_sx 200 kN·s/m, K_ncsx 10 kN/mm, S_high, where RK4 itself moves it by 0.2 % between
+//! 0.25 and 1 ms; on 500 m that corner is within 0.09 %.
 
 mod box_support;
 
@@ -11,17 +16,14 @@ use box_support::{damper_corners, vehicle, SOFT_CORNER, STIFF_CORNER};
 use loco_core::vehicle::integrator::Integrator;
 use loco_core::vehicle::run::{EXPONENTIAL_STEP, REFERENCE_STEP};
 use loco_core::vehicle::scenario::{simulate, Scenario};
+use loco_core::vehicle::scenario_settings::{DEFAULT_DISTANCE, DEFAULT_SPEED};
 use rayon::prelude::*;
 
-/// 200 km/h, m/s.
-const SPEED: f64 = 200.0 / 3.6;
-/// 310 m at 200 km/h is 5.6 s: one 5 s Sperling segment after the first samples.
-const DISTANCE: f64 = 310.0;
-/// The gate on W_y and A_yb, and the bound met on the A_yc PSD peak, relative.
-const TOLERANCE: [f64; 3] = [5e-3, 5e-3, 1e-2];
+/// Issue 16's gate on W_y, A_yb and the A_yc PSD peak, relative.
+const TOLERANCE: [f64; 3] = [5e-3; 3];
 
 fn metrics(overrides: &[(&str, f64)], name: &str, integrator: Integrator, step: f64) -> [f64; 3] {
-    let mut s = Scenario::study(name, SPEED, DISTANCE, 1).unwrap();
+    let mut s = Scenario::study(name, DEFAULT_SPEED, DEFAULT_DISTANCE, 1).unwrap();
     s.run.step = step;
     s.run.integrator = integrator;
     let m = simulate(vehicle(overrides), &s).unwrap().metrics;

@@ -228,11 +228,22 @@ fn integrator_names() -> Vec<&'static str> {
     Integrator::NAMES.to_vec()
 }
 
+/// Each integration scheme's default step, s (`Integrator::default_step`): a scenario that
+/// names a scheme without a step runs at it.
+#[pyfunction]
+fn integrator_steps() -> Vec<(&'static str, f64)> {
+    Integrator::ALL
+        .iter()
+        .map(|scheme| (scheme.name(), scheme.default_step()))
+        .collect()
+}
+
 /// Adds the class and its function to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyRunScenario>()?;
     m.add_function(wrap_pyfunction!(creep_model_names, m)?)?;
     m.add_function(wrap_pyfunction!(integrator_names, m)?)?;
+    m.add_function(wrap_pyfunction!(integrator_steps, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(scenario_presets, m)?)?;
     Ok(())

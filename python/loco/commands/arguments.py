@@ -15,9 +15,11 @@ import tempfile
 from pathlib import Path
 
 from loco.field_types import MAX_WHOLE
+from loco.simulation import INTEGRATOR_STEPS, INTEGRATORS, Scenario
 
 __all__ = [
     "UsageError",
+    "add_integrator_argument",
     "finite_float",
     "non_negative_int",
     "output_dir",
@@ -99,3 +101,17 @@ def output_dir(path: str | Path, option: str = "--out") -> Path:
     if not os.access(out, os.W_OK | os.X_OK):
         raise UsageError(f"argument {option}: cannot write into {out}: permission denied")
     return out
+
+
+def add_integrator_argument(parser: argparse.ArgumentParser) -> None:
+    """``--integrator``: the scheme of every run, at its own step (the core's default when left
+    out)."""
+    default = Scenario.integrator
+    steps = ", ".join(f"{n} {INTEGRATOR_STEPS[n] * 1e3:g} ms" for n in INTEGRATORS)
+    parser.add_argument(
+        "--integrator",
+        choices=INTEGRATORS,
+        default=default,
+        help=f"integration scheme of every run, at its own step ({steps}; default {default}); "
+        "etdrk4 stays within 0.5 %% of rk4 over the SPEC §6 box",
+    )

@@ -11,7 +11,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from loco.commands.arguments import UsageError, non_negative_int, output_dir, positive_int
+from loco.commands.arguments import (
+    UsageError,
+    add_integrator_argument,
+    non_negative_int,
+    output_dir,
+    positive_int,
+)
 from loco.studies import curving
 from loco.studies.stages import Runtime
 
@@ -57,6 +63,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--irregular", action="store_true", help="S_norm irregularities on top")
     parser.add_argument("--seed", type=non_negative_int, default=0, help="track seed")
     parser.add_argument("--threads", type=positive_int, default=None, help="threads")
+    add_integrator_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -78,6 +85,7 @@ def run(args: argparse.Namespace) -> int:
         lead_in=args.lead_in,
         irregular=args.irregular,
         seed=args.seed,
+        integrator=args.integrator,
     )
     study = curving.run_curving(stage, Runtime(threads=args.threads, progress=True))
     record = curving.save_curving(study, args.out)

@@ -65,7 +65,13 @@ from pathlib import Path
 import loco
 from loco import campaign, dampers
 from loco.commands import damper_bench
-from loco.commands.arguments import UsageError, non_negative_int, output_dir, positive_int
+from loco.commands.arguments import (
+    UsageError,
+    add_integrator_argument,
+    non_negative_int,
+    output_dir,
+    positive_int,
+)
 from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import (
     curving,
@@ -229,6 +235,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=0,
         help="seed of the track, the sample designs and NSGA-II (default 0)",
     )
+    add_integrator_argument(parser)
     parser.add_argument(
         "--workers",
         type=positive_int,
@@ -259,9 +266,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
-    """The stages of a run of ``sizes`` into ``out_dir`` with ``seed``, in order: each a frozen
-    dataclass of its inputs (:mod:`loco.studies.stages`).
+def stages(
+    sizes: Sizes, out_dir: str | Path, *, seed: int = 0, integrator: str = loco.Scenario.integrator
+) -> list[Stage]:
+    """The stages of a run of ``sizes`` into ``out_dir`` with ``seed``, every run with
+    ``integrator`` at its own step, in order: each a frozen dataclass of its inputs
+    (:mod:`loco.studies.stages`).
 
     A stage's inputs are what its numbers depend on, not the preset's name, so a ``--full`` run
     after ``--quick`` reuses the stages whose sizes the two share. ``seed`` seeds the track
@@ -274,7 +284,7 @@ def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
     """
     out = Path(out_dir)
     setup = parameter_study.StudySetup(
-        speed_kmh=sizes.speed_kmh, distance=sizes.distance, track_seed=seed
+        speed_kmh=sizes.speed_kmh, distance=sizes.distance, track_seed=seed, integrator=integrator
     )
     # The surrogates learn from the Monte Carlo's table and the extension's, by content: the
     # stages that use them run again when either changed (each is checked by its own marker).
@@ -293,6 +303,7 @@ def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
             seed=seed,
             n_tracks=sizes.n_tracks,
             yaw_damper=dampers.YD2,
+            integrator=integrator,
         ),
         parameter_study.MonteCarloStage(setup, sizes.lhs_samples, seed),
         surrogate_samples.SurrogateSamplesStage(
@@ -317,8 +328,11 @@ def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
             lead_in=fsd_comparison.LEAD_IN,
             seed=seed,
             n_tracks=sizes.n_tracks,
+            integrator=integrator,
         ),
-        fsd_design_stage.FsdDesignStage(design_sizes, speed_kmh=sizes.speed_kmh, seed=seed),
+        fsd_design_stage.FsdDesignStage(
+            design_sizes, speed_kmh=sizes.speed_kmh, seed=seed, integrator=integrator
+        ),
     ]
     c = sizes.curving_sizes
     if c is not None:
@@ -328,6 +342,7 @@ def stages(sizes: Sizes, out_dir: str | Path, *, seed: int = 0) -> list[Stage]:
                 deficiencies_mm=c.deficiencies_mm,
                 lead_in=c.lead_in,
                 seed=seed,
+                integrator=integrator,
             )
         )
     return out_stages
@@ -339,6 +354,7 @@ def reproduce(
     *,
     threads: int | None = None,
     seed: int = 0,
+    integrator: str = loco.Scenario.integrator,
     force: bool = False,
     progress: bool = True,
     log: Callable[[str], None] = print,
@@ -350,8 +366,9 @@ def reproduce(
     report's path.
 
     ``seed`` seeds the track irregularities, the Latin hypercube, the Saltelli designs, the
-    networks' K-means and NSGA-II. ``threads``, ``executor`` (default local threads) and
-    ``chunk_size`` only change the speed.
+    networks' K-means and NSGA-II. ``integrator`` is every run's scheme (at its own step; its
+    results differ from the reference's within 0.5 %). ``threads``, ``executor`` (default local
+    threads) and ``chunk_size`` only change the speed.
     """
     out_dir = Path(out)
     executor = executor or LocalExecutor(threads)
@@ -371,7 +388,7 @@ def reproduce(
         runtime=Runtime(threads=threads, progress=progress),
         around=in_campaign,
     )
-    planned = stages(sizes, out_dir, seed=seed)
+    planned = stages(sizes, out_dir, seed=seed, integrator=integrator)
     log(
         f"loco {loco.__version__}: reproducing SPEC §6 ({sizes.name}, ~{sizes.runs()} runs of "
         f"{sizes.distance:g} m) into {out_dir}"
@@ -388,6 +405,7 @@ def reproduce(
         "command": command or f"loco reproduce --{sizes.name}",
         "sizes": dataclasses.asdict(sizes),
         "seed (track, designs, K-means, NSGA-II)": seed,
+        "integrator": f"{integrator} at {loco.simulation.INTEGRATOR_STEPS[integrator] * 1e3:g} ms",
         "tracks of the speed sweep and the damper comparison": (
             f"{sizes.n_tracks} (ChaCha streams 0-{sizes.n_tracks - 1} of the track seed)"
         ),
@@ -428,6 +446,8 @@ PREAMBLE = (
 def _command_line(args: argparse.Namespace) -> str:
     """The command that reproduces this run (the options that change its results or its place)."""
     parts = ["loco", NAME, f"--{args.preset}", "--out", str(args.out), "--seed", str(args.seed)]
+    if args.integrator != loco.Scenario.integrator:
+        parts += ["--integrator", args.integrator]
     return " ".join(parts)
 
 
@@ -447,6 +467,7 @@ def run(args: argparse.Namespace) -> int:
             args.out,
             threads=args.threads,
             seed=args.seed,
+            integrator=args.integrator,
             force=args.force,
             progress=args.progress,
             command=_command_line(args),

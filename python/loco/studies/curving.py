@@ -196,7 +196,8 @@ class CurvingStage(Stage):
     leaves its start state there, :data:`loco.studies.fsd_comparison.LEAD_IN`); ``irregular``
     puts the S_norm irregularities (seed ``seed``) on the design, otherwise the track is perfect;
     a case faster than ``max_speed_kmh`` (km/h) is left out. ``vehicle`` None is the embedded
-    locomotive. Each (curve, damper) is one batch over its speeds.
+    locomotive. ``integrator`` is the integration scheme of every run, at its own step. Each
+    (curve, damper) is one batch over its speeds.
     """
 
     name: ClassVar[str] = "curving"
@@ -208,6 +209,7 @@ class CurvingStage(Stage):
     seed: int = 0
     vehicle: loco.Locomotive | None = None
     max_speed_kmh: float = MAX_SPEED_KMH
+    integrator: str = loco.Scenario.integrator
 
     def locomotive(self) -> loco.Locomotive:
         """The vehicle run (the embedded one when ``vehicle`` is None)."""
@@ -223,6 +225,7 @@ class CurvingStage(Stage):
             "irregular": self.irregular,
             "seed": self.seed,
             "max_speed_kmh": self.max_speed_kmh,
+            "integrator": self.integrator,
             "vehicle": repr(self.locomotive()),
         }
 
@@ -322,6 +325,7 @@ def run_curving(stage: CurvingStage, runtime: Runtime | None = None) -> CurvingS
                 lead_in=lead_in,
                 yaw_damper=law,
                 curve=case.sections(straight),
+                integrator=stage.integrator,
                 **track,
             )
             batch = loco.run_batch(

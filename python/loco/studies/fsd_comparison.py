@@ -273,6 +273,8 @@ class FsdComparisonStage(Stage):
         Default: the embedded locomotive.
     damper_set : mapping of str to Damper
         Yaw damper laws by name (default :data:`DAMPERS`).
+    integrator : str
+        Integration scheme of every run (:data:`loco.simulation.INTEGRATORS`), at its own step.
     """
 
     name: ClassVar[str] = "fsd_comparison"
@@ -283,6 +285,7 @@ class FsdComparisonStage(Stage):
     n_tracks: int = 1
     vehicle: loco.Locomotive | None = None
     damper_set: Mapping[str, dampers.Damper] = field(default_factory=_dampers)
+    integrator: str = loco.Scenario.integrator
 
     def settings(self) -> dict[str, Any]:
         """The comparison's settings as its JSON file and report show them."""
@@ -295,6 +298,7 @@ class FsdComparisonStage(Stage):
             "track_seed": seed,
             "n_tracks": n,
             "tracks": f"ChaCha streams 0-{n - 1} of track seed {seed}",
+            "integrator": self.integrator,
             "cases": [list(c) for c in CASES],
             "dampers": {k: dampers.describe(d) for k, d in self.damper_set.items()},
             "vehicle_overrides": {} if self.vehicle is None else dict(self.vehicle.overrides),
@@ -329,6 +333,7 @@ def run_fsd_comparison(stage: FsdComparisonStage, runtime: Runtime | None = None
                 lead_in=stage.lead_in,
                 seed=stage.seed,
                 yaw_damper=law,
+                integrator=stage.integrator,
             )
             runs[(scenario_name, name)] = run_over_tracks(
                 scenario,

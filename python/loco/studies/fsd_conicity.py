@@ -151,10 +151,11 @@ def run_conicity_sweep(
     seed: int = 0,
     n_tracks: int = 1,
     threads: int | None = None,
+    integrator: str = loco.Scenario.integrator,
 ) -> pd.DataFrame:
-    """Every yaw damper of ``laws`` on the wheel of each conicity, on tracks ``0 … n_tracks-1``:
-    one row per (damper, requested conicity, track) with the measured EN 15302 conicity of the
-    wheel, W_y, A_yb, the run status and its message."""
+    """Every yaw damper of ``laws`` on the wheel of each conicity, on tracks ``0 … n_tracks-1``
+    with ``integrator`` at its own step: one row per (damper, requested conicity, track) with the
+    measured EN 15302 conicity of the wheel, W_y, A_yb, the run status and its message."""
     wheels = {float(c): conicity_wheel(c) for c in conicities}
     measured = {c: equivalent_conicity(w, RAIL, AMPLITUDE) for c, w in wheels.items()}
     jobs = [(c, name) for c in wheels for name in laws]
@@ -168,6 +169,7 @@ def run_conicity_sweep(
             lead_in=lead_in,
             seed=seed,
             yaw_damper=laws[name],
+            integrator=integrator,
         ).replace(name=None, wheel=wheels[c], rail=RAIL)
         return run_over_tracks(scenario, n_tracks, threads=1, progress=False)
 

@@ -79,13 +79,15 @@ RESULT_COLUMNS = ("W_y", "A_yb", "v_crit_kmh", "error", "feasible")
 @dataclass(frozen=True)
 class DesignSetup:
     """How each design is judged: ``speed_kmh`` (km/h), recorded ``distance`` and ``lead_in`` (m),
-    track ``seed`` (track 0 of it), simulation ``threads`` (None: all cores)."""
+    track ``seed`` (track 0 of it), the runs' ``integrator`` (at its own step), simulation
+    ``threads`` (None: all cores)."""
 
     speed_kmh: float = 200.0
     distance: float = 500.0
     lead_in: float = LEAD_IN
     seed: int = 0
     threads: int | None = None
+    integrator: str = loco.Scenario.integrator
 
     def settings(self) -> dict[str, Any]:
         """What the numbers depend on (not the thread count), JSON-ready."""
@@ -94,6 +96,7 @@ class DesignSetup:
             "distance_m": self.distance,
             "lead_in_m": self.lead_in,
             "track_seed": self.seed,
+            "integrator": self.integrator,
             "trigger": TRIGGER,
             "variables": {k: list(v) for k, v in VARIABLES.items()},
             "objectives": dict(JUDGED_BY),
@@ -131,6 +134,7 @@ def _run(setup: DesignSetup, law: dampers.Damper, scenario: str, metric: str) ->
         lead_in=setup.lead_in,
         seed=setup.seed,
         yaw_damper=law,
+        integrator=setup.integrator,
     )
     runs = run_over_tracks(s, 1, threads=1, progress=False)
     return float(runs.values(metric)[0])

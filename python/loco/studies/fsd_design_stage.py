@@ -55,10 +55,16 @@ SIZES: dict[str, DesignSizes] = {
 REFERENCES: dict[str, dampers.Damper] = dict(dampers.PRESETS)
 
 
-def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[str, Any]:
+def design_settings(
+    sizes: DesignSizes, *, speed_kmh: float, seed: int, integrator: str = loco.Scenario.integrator
+) -> dict[str, Any]:
     """The stage's settings as its JSON file and report show them."""
     setup = fsd_design.DesignSetup(
-        speed_kmh=speed_kmh, distance=sizes.distance, lead_in=sizes.lead_in, seed=seed
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        integrator=integrator,
     )
     return {
         **setup.settings(),
@@ -70,13 +76,14 @@ def design_settings(sizes: DesignSizes, *, speed_kmh: float, seed: int) -> dict[
 
 @dataclass(frozen=True)
 class FsdDesignStage(Stage):
-    """The stage ``fsd_design`` of ``loco reproduce``: its ``sizes``, the running speed (km/h)
-    and the seed of the tracks and of NSGA-II."""
+    """The stage ``fsd_design`` of ``loco reproduce``: its ``sizes``, the running speed (km/h),
+    the seed of the tracks and of NSGA-II and the runs' integration scheme."""
 
     name: ClassVar[str] = "fsd_design"
     sizes: DesignSizes
     speed_kmh: float = 200.0
     seed: int = 0
+    integrator: str = loco.Scenario.integrator
 
     def demand(self) -> Demand:
         """At most: two runs (S_low, S_high) per design NSGA-II evaluates (``pop_size`` per
@@ -89,7 +96,12 @@ class FsdDesignStage(Stage):
     def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
         """:func:`run_fsd_design` into ``out_dir``."""
         return run_fsd_design(
-            self.sizes, out_dir, speed_kmh=self.speed_kmh, seed=self.seed, threads=runtime.threads
+            self.sizes,
+            out_dir,
+            speed_kmh=self.speed_kmh,
+            seed=self.seed,
+            threads=runtime.threads,
+            integrator=self.integrator,
         )
 
 
@@ -127,6 +139,7 @@ def run_fsd_design(
     speed_kmh: float = 200.0,
     seed: int = 0,
     threads: int | None = None,
+    integrator: str = loco.Scenario.integrator,
 ) -> StudyRecord:
     """Run the study into ``out_dir``; files: ``fsd_design_population.csv`` (every design and
     generation), ``fsd_design_front.csv``, ``fsd_design_conicity.csv`` (every run of the sweep)
@@ -141,6 +154,7 @@ def run_fsd_design(
         lead_in=sizes.lead_in,
         seed=seed,
         threads=threads,
+        integrator=integrator,
     )
     study = fsd_design.run_design_study(
         setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed
@@ -156,6 +170,7 @@ def run_fsd_design(
         seed=seed,
         n_tracks=sizes.n_tracks,
         threads=threads,
+        integrator=integrator,
     )
     summary = fsd_conicity.sweep_summary(sweep)
     marks.append(_clock())
@@ -171,7 +186,7 @@ def run_fsd_design(
     )
     seconds = marks[-1][0] - marks[0][0]
     settings = {
-        **design_settings(sizes, speed_kmh=speed_kmh, seed=seed),
+        **design_settings(sizes, speed_kmh=speed_kmh, seed=seed, integrator=integrator),
         "loco_version": loco.__version__,
         "picked_designs": picks,
         "designs_evaluated": len(study.population),

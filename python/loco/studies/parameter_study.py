@@ -91,18 +91,25 @@ LOG_TARGET = True
 @dataclass(frozen=True)
 class StudySetup:
     """Where the objectives are evaluated: speed (km/h), distance (m), track seed, vehicle (None:
-    the embedded locomotive). How they run (threads, progress bars) is a
-    :class:`~loco.studies.stages.Runtime`, not part of the setup."""
+    the embedded locomotive), integration scheme (:data:`loco.simulation.INTEGRATORS`, at its
+    own step). How they run (threads, progress bars) is a :class:`~loco.studies.stages.Runtime`,
+    not part of the setup."""
 
     speed_kmh: float = 200.0
     distance: float = 500.0
     track_seed: int = 0
     vehicle: loco.Locomotive | None = None
+    integrator: str = loco.Scenario.integrator
 
     def scenario(self, name: str) -> loco.Scenario:
-        """The scenario ``name`` at the study speed and distance, vehicle file's yaw damper."""
+        """The scenario ``name`` at the study speed and distance, vehicle file's yaw damper,
+        with the setup's integration scheme at its own step."""
         return loco.Scenario(
-            name=name, speed=self.speed_kmh / 3.6, distance=self.distance, seed=self.track_seed
+            name=name,
+            speed=self.speed_kmh / 3.6,
+            distance=self.distance,
+            seed=self.track_seed,
+            integrator=self.integrator,
         )
 
     def evaluator(self, runtime: Runtime | None = None) -> Evaluator:

@@ -240,6 +240,8 @@ class SpeedSweepStage(Stage):
         Default: the embedded locomotive.
     yaw_damper : Damper, optional
         Yaw damper law (SPEC: YD2); None keeps the vehicle file's.
+    integrator : str
+        Integration scheme of every run (:data:`loco.simulation.INTEGRATORS`), at its own step.
     """
 
     name: ClassVar[str] = "speed_sweep"
@@ -252,6 +254,7 @@ class SpeedSweepStage(Stage):
     n_tracks: int = 1
     vehicle: loco.Locomotive | None = None
     yaw_damper: dampers.Damper | None = dampers.YD2
+    integrator: str = loco.Scenario.integrator
 
     def speeds(self) -> FloatArray:
         """The speeds run, km/h: ``speeds_kmh`` and ``psd_speed_kmh``, sorted, once each."""
@@ -271,6 +274,7 @@ class SpeedSweepStage(Stage):
             "track_seed": seed,
             "n_tracks": n,
             "tracks": f"ChaCha streams 0-{n - 1} of track seed {seed}",
+            "integrator": self.integrator,
             "yaw_damper": None if damper is None else dampers.describe(damper),
             "yaw_damper_label": dampers.label(damper),
             "vehicle_overrides": {} if self.vehicle is None else dict(self.vehicle.overrides),
@@ -308,6 +312,7 @@ def run_speed_sweep(stage: SpeedSweepStage, runtime: Runtime | None = None) -> S
                 lead_in=stage.lead_in,
                 seed=stage.seed,
                 yaw_damper=stage.yaw_damper,
+                integrator=stage.integrator,
             )
             runs = run_over_tracks(
                 scenario,

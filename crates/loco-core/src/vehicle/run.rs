@@ -13,19 +13,20 @@ use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
-/// The reference step of the classical RK4 ([`Integrator::Rk4`]), the default, s: the
-/// convergence study's (`scripts/convergence_study.py`).
+/// The reference step of the classical RK4 ([`Integrator::Rk4`]), s: the convergence study's
+/// (`scripts/convergence_study.py`), against which the exponential scheme is checked.
 pub const REFERENCE_STEP: f64 = 1e-3;
 
-/// The step [`Integrator::ExponentialRk4`] is checked at, s: with the gearbox bearings solved
-/// exactly the vehicle is stable at 2 ms, and 500 Hz output stays on whole steps
+/// The default step of [`Integrator::ExponentialRk4`], s: with the gearbox
+/// bearings solved exactly the vehicle is stable at 2 ms, and 500 Hz output stays on whole steps
 /// (`tests/exponential_step.rs`).
 pub const EXPONENTIAL_STEP: f64 = 2e-3;
 
 /// Settings of the time integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RunSettings {
-    /// Integration step, s (fixed; see the convergence study in the README).
+    /// Integration step, s (fixed; see the convergence study in the README); by default the
+    /// scheme's [`Integrator::default_step`].
     pub step: f64,
     /// The scheme that takes the steps.
     pub integrator: Integrator,
@@ -41,7 +42,7 @@ pub struct RunSettings {
 impl Default for RunSettings {
     fn default() -> Self {
         Self {
-            step: REFERENCE_STEP,
+            step: Integrator::default().default_step(),
             integrator: Integrator::default(),
             output_rate: 500.0,
             duration: 9.0,

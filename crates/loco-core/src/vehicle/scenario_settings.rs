@@ -60,10 +60,10 @@ pub struct ScenarioSettings {
     /// Trigger of the `FSD` preset: a name of [`FsdTrigger::NAMES`] (`rms-frequency`, the
     /// default, or `hydraulic`); only with `yaw_damper = "FSD"`.
     pub fsd_trigger: Option<String>,
-    /// Integration step, s.
+    /// Integration step, s; without it the scheme's own ([`Integrator::default_step`]).
     pub step: Option<f64>,
     /// Integration scheme: `rk4` (default, the classical RK4, the reference at 1 ms) or `etdrk4`
-    /// (the gearbox bearings solved exactly, for a 2 ms step); see [`Integrator`].
+    /// (the gearbox bearings solved exactly, at 2 ms); see [`Integrator`].
     pub integrator: Option<String>,
     /// Output sampling rate, Hz.
     pub output_rate: Option<f64>,
@@ -331,7 +331,8 @@ impl ScenarioSettings {
             track,
             yaw_damper,
             run: RunSettings {
-                step: or(self.step, defaults.step),
+                // A scheme named without a step runs at its own step, not the default scheme's.
+                step: self.step.unwrap_or(integrator.default_step()),
                 integrator,
                 output_rate: or(self.output_rate, defaults.output_rate),
                 ..RunSettings::default()

@@ -45,6 +45,26 @@ fn defaults_are_the_core_defaults() {
 }
 
 #[test]
+fn a_scheme_named_without_a_step_runs_at_its_own_step() {
+    // Before, `integrator = "etdrk4"` alone ran at RK4's 1 ms: correct but without the gain.
+    let given = |integrator: &str, step: Option<f64>| {
+        ScenarioSettings {
+            integrator: Some(integrator.into()),
+            step,
+            ..settings("S_norm")
+        }
+        .resolve(GivenObjects::default(), Path::new("."))
+        .unwrap()
+        .run
+    };
+    let etd = given("etdrk4", None);
+    assert_eq!(etd.integrator, Integrator::ExponentialRk4);
+    assert_eq!(etd.step, super::super::run::EXPONENTIAL_STEP);
+    assert_eq!(given("rk4", None).step, super::super::run::REFERENCE_STEP);
+    assert_eq!(given("etdrk4", Some(1e-3)).step, 1e-3);
+}
+
+#[test]
 fn settings_are_applied() {
     let s = ScenarioSettings {
         speed: None,

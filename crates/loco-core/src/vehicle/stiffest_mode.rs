@@ -332,6 +332,8 @@ mod tests {
         let track = Arc::new(build_track(&s, &structure).unwrap());
         let start = start_distance(&structure);
         let mut sys = VehicleSystem::new(structure, wr, track, s.speed, start, None, 1e-3).unwrap();
+        // The full spectrum: the scheme that takes every mode in its stages.
+        sys.integrator = Integrator::Rk4;
         let eq = static_equilibrium(&mut sys, &StaticsSettings::default()).unwrap();
         let m = DMatrix::from_fn(N_DOF, N_DOF, |i, j| sys.structure.mass.get(i, j));
         let a = m.lu().solve(&eq.jacobian).unwrap();
