@@ -34,7 +34,8 @@ def test_a_scheme_named_without_a_step_runs_at_its_own() -> None:
         loco.Scenario("S_high", integrator="etdrk4", step=2e-3, **short),  # type: ignore[arg-type]
     )
     assert named.statistics["steps"] == given.statistics["steps"]
-    assert named.metrics["ayb_peak_lp"] == given.metrics["ayb_peak_lp"]
+    channel = "frame1_ay_wheelset1"  # 60 m is too short for the metrics: the record itself
+    assert (named.channel(channel) == given.channel(channel)).all()
 
 
 @pytest.mark.parametrize("name", ["S_low", "S_high"])
