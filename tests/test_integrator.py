@@ -29,6 +29,8 @@ def test_a_scheme_named_without_a_step_runs_at_its_own() -> None:
     short = {"speed": 200 / 3.6, "distance": 60.0}
     vehicle = loco.Locomotive()
     named = loco.simulate(vehicle, loco.Scenario("S_high", integrator="etdrk4", **short))  # type: ignore[arg-type]
+    at_1_ms = loco.simulate(vehicle, loco.Scenario("S_high", integrator="rk4", **short))  # type: ignore[arg-type]
+    assert 2 * named.statistics["steps"] == at_1_ms.statistics["steps"]
     given = loco.simulate(
         vehicle,
         loco.Scenario("S_high", integrator="etdrk4", step=2e-3, **short),  # type: ignore[arg-type]

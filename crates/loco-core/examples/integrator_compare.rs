@@ -1,8 +1,9 @@
 //! One 500 m run at 200 km/h (`DISTANCE` m if set) with each integration scheme and step, the
 //! run metrics against RK4 at 0.25 ms and the wall time (release build, one core):
 //! `cargo run --release -p loco-core --example integrator_compare -- [S_high|S_low]
-//! [parameter=value ...]`.
+//! [parameter=value ...]`; `CURVE=study` or `CURVE=reference` runs it on that curve.
 
+use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::integrator::Integrator;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::RunSettings;
@@ -21,17 +22,8 @@ fn main() {
     let distance: f64 = std::env::var("DISTANCE").map_or(500.0, |d| d.parse().unwrap());
     let mut base = Scenario::study(name, 200.0 / 3.6, distance, 1).unwrap();
     match std::env::var("CURVE").as_deref() {
-        Ok("study") => {
-            base.curve = loco_core::track::design::DesignSection::study_curve(
-                loco_core::track::design::CurveDirection::Left,
-            )
-        }
-        Ok("reference") => {
-            base.curve = loco_core::track::design::DesignSection::reference_curve(
-                0.1,
-                loco_core::track::design::CurveDirection::Left,
-            )
-        }
+        Ok("study") => base.curve = DesignSection::study_curve(CurveDirection::Left),
+        Ok("reference") => base.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
         _ => {}
     }
     let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
