@@ -33,7 +33,7 @@ def main() -> None:
         "--integrator", choices=loco.simulation.INTEGRATORS, default="rk4", help="time scheme"
     )
     args = parser.parse_args()
-    step = 2e-3 if args.integrator == "etdrk4" else 1e-3
+    step = loco.simulation.INTEGRATOR_STEPS[args.integrator]
 
     columns = names()
     params = latin_hypercube(args.samples, seed=1)

@@ -4,8 +4,11 @@
 //! A law too stiff for the vehicle's step is used in its reduced form, [`Damper::for_step`] (FSD
 //! without its mass, a series spring rigid; thresholds and error bounds in [`crate::dampers`]).
 
+use super::decaying_states::{DecayingState, DecayingStates};
 use super::elements::{BodyStates, Wrenches};
-use super::kinematics::dot;
+use super::kinematics::{dot, point_motion, sub};
+use super::layout::N_DOF;
+use super::structure::VehicleStructure;
 use super::suspension::{DamperPlacement, DamperRole};
 use crate::dampers::{Damper, DamperDiscreteState, MaxwellDamper, MaxwellParams};
 use crate::error::{LocoError, Result};
@@ -68,6 +71,40 @@ impl DamperElement {
             wrenches,
         );
     }
+}
+
+/// The internal states of `dampers` that decay at a constant rate (the linear Maxwell laws,
+/// [`Damper::linear_state_rate_per_s`]), which the exponential scheme solves exactly, with their
+/// elongation per coordinate of `structure` (the bodies' small-motion kinematics, as
+/// [`DamperElement::stroke`] forms it) and their static elongation.
+pub fn decaying_states(structure: &VehicleStructure, dampers: &[DamperElement]) -> DecayingStates {
+    let mut unit = [0.0; N_DOF];
+    let states = dampers
+        .iter()
+        .filter_map(|d| {
+            let rate = d.law.linear_state_rate_per_s()?;
+            let at = &d.placement.at;
+            let mut elongation = Vec::new();
+            for j in 0..N_DOF {
+                unit[j] = 1.0;
+                let ua = structure.bodies[at.body_a].map.apply(&unit);
+                let ub = structure.bodies[at.body_b].map.apply(&unit);
+                unit[j] = 0.0;
+                let relative = sub(point_motion(&ub, at.point_b), point_motion(&ua, at.point_a));
+                let value = dot(relative, d.placement.direction);
+                if value != 0.0 {
+                    elongation.push((j, value));
+                }
+            }
+            Some(DecayingState {
+                index: d.state_offset,
+                rate,
+                elongation,
+                offset: -d.static_elongation,
+            })
+        })
+        .collect();
+    DecayingStates::new(N_DOF, states)
 }
 
 /// The law of a damper placement: the yaw dampers take `yaw_damper` when given, every other

@@ -1,19 +1,22 @@
 //! Exponential fourth-order Runge–Kutta with the stiff linear springs integrated exactly.
 //!
 //! The vehicle's equations split into `ẏ = L y + N(t, y)`: `L` the springs of
-//! [`StiffLinearPart`] (the gearbox bearings), `N = f − L y` all the rest (contact, creep, dampers,
+//! [`StiffLinearPart`] (the gearbox bearings) and the decay of the linear Maxwell dampers' series
+//! springs ([`DecayingStates`]), `N = f − L y` all the rest (contact, creep, the dampers' forcing,
 //! the other suspension, the bearings' small nonlinear terms), so that the split changes nothing in
 //! the equations. ETDRK4 (Cox and Matthews, J. Comput. Phys. 176, 2002, eq. 26–29; in the
 //! φ-function form of Hochbruck and Ostermann, Acta Numerica 19, 2010, §2.5) evaluates `N` at
 //! four stages, like RK4, and solves the linear part exactly between them; with `L = 0` it is the
 //! classical RK4. The step is then bounded by the stiffest mode of the rest, not by the
-//! bearings' 230–330 Hz: 2 ms instead of 1.4 ms, with the output rate of 500 Hz on whole steps.
+//! bearings' 230–330 Hz: 2 ms instead of 1.4 ms, with the output rate of 500 Hz on whole steps;
+//! and a damper pole `k/c` beyond RK4's reach at that step keeps its law (the reference's).
 //!
 //! Each stage is the exact solution of `ẏ = L y + w0 + w1·t + w2·t²/2` from a start state
 //! ([`propagate`]): the deflections `z = J q` of the stiff springs follow their small linear system
 //! through a precomputed [`Propagator`], and every coordinate follows the polynomial forcing plus
 //! the springs' accelerations `−B ∫z` (velocities) and `−B ∫∫z` (positions).
 
+use super::decaying_states::{DecayPropagator, DecayingStates};
 use super::integrator::OdeSystem;
 use super::stiff_linear_part::{Propagator, StiffLinearPart};
 use std::sync::Arc;
@@ -22,9 +25,12 @@ use std::sync::Arc;
 #[derive(Debug, Clone)]
 pub struct ExponentialRk4 {
     part: Arc<StiffLinearPart>,
+    decaying: Arc<DecayingStates>,
     /// Propagators over half and the whole step.
     half: Propagator,
     full: Propagator,
+    half_decay: DecayPropagator,
+    full_decay: DecayPropagator,
     /// Step the propagators are made for, s.
     dt: f64,
     k: [Vec<f64>; 4],
@@ -38,14 +44,22 @@ pub struct ExponentialRk4 {
 }
 
 impl ExponentialRk4 {
-    /// Workspace for a system of `n` states `[q | q̇ | others]` with the stiff part `part` and
-    /// the fixed step `dt` (s).
-    pub fn new(part: Arc<StiffLinearPart>, n: usize, dt: f64) -> Self {
+    /// Workspace for a system of `n` states `[q | q̇ | others]` with the stiff part `part`, the
+    /// decaying first-order states `decaying` (among the others) and the fixed step `dt` (s).
+    pub fn new(
+        part: Arc<StiffLinearPart>,
+        decaying: Arc<DecayingStates>,
+        n: usize,
+        dt: f64,
+    ) -> Self {
         let r = part.len();
         Self {
             half: part.propagator(0.5 * dt),
             full: part.propagator(dt),
+            half_decay: decaying.propagator(0.5 * dt),
+            full_decay: decaying.propagator(dt),
             part,
+            decaying,
             dt,
             k: std::array::from_fn(|_| vec![0.0; n]),
             a: vec![0.0; n],
@@ -73,8 +87,11 @@ impl ExponentialRk4 {
         let h = self.dt;
         let Self {
             part,
+            decaying,
             half,
             full,
+            half_decay,
+            full_decay,
             k: [k1, k2, k3, k4],
             a,
             stage,
@@ -83,32 +100,68 @@ impl ExponentialRk4 {
             output,
             ..
         } = self;
-        let part: &StiffLinearPart = part;
+        let linear = Linear {
+            part,
+            decaying,
+            half: (half, half_decay),
+            full: (full, full_decay),
+        };
         let mut scratch = Scratch { input, output };
         system.derivatives(t, y, k1);
         observe(system, y, k1);
-        remove_linear(part, y, k1, scratch.output);
-        propagate(part, half, y, &[k1], &mut scratch, a);
+        linear.remove(y, k1, scratch.output);
+        linear.propagate(linear.half, y, &[k1], &mut scratch, a);
         system.derivatives(t + 0.5 * h, a, k2);
-        remove_linear(part, a, k2, scratch.output);
-        propagate(part, half, y, &[k2], &mut scratch, stage);
+        linear.remove(a, k2, scratch.output);
+        linear.propagate(linear.half, y, &[k2], &mut scratch, stage);
         system.derivatives(t + 0.5 * h, stage, k3);
-        remove_linear(part, stage, k3, scratch.output);
+        linear.remove(stage, k3, scratch.output);
         for ((w, x3), x1) in w0.iter_mut().zip(k3.iter()).zip(k1.iter()) {
             *w = 2.0 * x3 - x1;
         }
-        propagate(part, half, a, &[w0], &mut scratch, stage);
+        linear.propagate(linear.half, a, &[w0], &mut scratch, stage);
         system.derivatives(t_end, stage, k4);
-        remove_linear(part, stage, k4, scratch.output);
+        linear.remove(stage, k4, scratch.output);
         // N along the step as the quadratic w0 + w1·t + w2·t²/2 (the φ1, φ2, φ3 weights).
         for i in 0..y.len() {
             let (n1, n23, n4) = (k1[i], k2[i] + k3[i], k4[i]);
             w1[i] = (-3.0 * n1 + 2.0 * n23 - n4) / h;
             w2[i] = 4.0 * (n1 - n23 + n4) / (h * h);
         }
-        propagate(part, full, y, &[k1, w1, w2], &mut scratch, stage);
+        linear.propagate(linear.full, y, &[k1, w1, w2], &mut scratch, stage);
         y.copy_from_slice(stage);
         system.after_step(t_end, h, y);
+    }
+}
+
+/// The linear part `L`: the stiff springs and the decaying states, with their propagators over
+/// half and the whole step.
+struct Linear<'a> {
+    part: &'a StiffLinearPart,
+    decaying: &'a DecayingStates,
+    half: (&'a Propagator, &'a DecayPropagator),
+    full: (&'a Propagator, &'a DecayPropagator),
+}
+
+impl Linear<'_> {
+    /// `k = f(y)` into `N(y) = f(y) − L y`.
+    fn remove(&self, y: &[f64], k: &mut [f64], z: &mut [f64]) {
+        // The decaying states read the coordinate rows (q̇) before the springs change them.
+        self.decaying.remove_linear(y, k);
+        remove_linear(self.part, y, k, z);
+    }
+
+    /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from `y0`.
+    fn propagate(
+        &self,
+        (springs, decay): (&Propagator, &DecayPropagator),
+        y0: &[f64],
+        w: &[&[f64]],
+        scratch: &mut Scratch,
+        out: &mut [f64],
+    ) {
+        propagate(self.part, springs, y0, w, scratch, out);
+        self.decaying.propagate(decay, y0, w, out);
     }
 }
 

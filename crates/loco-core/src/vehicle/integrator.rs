@@ -16,8 +16,9 @@
 //! [`OdeSystem::after_step`].
 //!
 //! The other scheme, [`Integrator::ExponentialRk4`] ([`super::exponential_rk4`]), takes RK4's
-//! stages for everything but the gearbox bearings, which it solves exactly, so that a 2 ms step
-//! is stable: `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
+//! stages for everything but the gearbox bearings and the linear Maxwell dampers' series springs,
+//! which it solves exactly, so that a 2 ms step is stable with the damper laws of the 1 ms
+//! reference ([`super::decaying_states`]): `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
 //! RK4 at 1 ms (the reference) over the SPEC §6 box on the study's 500 m runs. It is an option,
 //! not the default: solved exactly, the bearings' tilting modes (≈ 320 Hz, no damping in the
 //! parameter file) ring on where RK4 at 1 ms damps them numerically (|R| = 0.75 per step), so a

@@ -36,6 +36,7 @@ pub mod channel_set;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
+pub mod decaying_states;
 pub mod elements;
 pub mod exponential_rk4;
 pub mod frequency_response;

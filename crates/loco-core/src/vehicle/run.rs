@@ -4,6 +4,8 @@
 //! structure; [`run`] records every channel of it at each output sample.
 
 use super::channel_set::ChannelSet;
+use super::damper_elements::decaying_states;
+use super::decaying_states::DecayingStates;
 use super::exponential_rk4::ExponentialRk4;
 use super::integrator::{Integrator, OdeSystem, Rk4Workspace};
 use super::simulation::VehicleSystem;
@@ -207,6 +209,9 @@ pub fn integrate(
 /// vehicle keeps the long step.
 pub const FINE_STEP_EXCURSION: f64 = 3e-3;
 
+/// The exponential scheme's linear part: the gearbox bearings and the dampers' decaying states.
+type LinearPart = (Arc<StiffLinearPart>, Arc<DecayingStates>);
+
 /// A scheme's workspace.
 enum Scheme {
     Rk4(Rk4Workspace),
@@ -214,13 +219,14 @@ enum Scheme {
 }
 
 impl Scheme {
-    /// The workspace of `system.integrator` for steps of `dt` (s); `bearings` is the stiff part
+    /// The workspace of `system.integrator` for steps of `dt` (s); `linear` is the linear part
     /// the exponential scheme solves (built once per run and shared).
-    fn new(system: &VehicleSystem, dt: f64, bearings: &Option<Arc<StiffLinearPart>>) -> Self {
-        match bearings {
+    fn new(system: &VehicleSystem, dt: f64, linear: &Option<LinearPart>) -> Self {
+        match linear {
             None => Self::Rk4(Rk4Workspace::new(system.dimension())),
-            Some(part) => Self::Exponential(Box::new(ExponentialRk4::new(
-                Arc::clone(part),
+            Some((bearings, dampers)) => Self::Exponential(Box::new(ExponentialRk4::new(
+                Arc::clone(bearings),
+                Arc::clone(dampers),
                 system.dimension(),
                 dt,
             ))),
@@ -238,13 +244,17 @@ struct Stepper {
 
 impl Stepper {
     fn new(system: &VehicleSystem, dt: f64) -> Self {
-        let bearings = (system.integrator == Integrator::ExponentialRk4)
-            .then(|| Arc::new(gearbox_bearings(&system.structure)));
+        let linear = (system.integrator == Integrator::ExponentialRk4).then(|| {
+            (
+                Arc::new(gearbox_bearings(&system.structure)),
+                Arc::new(decaying_states(&system.structure, &system.dampers)),
+            )
+        });
         // The tolerance keeps a step of exactly the reference whole.
         let parts = (dt / REFERENCE_STEP * (1.0 - 1e-9)).ceil() as usize;
         Self {
-            long: Scheme::new(system, dt, &bearings),
-            cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64, &bearings))),
+            long: Scheme::new(system, dt, &linear),
+            cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64, &linear))),
         }
     }
 

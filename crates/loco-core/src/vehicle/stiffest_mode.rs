@@ -21,6 +21,7 @@ use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, Equilibrium, StaticsSettings};
 use super::stiff_linear_part::gearbox_bearings;
 use super::suspects::with_suspects;
+use crate::dampers::MAX_RATE_STEP;
 use crate::error::{LocoError, Result};
 use nalgebra::{DMatrix, DVector};
 
@@ -103,19 +104,39 @@ pub fn in_equilibrium_at_stable_step(
         .map_err(|e| with_suspects(e, &system.structure.parameters))?;
     // A step beyond the reference must not reduce a damper law the reference keeps (a Maxwell
     // damper's series spring made rigid, an FSD's mass left out): the reduced laws are checked
-    // at the reference step, and a compliance slower than it matters. Such a vehicle runs at
-    // the reference step.
-    if stable > REFERENCE_STEP
-        && damper_forms(&build(stable)?) != damper_forms(&build(REFERENCE_STEP)?)
-    {
-        stable = step / (step / REFERENCE_STEP).ceil();
+    // at the reference step, and a compliance slower than it matters. The exponential scheme
+    // takes the reference's laws where it carries them at the longer step (it solves the
+    // linear Maxwell states exactly); otherwise such a vehicle runs at the reference step.
+    let mut laws_step = stable;
+    if stable > REFERENCE_STEP {
+        let reference = build(REFERENCE_STEP)?;
+        if damper_forms(&build(stable)?) != damper_forms(&reference) {
+            if carries_laws(&reference, stable) {
+                laws_step = REFERENCE_STEP;
+            } else {
+                stable = step / (step / REFERENCE_STEP).ceil();
+                laws_step = stable;
+            }
+        }
     }
-    if stable == step {
+    if stable == step && laws_step == step {
         return Ok((system, equilibrium, step));
     }
-    let mut system = build(stable)?;
+    let mut system = build(laws_step)?;
     let equilibrium = static_equilibrium(&mut system, statics)?;
     Ok((system, equilibrium, stable))
+}
+
+/// Whether the scheme of `system` carries all its damper laws at `step` (s): each internal pole
+/// fits the explicit stages (`rate·step ≤` [`MAX_RATE_STEP`]) or, with the exponential scheme,
+/// is a decaying state it solves exactly
+/// ([`crate::dampers::Damper::linear_state_rate_per_s`]).
+fn carries_laws(system: &VehicleSystem, step: f64) -> bool {
+    system.dampers.iter().all(|d| {
+        d.law.fastest_rate_per_s() * step <= MAX_RATE_STEP
+            || (system.integrator == Integrator::ExponentialRk4
+                && d.law.linear_state_rate_per_s().is_some())
+    })
 }
 
 /// The number of internal states of each damper law: a reduced law has fewer.

@@ -1,0 +1,212 @@
+//! The internal states of the linear Maxwell dampers, integrated exactly by
+//! [`super::exponential_rk4`] as first-order states that decay at a constant rate.
+//!
+//! Why: a Maxwell element (series spring `k`, N/m, damper `c`, N·s/m) carries the damper's
+//! deflection `x_d` with `ẋ_d = r·(x − x_d)`, `r = k/c` (1/s), `x` the elongation. SPEC §6
+//! reaches `r = 5·10³ 1/s` (C_sy = 10 kN·s/m with K_ncsy = 50 kN/mm). RK4 carries such a pole
+//! only while `r·h ≤ 2.5` ([`crate::dampers::MAX_RATE_STEP`]); beyond it the element is reduced
+//! to the pure damper ([`crate::dampers::Damper::for_step`]). At the exponential scheme's 2 ms
+//! the laws with `r` in (1250, 2500] 1/s would be reduced where the 1 ms reference keeps them,
+//! so those vehicles ran at 1 ms throughout (a quarter of the SPEC §6 box).
+//!
+//! The state solved exactly is the series spring's deflection, not `x_d`: with `x ≈ J q + c0`
+//! (`J` the elongation per coordinate, constant; `c0` minus the static elongation), the variable
+//! `δ = J q + c0 − x_d` obeys `δ̇ = J q̇ − r δ + r·(δ − δ_true)`, `δ_true = x − x_d`, so that
+//! `L = −r` and `N = J q̇ + r·(J q + c0 − x)`: the forcing is the elongation rate, as smooth as
+//! the bodies, and the remainder vanishes where the elongation is linear in the coordinates
+//! (straight track; on a curve the track frame makes it nearly so). Taking `x_d` itself
+//! (`N = r·x`) instead puts `r` into the Lipschitz constant of `N`: the stages' errors in the
+//! coordinates are multiplied by it, and at `r·h = 2` the 500 m metrics moved by up to 12 %.
+//!
+//! Over a time `τ` under the forcing `w0 + w1·t + w2·t²/2`, `δ` moves to
+//! `e^{−rτ} δ0 + τ φ1(−rτ) w0 + τ² φ2(−rτ) w1 + τ³ φ3(−rτ) w2` (Hochbruck and Ostermann, Acta
+//! Numerica 19, 2010, §2.1: `φ_{k+1}(z) = (φ_k(z) − 1/k!)/z`, `φ_0 = e^z`), and `x_d` is
+//! `J q + c0 − δ` with the stage's coordinates.
+
+/// A sparse row: (coordinate index, coefficient).
+pub type Sparse = Vec<(usize, f64)>;
+
+/// One decaying state.
+#[derive(Debug, Clone)]
+pub struct DecayingState {
+    /// Index of `x_d` in the state vector.
+    pub index: usize,
+    /// Decay rate `r = k/c`, 1/s.
+    pub rate: f64,
+    /// Elongation per coordinate, `J` (m/m, m/rad).
+    pub elongation: Sparse,
+    /// Elongation at zero coordinates, `c0`, m.
+    pub offset: f64,
+}
+
+impl DecayingState {
+    /// `δ = J q + c0 − x_d` (m) of the state vector (or stage) `y`.
+    #[inline]
+    fn deflection(&self, y: &[f64]) -> f64 {
+        self.elongation.iter().map(|&(j, c)| c * y[j]).sum::<f64>() + self.offset - y[self.index]
+    }
+}
+
+/// The decaying states of a system, with their exact propagation over a stage length.
+#[derive(Debug, Clone, Default)]
+pub struct DecayingStates {
+    states: Vec<DecayingState>,
+    /// Number of coordinates `q` (the state is `[q | q̇ | other states]`).
+    n_dof: usize,
+}
+
+/// Per state, over a time `τ`: `[e^{−rτ}, τ φ1, τ² φ2, τ³ φ3]` at `z = −rτ`.
+#[derive(Debug, Clone, Default)]
+pub struct DecayPropagator {
+    coefficients: Vec<[f64; 4]>,
+}
+
+impl DecayingStates {
+    /// The states `states` (each rate finite and ≥ 0) of a system with `n_dof` coordinates.
+    pub fn new(n_dof: usize, states: Vec<DecayingState>) -> Self {
+        debug_assert!(states.iter().all(|s| s.rate.is_finite() && s.rate >= 0.0));
+        Self { states, n_dof }
+    }
+
+    /// Number of states.
+    pub fn len(&self) -> usize {
+        self.states.len()
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.states.is_empty()
+    }
+
+    /// The states.
+    pub fn states(&self) -> &[DecayingState] {
+        &self.states
+    }
+
+    /// Writes `N_δ = J q̇ − ẋ_d + r·δ` into each state's row of `k = f(y)`; to be called before
+    /// anything else changes the coordinate rows of `k` (`q̇` there).
+    #[inline]
+    pub fn remove_linear(&self, y: &[f64], k: &mut [f64]) {
+        let (rates, others) = k.split_at_mut(2 * self.n_dof);
+        for s in &self.states {
+            let elongation_rate: f64 = s.elongation.iter().map(|&(j, c)| c * rates[j]).sum();
+            let i = s.index - 2 * self.n_dof;
+            others[i] = elongation_rate - others[i] + s.rate * s.deflection(y);
+        }
+    }
+
+    /// The exact propagation over `tau` (s).
+    pub fn propagator(&self, tau: f64) -> DecayPropagator {
+        DecayPropagator {
+            coefficients: self
+                .states
+                .iter()
+                .map(|s| {
+                    let [e, p1, p2, p3] = phi(-s.rate * tau);
+                    [e, tau * p1, tau * tau * p2, tau.powi(3) * p3]
+                })
+                .collect(),
+        }
+    }
+
+    /// Writes each `x_d` into `out`, whose coordinates already hold the stage's: `δ` solves
+    /// `δ̇ = −r δ + Σ w_k t^k/k!` exactly from `y0` over the propagator's time (one to three
+    /// forcing vectors, combinations of [`Self::remove_linear`]'s rows).
+    #[inline]
+    pub fn propagate(&self, p: &DecayPropagator, y0: &[f64], w: &[&[f64]], out: &mut [f64]) {
+        for (s, c) in self.states.iter().zip(&p.coefficients) {
+            let mut deflection = c[0] * s.deflection(y0);
+            for (k, wk) in w.iter().enumerate() {
+                deflection += c[k + 1] * wk[s.index];
+            }
+            out[s.index] = 0.0;
+            out[s.index] = s.deflection(out) - deflection;
+        }
+    }
+}
+
+/// `[φ0, φ1, φ2, φ3](z)` for `z ≤ 0`: the power series `φ_k = Σ_j z^j/(j + k)!` where `|z| < 1`
+/// (the recurrence loses digits to cancellation there), the recurrence beyond.
+pub fn phi(z: f64) -> [f64; 4] {
+    if z.abs() < 1.0 {
+        // 20 terms: the remainder is below |z|^20/20! < 5e-19 of φ_k ≥ 1/(k+1)!·e^{-1}.
+        let mut out = [0.0; 4];
+        for (k, o) in out.iter_mut().enumerate() {
+            let mut term = 1.0 / factorial(k);
+            let mut sum = 0.0;
+            for j in 0..20 {
+                sum += term;
+                term *= z / (j + k + 1) as f64;
+            }
+            *o = sum;
+        }
+        out
+    } else {
+        let p0 = z.exp();
+        let p1 = (p0 - 1.0) / z;
+        let p2 = (p1 - 1.0) / z;
+        let p3 = (p2 - 0.5) / z;
+        [p0, p1, p2, p3]
+    }
+}
+
+fn factorial(k: usize) -> f64 {
+    (1..=k).map(|i| i as f64).product()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn phi_matches_the_closed_forms_on_both_sides_of_the_switch() {
+        for z in [-1e-8f64, -0.3, -0.999, -1.0, -2.5, -12.0, -400.0] {
+            let [p0, p1, p2, p3] = phi(z);
+            assert!((p0 - z.exp()).abs() <= 1e-15, "{z}");
+            // φ1 = (e^z − 1)/z by expm1, accurate for every z.
+            let exact1 = z.exp_m1() / z;
+            assert!((p1 - exact1).abs() <= 1e-15 * exact1, "{z}: {p1} {exact1}");
+            // Limits: φ_k(0) = 1/k!; φ_k(z) ~ −1/((k−1)!·z) as z → −∞.
+            if z.abs() < 1e-6 {
+                assert!((p2 - 0.5).abs() < 1e-8 && (p3 - 1.0 / 6.0).abs() < 1e-8);
+            }
+            if z < -100.0 {
+                assert!((p2 + 1.0 / z).abs() < 1e-4 && (p3 + 0.5 / z).abs() < 1e-4);
+            }
+        }
+        // Continuity at |z| = 1, where the evaluation switches.
+        let (a, b) = (phi(-1.0 + 1e-12), phi(-1.0 - 1e-12));
+        for k in 0..4 {
+            assert!((a[k] - b[k]).abs() < 1e-11, "φ{k}");
+        }
+    }
+
+    #[test]
+    fn propagation_is_the_exact_solution_under_a_quadratic_forcing() {
+        // ẏ = −r y + w0 + w1 t + w2 t²/2, y(0) = y0: the particular solution is a quadratic,
+        // y_p = a + b t + c t², with c = w2/(2r), b = (w1 − 2c)/r, a = (w0 − b)/r.
+        let (r, y0, tau) = (2000.0f64, 0.3, 2e-3);
+        let (w0, w1, w2) = (5.0, -700.0, 4e5);
+        let c = w2 / (2.0 * r);
+        let b = (w1 - 2.0 * c) / r;
+        let a = (w0 - b) / r;
+        let exact = a + b * tau + c * tau * tau + (y0 - a) * (-r * tau).exp();
+        // One coordinate q (rows 0, 1 = q, q̇) and x_d at 2, with J = 0 and c0 = 0: δ = −x_d.
+        let part = DecayingStates::new(
+            1,
+            vec![DecayingState {
+                index: 2,
+                rate: r,
+                elongation: vec![],
+                offset: 0.0,
+            }],
+        );
+        let p = part.propagator(tau);
+        let mut out = [9.0, 9.0, 9.0];
+        let w = |v: f64| [0.0, 0.0, v];
+        part.propagate(&p, &[0.0, 0.0, -y0], &[&w(w0), &w(w1), &w(w2)], &mut out);
+        assert_eq!(out[..2], [9.0, 9.0], "only the decaying states are written");
+        let out = [-out[2]];
+        assert!((out[0] - exact).abs() < 1e-14, "{} {exact}", out[0]);
+    }
+}
