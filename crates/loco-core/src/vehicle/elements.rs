@@ -147,6 +147,9 @@ pub struct Bushing {
     pub damping: [f64; 3],
     /// Rotational stiffness about x, y, z for the relative rotation of B to A, N·m/rad.
     pub rotational_stiffness: [f64; 3],
+    /// Rotational damping about x, y, z for the relative angular velocity of B to A,
+    /// N·m·s/rad (0 but for the gearbox bearings' tilt).
+    pub rotational_damping: [f64; 3],
     /// Which rotations of A and B turn the element's axes (1) and which do not (0): a
     /// wheelset's or hollow shaft's pitch coordinate is its spin, which turns no axle box.
     pub turns_with: [[f64; 3]; 2],
@@ -160,13 +163,24 @@ impl Bushing {
     pub fn apply(&self, s: &BodyStates, wrenches: &mut Wrenches) -> [f64; 3] {
         let (d, v, arms) = self.at.motion_and_arms(s);
         let (ua, ub) = (&s.position[self.at.body_a], &s.position[self.at.body_b]);
+        let (wa, wb) = (&s.velocity[self.at.body_a], &s.velocity[self.at.body_b]);
+        // Elastic and viscous moment about axis k from the relative rotation and its rate.
+        let moment = |k: usize| {
+            -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k])
+                - self.rotational_damping[k] * (wb[3 + k] - wa[3 + k])
+        };
         if !self.on_load_path {
             let f: [f64; 3] =
                 std::array::from_fn(|k| -self.stiffness[k] * d[k] - self.damping[k] * v[k]);
             self.at.apply_pair_at(&arms, f, wrenches);
-            if self.rotational_stiffness.iter().any(|k| *k != 0.0) {
+            if self
+                .rotational_stiffness
+                .iter()
+                .chain(&self.rotational_damping)
+                .any(|k| *k != 0.0)
+            {
                 for k in 0..3 {
-                    let m = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
+                    let m = moment(k);
                     wrenches[self.at.body_b][3 + k] += m;
                     wrenches[self.at.body_a][3 + k] -= m;
                 }
@@ -184,9 +198,9 @@ impl Bushing {
         self.at.apply_pair_at(&arms, f, wrenches);
         let couple = cross(d, f);
         for k in 0..3 {
-            let elastic = -self.rotational_stiffness[k] * (ub[3 + k] - ua[3 + k]);
-            wrenches[self.at.body_b][3 + k] += elastic - 0.5 * couple[k];
-            wrenches[self.at.body_a][3 + k] -= elastic + 0.5 * couple[k];
+            let m = moment(k);
+            wrenches[self.at.body_b][3 + k] += m - 0.5 * couple[k];
+            wrenches[self.at.body_a][3 + k] -= m + 0.5 * couple[k];
         }
         f
     }

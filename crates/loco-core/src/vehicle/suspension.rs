@@ -116,6 +116,7 @@ fn bushing(name: String, at: Attachment, stiffness: [f64; 3]) -> Bushing {
         stiffness,
         damping: [0.0; 3],
         rotational_stiffness: [0.0; 3],
+        rotational_damping: [0.0; 3],
     }
 }
 
@@ -340,6 +341,7 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
     let bearing_semi = r.non_neg("hollow_shaft.bearing_semi_spacing")?;
     let bearing_radial = r.pos("hollow_shaft.bearing_radial_stiffness")?;
     let bearing_axial = r.pos("hollow_shaft.bearing_axial_stiffness")?;
+    let bearing_damping_time = r.non_neg("hollow_shaft.bearing_damping_time")?;
     let coupling_radial = r.pos("hollow_shaft.coupling_radial_stiffness")?;
     let coupling_lateral = r.pos("hollow_shaft.coupling_lateral_stiffness")?;
     let coupling_angular = r.pos("hollow_shaft.coupling_angular_stiffness")?;
@@ -383,8 +385,13 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
             attach(bodies, m, hs, axle),
             [radial, bearings * bearing_axial, radial],
         );
-        bearing.damping = [coupling_c_radial, 0.0, coupling_c_radial];
+        // Rolling bearings damp in proportion to their stiffness, c = β·k; radially the soft
+        // coupling in series governs, with its own damping.
+        let axial_damping = bearing_damping_time * bearings * bearing_axial;
+        bearing.damping = [coupling_c_radial, axial_damping, coupling_c_radial];
         bearing.rotational_stiffness = [bearing_tilt, 0.0, bearing_tilt];
+        let tilt_damping = bearing_damping_time * bearing_tilt;
+        bearing.rotational_damping = [tilt_damping, 0.0, tilt_damping];
         bearing.on_load_path = true;
         s.bushings.push(bearing);
         let mut coupling = bushing(

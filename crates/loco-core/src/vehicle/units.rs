@@ -63,6 +63,7 @@ const UNITS: &[(&str, &[(&str, f64)])] = &[
     ),
     ("m/s²", &[("m/s²", 1.0), ("m/s^2", 1.0)]),
     ("1", &[("1", 1.0), ("-", 1.0)]),
+    ("s", &[("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("us", 1e-6)]),
 ];
 
 /// The spellings accepted for a parameter whose SI unit is `si_unit` (empty for an unknown one).
