@@ -65,8 +65,8 @@ def test_numpy_and_integral_values_are_accepted() -> None:
 @pytest.mark.parametrize(
     ("settings", "field", "reason"),
     [
-        # SPEC-scale runs are 9 000 steps; 1e-3 m/s would be a million steps per metre.
-        ({"speed": 1e-3}, "speed", "1000000 integration steps per metre"),
+        # SPEC-scale runs are 4 500 steps; 1e-3 m/s would be half a million steps per metre.
+        ({"speed": 1e-3}, "speed", "500000 integration steps per metre"),
         ({"speed": 0.5}, "speed", "below the lowest speed 1 m/s"),
         ({"fastsim_grid": (10_000, 10_000)}, "fastsim_grid", "nx·ny <= 2500"),
         ({"fastsim_grid": (0, 10)}, "fastsim_grid", "must be in [1, "),

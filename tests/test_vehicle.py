@@ -64,10 +64,10 @@ def test_short_run_on_perfect_track_returns_channels() -> None:
     assert math.isnan(result.metrics["wy_max"])
     ds = result.to_xarray()
     assert "frame1_ay_wheelset1" in ds
-    # Run statistics: 0.8 s at the 1 ms step, four RK4 stages a step plus the static search.
+    # Run statistics: 0.8 s at the default 2 ms step, four stages a step plus the static search.
     stats = result.statistics
     assert list(stats) == loco.simulation.RUN_STATISTICS
-    assert stats["steps"] == 800
+    assert stats["steps"] == 400
     assert stats["newton_iterations"] >= 1
     assert stats["rhs_evaluations"] > 4 * stats["steps"] + 90 * stats["newton_iterations"]
     assert stats["wall_time"] > 0.0

@@ -121,12 +121,12 @@ class Scenario:
     (clothoid, linear cant run-off) may give ``cant_run_off_m``; s = 0 is where the leading
     wheelset starts; irregularities come on top. ``integrator`` is the time integration scheme
     (:data:`INTEGRATORS`) with its fixed ``step`` (s; without it the scheme's own,
-    :data:`INTEGRATOR_STEPS`): ``"rk4"`` (default), the classical RK4, the reference at 1 ms;
-    or ``"etdrk4"``, RK4's four stages with the gearbox bearings' stiff springs solved exactly,
-    at 2 ms: 1.8 times faster, within 0.5 % of the reference in W_y, A_yb and the A_yc PSD peak
-    over the study's parameter box on 500 m runs (a step beyond 1 ms is cut to 1 ms while a
+    :data:`INTEGRATOR_STEPS`): ``"etdrk4"`` (default), RK4's four stages with the gearbox
+    bearings' stiff springs and the linear dampers' series springs solved exactly, at 2 ms:
+    1.6–1.8 times faster than the reference, within 0.5 % of it in W_y, A_yb and the A_yc PSD
+    peak over the study's parameter box on 500 m runs (a step beyond 1 ms is cut to 1 ms while a
     wheelset is more than 3 mm off centre, and not taken at all where it would reduce a damper
-    law). ``scenario``, ``perfect_track`` and
+    law it cannot solve exactly); or ``"rk4"``, the classical RK4, the reference at 1 ms. ``scenario``, ``perfect_track`` and
     ``creep_table`` were replaced (``name="S_high"``, ``track="perfect"``, ``creep="table"``):
     refused with :class:`loco.ParameterError` saying so.
     """

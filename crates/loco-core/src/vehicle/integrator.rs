@@ -1,40 +1,44 @@
-//! Fixed-step explicit Runge–Kutta integration of the vehicle's first-order equations.
+//! Fixed-step Runge–Kutta integration of the vehicle's first-order equations: the classical RK4
+//! (the reference) and the exponential ETDRK4 (the default).
 //!
-//! The classical fourth-order Runge–Kutta method with a fixed step: the wheel-rail contact and the
-//! FASTSIM creep forces are smooth between steps but expensive, an adaptive method would spend its
-//! savings on step rejections at flange contact, and a fixed step gives output at a fixed rate and
-//! results that are bit-identical run to run. The default step, 1 ms, comes from the convergence
-//! study `scripts/convergence_study.py`: over the nominal vehicle and Latin-hypercube samples of the
-//! six SPEC §6 parameters, halving it changes W_y (S_low) by at most 0.002 % and A_yb (S_high) by at
-//! most 0.013 %, with no instability; the stiffest modes (hollow-shaft tilt in its gearbox bearings,
-//! ≈ 320 Hz; wheelset on the Hertz contact) stay inside RK4's stability region at that step. A
-//! Maxwell damper whose internal pole k/c is too fast for the step (SPEC §6 reaches 5·10³ 1/s) is
-//! integrated as the pure damper, its series spring rigid, with the error bound of
-//! [`crate::dampers`]; `tests/parameter_box.rs` runs every damper corner of the box and
-//! checks the step convergence on every CI run.
+//! A fixed step: the wheel-rail contact and the FASTSIM creep forces are smooth between steps but
+//! expensive, an adaptive method would spend its savings on step rejections at flange contact, and
+//! a fixed step gives output at a fixed rate and results that are bit-identical run to run.
+//!
+//! **The reference**, [`Integrator::Rk4`] at 1 ms ([`super::run::REFERENCE_STEP`]), from the
+//! convergence study `scripts/convergence_study.py`: over the nominal vehicle and Latin-hypercube
+//! samples of the six SPEC §6 parameters, halving it changes W_y (S_low) by at most 0.001 % and
+//! A_yb (S_high) by at most 0.06 %; the stiffest modes (hollow-shaft tilt in its gearbox
+//! bearings, ≈ 320 Hz; wheelset on the Hertz contact) stay inside RK4's stability region at that
+//! step. A Maxwell damper whose internal pole k/c is too fast for the step (SPEC §6 reaches
+//! 5·10³ 1/s) is integrated as the pure damper, its series spring rigid, with the error bound of
+//! [`crate::dampers`]; `tests/parameter_box.rs` runs every damper corner of the box and checks
+//! the step convergence on every CI run.
+//!
+//! **The default**, [`Integrator::ExponentialRk4`] at 2 ms ([`super::exponential_rk4`]), takes
+//! RK4's stages for everything but the gearbox bearings' springs and the linear Maxwell dampers'
+//! series springs, which it solves exactly ([`super::stiff_linear_part`],
+//! [`super::decaying_states`]), so that a 2 ms step is stable with the damper laws of the 1 ms
+//! reference: `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
+//! the reference over the SPEC §6 box on the study's 500 m runs, and halving its step changes
+//! W_y by at most 0.011 % and A_yb by at most 0.2 % (the convergence study). Steps beyond 3 mm of
+//! wheelset excursion are cut to 1 ms ([`super::run::FINE_STEP_EXCURSION`]). Solved exactly, the
+//! bearings' modes keep only their physical damping (`hollow_shaft.bearing_damping_time`), which
+//! brings a steady curve to rest (`tests/curving.rs`); RK4 at 1 ms damps them numerically as well.
+//!
 //! Discrete states (the FSD valve) are advanced once per accepted step through
 //! [`OdeSystem::after_step`].
-//!
-//! The other scheme, [`Integrator::ExponentialRk4`] ([`super::exponential_rk4`]), takes RK4's
-//! stages for everything but the gearbox bearings and the linear Maxwell dampers' series springs,
-//! which it solves exactly, so that a 2 ms step is stable with the damper laws of the 1 ms
-//! reference ([`super::decaying_states`]): `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
-//! RK4 at 1 ms (the reference) over the SPEC §6 box on the study's 500 m runs. It is an option,
-//! not the default: solved exactly, the bearings' tilting modes (≈ 320 Hz, no damping in the
-//! parameter file) ring on where RK4 at 1 ms damps them numerically (|R| = 0.75 per step), so a
-//! steady curve does not come to rest (`tests/curving.rs`).
 
 /// The time integration scheme of a run, both with a fixed step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Integrator {
-    /// The classical RK4 ([`Rk4Workspace`]): the default and the reference, at
-    /// [`super::run::REFERENCE_STEP`].
-    #[default]
+    /// The classical RK4 ([`Rk4Workspace`]): the reference, at [`super::run::REFERENCE_STEP`].
     Rk4,
-    /// ETDRK4 with the gearbox bearings' stiff springs solved exactly
-    /// ([`super::exponential_rk4`]), at [`super::run::EXPONENTIAL_STEP`]: 1.7–1.8× faster than the
-    /// reference and within 0.5 % of it in W_y, A_yb and the A_yc PSD peak over the SPEC §6 box
-    /// on 500 m runs (`tests/exponential_step.rs`).
+    /// ETDRK4 with the gearbox bearings' stiff springs and the linear dampers' series springs
+    /// solved exactly ([`super::exponential_rk4`]), at [`super::run::EXPONENTIAL_STEP`]: the
+    /// default, 1.6–1.8× faster than the reference and within 0.5 % of it in W_y, A_yb and the
+    /// A_yc PSD peak over the SPEC §6 box on 500 m runs (`tests/exponential_step.rs`).
+    #[default]
     ExponentialRk4,
 }
 

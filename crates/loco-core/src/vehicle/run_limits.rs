@@ -168,10 +168,11 @@ mod tests {
 
     #[test]
     fn a_crawling_speed_is_refused_with_its_cost() {
-        let s = Scenario {
+        let mut s = Scenario {
             speed: 1e-3,
             ..study()
         };
+        s.run.step = 1e-3;
         assert_eq!(refused_field(&s), "speed");
         let msg = s.validate().unwrap_err().to_string();
         // 1 / (1e-3 m/s · 1e-3 s) = 1e6 steps per metre, spelled out in the reason.

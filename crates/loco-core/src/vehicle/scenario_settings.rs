@@ -62,8 +62,9 @@ pub struct ScenarioSettings {
     pub fsd_trigger: Option<String>,
     /// Integration step, s; without it the scheme's own ([`Integrator::default_step`]).
     pub step: Option<f64>,
-    /// Integration scheme: `rk4` (default, the classical RK4, the reference at 1 ms) or `etdrk4`
-    /// (the gearbox bearings solved exactly, at 2 ms); see [`Integrator`].
+    /// Integration scheme: `etdrk4` (default: the gearbox bearings and the linear dampers'
+    /// series springs solved exactly, at 2 ms) or `rk4` (the classical RK4, the reference at
+    /// 1 ms); see [`Integrator`].
     pub integrator: Option<String>,
     /// Output sampling rate, Hz.
     pub output_rate: Option<f64>,
