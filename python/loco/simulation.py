@@ -126,9 +126,9 @@ class Scenario:
     1.6–1.8 times faster than the reference, within 0.5 % of it in W_y, A_yb and the A_yc PSD
     peak over the study's parameter box on 500 m runs (a step beyond 1 ms is cut to 1 ms while a
     wheelset is more than 3 mm off centre, and not taken at all where it would reduce a damper
-    law it cannot solve exactly); or ``"rk4"``, the classical RK4, the reference at 1 ms. ``scenario``, ``perfect_track`` and
-    ``creep_table`` were replaced (``name="S_high"``, ``track="perfect"``, ``creep="table"``):
-    refused with :class:`loco.ParameterError` saying so.
+    law it cannot solve exactly); or ``"rk4"``, the classical RK4, the reference at 1 ms.
+    ``scenario``, ``perfect_track`` and ``creep_table`` were replaced (``name="S_high"``,
+    ``track="perfect"``, ``creep="table"``): refused with :class:`loco.ParameterError` saying so.
     """
 
     name: str | None = _Setting()  # type: ignore[assignment]
