@@ -116,3 +116,24 @@ def test_sqrt_target_fits_the_square_root() -> None:
 def test_gp_kernels() -> None:
     with pytest.raises(ValueError, match="kernel"):
         GaussianProcessSurrogate(BOUNDS, kernel="cubic")
+
+
+def test_objectives_in_parallel_processes_give_the_serial_result() -> None:
+    from loco.studies.parameters import bounds_si
+    from loco.studies.surrogate_validation import select_surrogates
+
+    bounds = np.asarray(bounds_si())
+    u = qmc.LatinHypercube(d=6, seed=3).random(60)
+    x = bounds[:, 0] + u * (bounds[:, 1] - bounds[:, 0])
+    y = np.column_stack([smooth(u), smooth(u[:, ::-1])])
+    y[5, 1] = np.nan  # a failed run of one objective is left out of that one only
+    kwargs = {"n_splits": 3, "candidates": ("rbf10", "gp"), "nested": True}
+    serial = select_surrogates(x, y, n_jobs=1, **kwargs)  # type: ignore[arg-type]
+    parallel = select_surrogates(x, y, n_jobs=2, **kwargs)  # type: ignore[arg-type]
+    for s, p in zip(serial, parallel, strict=True):
+        assert s.chosen == p.chosen
+        for kind in kwargs["candidates"]:  # type: ignore[attr-defined]
+            assert np.array_equal(s.scores[kind].r2_folds, p.scores[kind].r2_folds)
+            assert np.array_equal(s.scores[kind].predictions, p.scores[kind].predictions)
+        assert np.array_equal(s.model.predict(x), p.model.predict(x))
+    assert len(serial[1].scores["gp"].predictions) == 59

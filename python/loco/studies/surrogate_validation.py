@@ -13,6 +13,7 @@ the objective itself.
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -20,6 +21,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
+from joblib import Parallel, delayed
 
 import loco
 from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray, load_monte_carlo
@@ -58,17 +60,22 @@ def select_surrogates(
     log_target: bool = LOG_TARGET,
     candidates: Sequence[str] = CANDIDATES,
     nested: bool = False,
+    n_jobs: int | None = None,
 ) -> list[Selection]:
     """For each objective (column of ``y``), on the samples where it is finite: every candidate
     of :mod:`loco.studies.surrogate_selection` (or of ``candidates``) scored on the same
     ``n_splits`` folds, the best refitted on all of them (``selection.model``, the surrogate
     Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``); with ``nested``
-    the nested cross-validation of the choice too (``selection.nested``)."""
-    out = []
+    the nested cross-validation of the choice too (``selection.nested``).
+
+    The objectives are independent and run in ``n_jobs`` processes (joblib's loky; default one
+    per objective, at most one per core): every fit is seeded and single-threaded, so the
+    result is the same for any ``n_jobs``."""
+    tasks = []
     for j in range(y.shape[1]):
         ok = np.isfinite(y[:, j])
-        out.append(
-            select_surrogate(
+        tasks.append(
+            delayed(select_surrogate)(
                 x[ok],
                 y[ok, j],
                 bounds_si(),
@@ -79,7 +86,10 @@ def select_surrogates(
                 nested=nested,
             )
         )
-    return out
+    jobs = min(len(tasks), os.cpu_count() or 1) if n_jobs is None else n_jobs
+    if jobs <= 1:
+        return [function(*args, **kwargs) for function, args, kwargs in tasks]
+    return list(Parallel(n_jobs=jobs, backend="loky")(tasks))
 
 
 def spec_scores(
