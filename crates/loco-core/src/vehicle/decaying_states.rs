@@ -83,15 +83,24 @@ impl DecayingStates {
         &self.states
     }
 
-    /// Writes `N_δ = J q̇ − ẋ_d + r·δ` into each state's row of `k = f(y)`; to be called before
-    /// anything else changes the coordinate rows of `k` (`q̇` there).
+    /// Writes the deflections `δ` of the state vector (or stage) `y` into `out` (one per state).
     #[inline]
-    pub fn remove_linear(&self, y: &[f64], k: &mut [f64]) {
+    pub fn deflections(&self, y: &[f64], out: &mut [f64]) {
+        for (o, s) in out.iter_mut().zip(&self.states) {
+            *o = s.deflection(y);
+        }
+    }
+
+    /// Writes `N_δ = J q̇ − ẋ_d + r·δ` into each state's row of `k = f(y)`, with `deflections`
+    /// those of `y` ([`Self::deflections`], or what [`Self::propagate`] gave for the stage); to
+    /// be called before anything else changes the coordinate rows of `k` (`q̇` there).
+    #[inline]
+    pub fn remove_linear(&self, deflections: &[f64], k: &mut [f64]) {
         let (rates, others) = k.split_at_mut(2 * self.n_dof);
-        for s in &self.states {
+        for (s, delta) in self.states.iter().zip(deflections) {
             let elongation_rate: f64 = s.elongation.iter().map(|&(j, c)| c * rates[j]).sum();
             let i = s.index - 2 * self.n_dof;
-            others[i] = elongation_rate - others[i] + s.rate * s.deflection(y);
+            others[i] = elongation_rate - others[i] + s.rate * delta;
         }
     }
 
@@ -109,18 +118,28 @@ impl DecayingStates {
         }
     }
 
-    /// Writes each `x_d` into `out`, whose coordinates already hold the stage's: `δ` solves
-    /// `δ̇ = −r δ + Σ w_k t^k/k!` exactly from `y0` over the propagator's time (one to three
-    /// forcing vectors, combinations of [`Self::remove_linear`]'s rows).
+    /// Writes each `x_d` into `out`, whose coordinates already hold the stage's, and its `δ`
+    /// into `deflections`: `δ` solves `δ̇ = −r δ + Σ w_k t^k/k!` exactly from `start` (the
+    /// deflections at the start state) over the propagator's time (one to three forcing
+    /// vectors, combinations of [`Self::remove_linear`]'s rows).
     #[inline]
-    pub fn propagate(&self, p: &DecayPropagator, y0: &[f64], w: &[&[f64]], out: &mut [f64]) {
-        for (s, c) in self.states.iter().zip(&p.coefficients) {
-            let mut deflection = c[0] * s.deflection(y0);
+    pub fn propagate(
+        &self,
+        p: &DecayPropagator,
+        start: &[f64],
+        w: &[&[f64]],
+        out: &mut [f64],
+        deflections: &mut [f64],
+    ) {
+        let states = self.states.iter().zip(&p.coefficients);
+        for (((s, c), &delta0), delta) in states.zip(start).zip(deflections) {
+            let mut d = c[0] * delta0;
             for (k, wk) in w.iter().enumerate() {
-                deflection += c[k + 1] * wk[s.index];
+                d += c[k + 1] * wk[s.index];
             }
+            *delta = d;
             out[s.index] = 0.0;
-            out[s.index] = s.deflection(out) - deflection;
+            out[s.index] = s.deflection(out) - d;
         }
     }
 }
@@ -204,8 +223,13 @@ mod tests {
         let p = part.propagator(tau);
         let mut out = [9.0, 9.0, 9.0];
         let w = |v: f64| [0.0, 0.0, v];
-        part.propagate(&p, &[0.0, 0.0, -y0], &[&w(w0), &w(w1), &w(w2)], &mut out);
+        let mut start = [0.0];
+        part.deflections(&[0.0, 0.0, -y0], &mut start);
+        assert_eq!(start, [y0]);
+        let mut delta = [0.0];
+        part.propagate(&p, &start, &[&w(w0), &w(w1), &w(w2)], &mut out, &mut delta);
         assert_eq!(out[..2], [9.0, 9.0], "only the decaying states are written");
+        assert_eq!(delta, [-out[2]]);
         let out = [-out[2]];
         assert!((out[0] - exact).abs() < 1e-14, "{} {exact}", out[0]);
     }

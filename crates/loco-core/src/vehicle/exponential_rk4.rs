@@ -41,6 +41,8 @@ pub struct ExponentialRk4 {
     /// Deflection inputs and outputs of the propagators (5r and 2r).
     input: Vec<f64>,
     output: Vec<f64>,
+    /// The decaying states' deflections at the step's start, the three stages and the end.
+    deltas: [Vec<f64>; 5],
 }
 
 impl ExponentialRk4 {
@@ -53,7 +55,9 @@ impl ExponentialRk4 {
         dt: f64,
     ) -> Self {
         let r = part.len();
+        let m = decaying.len();
         Self {
+            deltas: std::array::from_fn(|_| vec![0.0; m]),
             half: part.propagator(0.5 * dt),
             full: part.propagator(dt),
             half_decay: decaying.propagator(0.5 * dt),
@@ -98,6 +102,7 @@ impl ExponentialRk4 {
             w: [w0, w1, w2],
             input,
             output,
+            deltas: [d0, da, db, dc, d_end],
             ..
         } = self;
         let linear = Linear {
@@ -107,28 +112,39 @@ impl ExponentialRk4 {
             full: (full, full_decay),
         };
         let mut scratch = Scratch { input, output };
+        // The decaying states' deflections go from stage to stage (each stage's from its
+        // propagation), computed from the state only at the step's start.
+        linear.decaying.deflections(y, d0);
         system.derivatives(t, y, k1);
         observe(system, y, k1);
-        linear.remove(y, k1, scratch.output);
-        linear.propagate(linear.half, y, &[k1], &mut scratch, a);
+        linear.remove(y, d0, k1, scratch.output);
+        linear.propagate(linear.half, y, d0, &[k1], &mut scratch, a, da);
         system.derivatives(t + 0.5 * h, a, k2);
-        linear.remove(a, k2, scratch.output);
-        linear.propagate(linear.half, y, &[k2], &mut scratch, stage);
+        linear.remove(a, da, k2, scratch.output);
+        linear.propagate(linear.half, y, d0, &[k2], &mut scratch, stage, db);
         system.derivatives(t + 0.5 * h, stage, k3);
-        linear.remove(stage, k3, scratch.output);
+        linear.remove(stage, db, k3, scratch.output);
         for ((w, x3), x1) in w0.iter_mut().zip(k3.iter()).zip(k1.iter()) {
             *w = 2.0 * x3 - x1;
         }
-        linear.propagate(linear.half, a, &[w0], &mut scratch, stage);
+        linear.propagate(linear.half, a, da, &[w0], &mut scratch, stage, dc);
         system.derivatives(t_end, stage, k4);
-        linear.remove(stage, k4, scratch.output);
+        linear.remove(stage, dc, k4, scratch.output);
         // N along the step as the quadratic w0 + w1·t + w2·t²/2 (the φ1, φ2, φ3 weights).
         for i in 0..y.len() {
             let (n1, n23, n4) = (k1[i], k2[i] + k3[i], k4[i]);
             w1[i] = (-3.0 * n1 + 2.0 * n23 - n4) / h;
             w2[i] = 4.0 * (n1 - n23 + n4) / (h * h);
         }
-        linear.propagate(linear.full, y, &[k1, w1, w2], &mut scratch, stage);
+        linear.propagate(
+            linear.full,
+            y,
+            d0,
+            &[k1, w1, w2],
+            &mut scratch,
+            stage,
+            d_end,
+        );
         y.copy_from_slice(stage);
         system.after_step(t_end, h, y);
     }
@@ -144,24 +160,28 @@ struct Linear<'a> {
 }
 
 impl Linear<'_> {
-    /// `k = f(y)` into `N(y) = f(y) − L y`.
-    fn remove(&self, y: &[f64], k: &mut [f64], z: &mut [f64]) {
+    /// `k = f(y)` into `N(y) = f(y) − L y`; `deflections` are the decaying states' at `y`.
+    fn remove(&self, y: &[f64], deflections: &[f64], k: &mut [f64], z: &mut [f64]) {
         // The decaying states read the coordinate rows (q̇) before the springs change them.
-        self.decaying.remove_linear(y, k);
+        self.decaying.remove_linear(deflections, k);
         remove_linear(self.part, y, k, z);
     }
 
-    /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from `y0`.
+    /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from `y0`
+    /// (whose decaying states' deflections are `start`), and the deflections at its end.
+    #[allow(clippy::too_many_arguments)]
     fn propagate(
         &self,
         (springs, decay): (&Propagator, &DecayPropagator),
         y0: &[f64],
+        start: &[f64],
         w: &[&[f64]],
         scratch: &mut Scratch,
         out: &mut [f64],
+        deflections: &mut [f64],
     ) {
         propagate(self.part, springs, y0, w, scratch, out);
-        self.decaying.propagate(decay, y0, w, out);
+        self.decaying.propagate(decay, start, w, out, deflections);
     }
 }
 
