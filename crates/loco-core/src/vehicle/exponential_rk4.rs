@@ -226,12 +226,28 @@ fn propagate(
     propagator.apply(input, scratch.output);
     // τ^(k+1)/(k+1)! for k = 0..2.
     let c = [tau, tau * tau / 2.0, tau * tau * tau / 6.0];
-    for (i, o) in out.iter_mut().enumerate() {
-        let mut s = y0[i];
-        for (k, wk) in w.iter().enumerate() {
-            s += c[k] * wk[i];
+    // The stages' one forcing and the step's three, as straight loops over the states (the
+    // same sums in the same order as the general case).
+    match *w {
+        [w0] => {
+            for ((o, &y), &a) in out.iter_mut().zip(y0).zip(w0) {
+                *o = y + c[0] * a;
+            }
         }
-        *o = s;
+        [w0, w1, w2] => {
+            for ((((o, &y), &a), &b), &d) in out.iter_mut().zip(y0).zip(w0).zip(w1).zip(w2) {
+                *o = y + c[0] * a + c[1] * b + c[2] * d;
+            }
+        }
+        _ => {
+            for (i, o) in out.iter_mut().enumerate() {
+                let mut s = y0[i];
+                for (k, wk) in w.iter().enumerate() {
+                    s += c[k] * wk[i];
+                }
+                *o = s;
+            }
+        }
     }
     let output = &*scratch.output;
     part.add_response(&output[..r], -1.0, &mut out[n..2 * n]);
