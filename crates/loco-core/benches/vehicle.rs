@@ -7,8 +7,9 @@
 //! on a curve of the curving study (R = 3000 m, 60 mm cant) with both schemes, and one evaluation
 //! of its right-hand side.
 
-use criterion::{criterion_group, criterion_main, Criterion};
-use loco_core::track::{CurveDirection, DesignSection};
+use criterion::measurement::WallTime;
+use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion};
+use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::parameters::ParameterSet;
@@ -19,8 +20,31 @@ use loco_core::vehicle::scenario::{
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::wheel_rail::WheelRail;
 use std::hint::black_box;
 use std::sync::Arc;
+
+/// One timed `simulate_prepared` of `scenario` on prepared contact and track.
+fn bench_run(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    name: &str,
+    structure: &Arc<VehicleStructure>,
+    (contact, track): (&Arc<WheelRail>, &Arc<TrackIrregularity>),
+    scenario: &Scenario,
+) {
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            simulate_prepared(
+                structure.clone(),
+                contact.clone(),
+                track.clone(),
+                black_box(scenario),
+                None,
+            )
+            .unwrap()
+        })
+    });
+}
 
 fn bench_vehicle(c: &mut Criterion) {
     let mut scenario = Scenario::study("S_high", 200.0 / 3.6, 500.0, 1).unwrap();
@@ -29,148 +53,99 @@ fn bench_vehicle(c: &mut Criterion) {
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
     let track = Arc::new(build_track(&scenario, &structure).unwrap());
+    // The same run with the exponential scheme at its 2 ms step: the default.
+    let exponential = RunSettings {
+        integrator: Integrator::ExponentialRk4,
+        step: EXPONENTIAL_STEP,
+        ..scenario.run
+    };
+    let with = |base: &Scenario, run: RunSettings| Scenario {
+        run,
+        ..base.clone()
+    };
 
     let mut group = c.benchmark_group("vehicle");
     group.sample_size(10);
-    group.bench_function("run_500m_200kmh", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                wheel_rail.clone(),
-                track.clone(),
-                black_box(&scenario),
-                None,
-            )
-            .unwrap()
-        })
-    });
-    // The same run with the exponential scheme at its 2 ms step (FASTSIM): the default.
-    let exponential = Scenario {
-        run: RunSettings {
-            integrator: Integrator::ExponentialRk4,
-            step: EXPONENTIAL_STEP,
-            ..scenario.run
-        },
-        ..scenario.clone()
-    };
-    group.bench_function("run_500m_200kmh_etdrk4", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                wheel_rail.clone(),
-                track.clone(),
-                black_box(&exponential),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let straight = (&wheel_rail, &track);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh",
+        &structure,
+        straight,
+        &scenario,
+    );
+    let default = with(&scenario, exponential);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh_etdrk4",
+        &structure,
+        straight,
+        &default,
+    );
     let fastrip = Scenario {
         creep: CreepModel::Fastrip,
         ..scenario.clone()
     };
     let fastrip_contact = Arc::new(build_wheel_rail(&structure.parameters, &fastrip).unwrap());
-    group.bench_function("run_500m_200kmh_fastrip", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                fastrip_contact.clone(),
-                track.clone(),
-                black_box(&fastrip),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let case = (&fastrip_contact, &track);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh_fastrip",
+        &structure,
+        case,
+        &fastrip,
+    );
     let table = Scenario {
         creep: CreepModel::from_name("table").unwrap(),
         ..scenario.clone()
     };
     // The table is built once per batch, outside the timed run.
     let table_contact = Arc::new(build_wheel_rail(&structure.parameters, &table).unwrap());
-    group.bench_function("run_500m_200kmh_table", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                table_contact.clone(),
-                track.clone(),
-                black_box(&table),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let case = (&table_contact, &track);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh_table",
+        &structure,
+        case,
+        &table,
+    );
     // The table with the exponential scheme at its 2 ms step: both speed options together.
-    let table_exponential = Scenario {
-        run: exponential.run,
-        ..table.clone()
-    };
-    group.bench_function("run_500m_200kmh_table_etdrk4", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                table_contact.clone(),
-                track.clone(),
-                black_box(&table_exponential),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let table_exponential = with(&table, exponential);
+    let name = "run_500m_200kmh_table_etdrk4";
+    bench_run(&mut group, name, &structure, case, &table_exponential);
     let curved = Scenario {
         curve: DesignSection::reference_curve(0.1, CurveDirection::Left),
         ..scenario.clone()
     };
     let curved_contact = Arc::new(build_wheel_rail(&structure.parameters, &curved).unwrap());
     let curved_track = Arc::new(build_track(&curved, &structure).unwrap());
-    group.bench_function("run_500m_200kmh_curve", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                curved_contact.clone(),
-                curved_track.clone(),
-                black_box(&curved),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let case = (&curved_contact, &curved_track);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh_curve",
+        &structure,
+        case,
+        &curved,
+    );
     // A curve like the curving study's (R = 3000 m, 60 mm cant: about 97 mm of deficiency at
-    // 200 km/h, one contact patch per wheel as on straight track).
+    // 200 km/h, one contact patch per wheel as on straight track), with both schemes.
     let study_curve = Scenario {
         curve: DesignSection::study_curve(CurveDirection::Left),
         ..scenario.clone()
     };
     let study_contact = Arc::new(build_wheel_rail(&structure.parameters, &study_curve).unwrap());
     let study_track = Arc::new(build_track(&study_curve, &structure).unwrap());
-    group.bench_function("run_500m_200kmh_study_curve", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                study_contact.clone(),
-                study_track.clone(),
-                black_box(&study_curve),
-                None,
-            )
-            .unwrap()
-        })
-    });
-    let study_curve_exponential = Scenario {
-        run: exponential.run,
-        ..study_curve.clone()
-    };
-    group.bench_function("run_500m_200kmh_study_curve_etdrk4", |b| {
-        b.iter(|| {
-            simulate_prepared(
-                structure.clone(),
-                study_contact.clone(),
-                study_track.clone(),
-                black_box(&study_curve_exponential),
-                None,
-            )
-            .unwrap()
-        })
-    });
+    let case = (&study_contact, &study_track);
+    bench_run(
+        &mut group,
+        "run_500m_200kmh_study_curve",
+        &structure,
+        case,
+        &study_curve,
+    );
+    let study_curve_exponential = with(&study_curve, exponential);
+    let name = "run_500m_200kmh_study_curve_etdrk4";
+    bench_run(&mut group, name, &structure, case, &study_curve_exponential);
     group.finish();
 
     let mut system = VehicleSystem::new(

@@ -6,7 +6,7 @@
 
 use super::decaying_states::{DecayingState, DecayingStates};
 use super::elements::{BodyStates, Wrenches};
-use super::kinematics::{dot, point_motion, sub};
+use super::kinematics::dot;
 use super::layout::N_DOF;
 use super::structure::VehicleStructure;
 use super::suspension::{DamperPlacement, DamperRole};
@@ -78,24 +78,16 @@ impl DamperElement {
 /// elongation per coordinate of `structure` (the bodies' small-motion kinematics, as
 /// [`DamperElement::stroke`] forms it) and their static elongation.
 pub fn decaying_states(structure: &VehicleStructure, dampers: &[DamperElement]) -> DecayingStates {
-    let mut unit = [0.0; N_DOF];
     let states = dampers
         .iter()
         .filter_map(|d| {
             let rate = d.law.linear_state_rate_per_s()?;
-            let at = &d.placement.at;
-            let mut elongation = Vec::new();
-            for j in 0..N_DOF {
-                unit[j] = 1.0;
-                let ua = structure.bodies[at.body_a].map.apply(&unit);
-                let ub = structure.bodies[at.body_b].map.apply(&unit);
-                unit[j] = 0.0;
-                let relative = sub(point_motion(&ub, at.point_b), point_motion(&ua, at.point_a));
-                let value = dot(relative, d.placement.direction);
-                if value != 0.0 {
-                    elongation.push((j, value));
-                }
-            }
+            let elongation = structure
+                .relative_motion_per_coordinate(&d.placement.at)
+                .into_iter()
+                .map(|(j, m)| (j, dot([m[0], m[1], m[2]], d.placement.direction)))
+                .filter(|(_, value)| *value != 0.0)
+                .collect();
             Some(DecayingState {
                 index: d.state_offset,
                 rate,

@@ -118,16 +118,16 @@ impl ExponentialRk4 {
         system.derivatives(t, y, k1);
         observe(system, y, k1);
         linear.remove(y, d0, k1, scratch.output);
-        linear.propagate(linear.half, y, d0, &[k1], &mut scratch, a, da);
+        linear.propagate(linear.half, (y, d0), &[k1], &mut scratch, (a, da));
         system.derivatives(t + 0.5 * h, a, k2);
         linear.remove(a, da, k2, scratch.output);
-        linear.propagate(linear.half, y, d0, &[k2], &mut scratch, stage, db);
+        linear.propagate(linear.half, (y, d0), &[k2], &mut scratch, (stage, db));
         system.derivatives(t + 0.5 * h, stage, k3);
         linear.remove(stage, db, k3, scratch.output);
         for ((w, x3), x1) in w0.iter_mut().zip(k3.iter()).zip(k1.iter()) {
             *w = 2.0 * x3 - x1;
         }
-        linear.propagate(linear.half, a, da, &[w0], &mut scratch, stage, dc);
+        linear.propagate(linear.half, (a, da), &[w0], &mut scratch, (stage, dc));
         system.derivatives(t_end, stage, k4);
         linear.remove(stage, dc, k4, scratch.output);
         // N along the step as the quadratic w0 + w1·t + w2·t²/2 (the φ1, φ2, φ3 weights).
@@ -136,15 +136,8 @@ impl ExponentialRk4 {
             w1[i] = (-3.0 * n1 + 2.0 * n23 - n4) / h;
             w2[i] = 4.0 * (n1 - n23 + n4) / (h * h);
         }
-        linear.propagate(
-            linear.full,
-            y,
-            d0,
-            &[k1, w1, w2],
-            &mut scratch,
-            stage,
-            d_end,
-        );
+        let end = (&mut stage[..], &mut d_end[..]);
+        linear.propagate(linear.full, (y, d0), &[k1, w1, w2], &mut scratch, end);
         y.copy_from_slice(stage);
         system.after_step(t_end, h, y);
     }
@@ -167,18 +160,15 @@ impl Linear<'_> {
         remove_linear(self.part, y, k, z);
     }
 
-    /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from `y0`
-    /// (whose decaying states' deflections are `start`), and the deflections at its end.
-    #[allow(clippy::too_many_arguments)]
+    /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from the state
+    /// `y0` with its decaying states' deflections `start`, into `out` with its deflections.
     fn propagate(
         &self,
         (springs, decay): (&Propagator, &DecayPropagator),
-        y0: &[f64],
-        start: &[f64],
+        (y0, start): (&[f64], &[f64]),
         w: &[&[f64]],
         scratch: &mut Scratch,
-        out: &mut [f64],
-        deflections: &mut [f64],
+        (out, deflections): (&mut [f64], &mut [f64]),
     ) {
         propagate(self.part, springs, y0, w, scratch, out);
         self.decaying.propagate(decay, start, w, out, deflections);

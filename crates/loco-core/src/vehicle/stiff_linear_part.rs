@@ -12,7 +12,6 @@
 //! `z̈ = −J B z + J q̈_rest`, whose exact solution under a forcing polynomial in time is one
 //! matrix exponential per step length, computed once per run.
 
-use super::kinematics::point_motion;
 use super::layout::N_DOF;
 use super::mass::MassMatrix;
 use super::structure::VehicleStructure;
@@ -20,7 +19,7 @@ use super::suspension::GEARBOX_BEARINGS;
 use nalgebra::DMatrix;
 
 /// A sparse row or column: (coordinate index, coefficient).
-type Sparse = Vec<(usize, f64)>;
+pub type Sparse = Vec<(usize, f64)>;
 
 /// Linear springs on coordinate combinations `z = J q` with a constant mass matrix.
 #[derive(Debug, Clone)]
@@ -284,24 +283,16 @@ fn dot_sparse(row: &Sparse, column: &Sparse) -> f64 {
 pub fn gearbox_bearings(structure: &VehicleStructure) -> StiffLinearPart {
     let mut rows = Vec::new();
     let mut stiffness = Vec::new();
-    let mut unit = [0.0; N_DOF];
     for bearing in structure
         .suspension
         .bushings
         .iter()
         .filter(|b| b.name.starts_with(GEARBOX_BEARINGS))
     {
-        let (a, b) = (bearing.at.body_a, bearing.at.body_b);
         // Deflection of B against A per coordinate: axial displacement, relative roll and yaw.
         let mut deflection: [Sparse; 3] = Default::default();
-        for j in 0..N_DOF {
-            unit[j] = 1.0;
-            let ua = structure.bodies[a].map.apply(&unit);
-            let ub = structure.bodies[b].map.apply(&unit);
-            unit[j] = 0.0;
-            let d =
-                point_motion(&ub, bearing.at.point_b)[1] - point_motion(&ua, bearing.at.point_a)[1];
-            for (k, value) in [d, ub[3] - ua[3], ub[5] - ua[5]].into_iter().enumerate() {
+        for (j, motion) in structure.relative_motion_per_coordinate(&bearing.at) {
+            for (k, value) in [motion[1], motion[3], motion[5]].into_iter().enumerate() {
                 if value != 0.0 {
                     deflection[k].push((j, value));
                 }

@@ -21,7 +21,7 @@ use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, Equilibrium, StaticsSettings};
 use super::stiff_linear_part::gearbox_bearings;
 use super::suspects::with_suspects;
-use crate::dampers::MAX_RATE_STEP;
+use crate::dampers::{Damper, MAX_RATE_STEP};
 use crate::error::{LocoError, Result};
 use nalgebra::{DMatrix, DVector};
 
@@ -90,7 +90,9 @@ pub fn stable_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64)
 
 /// The system `build` makes for an RK4 step (s), in static equilibrium, at the step a time
 /// integration takes: built for the requested (longest) `step`, and, when its stiffest mode needs
-/// a shorter one ([`stable_step`]), built again for that step, whose dampers are made for it.
+/// a shorter one ([`stable_step`]), built again for that step, whose dampers are made for it;
+/// beyond the reference step, with the reference step's damper laws where the scheme carries
+/// them (`carries_laws`), else at the reference step.
 /// Returns the system, its equilibrium and the step. A step error names the suspects among
 /// the parameters allowed outside their range.
 pub fn in_equilibrium_at_stable_step(
@@ -102,27 +104,28 @@ pub fn in_equilibrium_at_stable_step(
     let equilibrium = static_equilibrium(&mut system, statics)?;
     let mut stable = stable_step(&system, &equilibrium, step)
         .map_err(|e| with_suspects(e, &system.structure.parameters))?;
-    // A step beyond the reference must not reduce a damper law the reference keeps (a Maxwell
-    // damper's series spring made rigid, an FSD's mass left out): the reduced laws are checked
-    // at the reference step, and a compliance slower than it matters. The exponential scheme
-    // takes the reference's laws where it carries them at the longer step (it solves the
-    // linear Maxwell states exactly); otherwise such a vehicle runs at the reference step.
-    let mut laws_step = stable;
+    // A step beyond the reference takes the damper laws of the reference step (the reduced
+    // laws, a Maxwell damper's series spring made rigid or an FSD's mass left out, are checked
+    // there, and a compliance slower than it matters) where the scheme carries them at that
+    // step: every pole fits RK4's stages, or the exponential scheme solves it exactly. Otherwise
+    // the vehicle runs at the reference step.
+    let mut reference = None;
     if stable > REFERENCE_STEP {
-        let reference = build(REFERENCE_STEP)?;
-        if damper_forms(&build(stable)?) != damper_forms(&reference) {
-            if carries_laws(&reference, stable) {
-                laws_step = REFERENCE_STEP;
-            } else {
-                stable = step / (step / REFERENCE_STEP).ceil();
-                laws_step = stable;
-            }
+        let at_reference = build(REFERENCE_STEP)?;
+        if carries_laws(&at_reference, stable) {
+            reference = Some(at_reference);
+        } else {
+            stable = step / (step / REFERENCE_STEP).ceil();
         }
     }
-    if stable == step && laws_step == step {
+    let same_laws = |other: &VehicleSystem| damper_laws(other) == damper_laws(&system);
+    if stable == step && reference.as_ref().is_none_or(same_laws) {
         return Ok((system, equilibrium, step));
     }
-    let mut system = build(laws_step)?;
+    let mut system = match reference {
+        Some(at_reference) => at_reference,
+        None => build(stable)?,
+    };
     let equilibrium = static_equilibrium(&mut system, statics)?;
     Ok((system, equilibrium, stable))
 }
@@ -139,9 +142,9 @@ fn carries_laws(system: &VehicleSystem, step: f64) -> bool {
     })
 }
 
-/// The number of internal states of each damper law: a reduced law has fewer.
-fn damper_forms(system: &VehicleSystem) -> Vec<usize> {
-    system.dampers.iter().map(|d| d.law.n_states()).collect()
+/// Each damper's law.
+fn damper_laws(system: &VehicleSystem) -> Vec<Damper> {
+    system.dampers.iter().map(|d| d.law).collect()
 }
 
 /// A start vector with no symmetry: the vehicle is symmetric left-right and nearly front-back,

@@ -3,7 +3,8 @@
 //! gyroscopic moments, springs, bushings, bump stops).
 
 use super::bodies::{build_bodies, Body, Layout};
-use super::elements::{BodyStates, Wrenches};
+use super::elements::{Attachment, BodyStates, Wrenches};
+use super::kinematics::{point_motion, sub};
 use super::layout::{N_BODIES, N_DOF};
 use super::mass::MassMatrix;
 use super::parameters::ParameterSet;
@@ -100,6 +101,34 @@ impl VehicleStructure {
         for stop in &self.suspension.bump_stops {
             stop.apply(states, wrenches);
         }
+    }
+
+    /// How each coordinate moves an attachment's two points against each other, for the linear
+    /// parts the exponential scheme solves: per coordinate `j` with any motion, the point on B
+    /// relative to the point on A (x, y, z in m) and B's rotation relative to A's (rad), per unit
+    /// of `q_j` (the bodies' small-motion kinematics, as the elements form them).
+    pub fn relative_motion_per_coordinate(&self, at: &Attachment) -> Vec<(usize, [f64; 6])> {
+        let mut unit = [0.0; N_DOF];
+        let mut out = Vec::new();
+        for j in 0..N_DOF {
+            unit[j] = 1.0;
+            let ua = self.bodies[at.body_a].map.apply(&unit);
+            let ub = self.bodies[at.body_b].map.apply(&unit);
+            unit[j] = 0.0;
+            let d = sub(point_motion(&ub, at.point_b), point_motion(&ua, at.point_a));
+            let motion = [
+                d[0],
+                d[1],
+                d[2],
+                ub[3] - ua[3],
+                ub[4] - ua[4],
+                ub[5] - ua[5],
+            ];
+            if motion.iter().any(|v| *v != 0.0) {
+                out.push((j, motion));
+            }
+        }
+        out
     }
 
     /// Generalized forces `Q = Σ Tᵀ w` from body wrenches (overwrites `gen_force`).
