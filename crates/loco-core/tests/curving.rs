@@ -8,6 +8,7 @@ use loco_core::vehicle::layout::*;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{build_wheel_rail, Scenario, TrackSpec};
 use loco_core::vehicle::structure::VehicleStructure;
+use rayon::prelude::*;
 use std::sync::Arc;
 
 mod curve_support;
@@ -46,19 +47,29 @@ fn balanced_speed(cant: f64) -> f64 {
 fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     let cant = 0.1;
     let speed = balanced_speed(cant);
-    // 200 m of steady curve after the transition ends under the last wheelset.
-    let r = run_curve(
-        DesignSection::reference_curve(cant, CurveDirection::Left),
-        speed,
-        300.0,
-    );
+    // 200 m of steady curve after the transition ends under the last wheelset, then a window of
+    // 1.6 m (57 ms) sampled every 0.1 m: the leading wheelsets run in two-point contact at the
+    // new wheel's flange jump (-7.8 mm, 7.9 mm on the table), and the bogie frames ring there
+    // at 1–3e-3 rad/s² (RK4 at 0.25 ms alike), a chatter of ~1e-8 rad. A single instant reads
+    // anything in that band (0.95e-3 at 300 m, 3.2e-3 at 301 m): the quasi-static state is
+    // checked on the window's mean, the chatter bounded by its largest value.
+    let window: Vec<CurveRun> = (0..16)
+        .into_par_iter()
+        .map(|k| {
+            run_curve(
+                DesignSection::reference_curve(cant, CurveDirection::Left),
+                speed,
+                300.0 + 0.1 * k as f64,
+            )
+        })
+        .collect();
+    let r = &window[0];
     // The carbody, frames, wheelsets, motors and hollow shafts at rest in the track frame:
     // accelerations below 1e-3 m/s² (rad/s²), except along the track: with no traction the
     // curving resistance slows the whole vehicle against the frame moving at V (every body by
     // the same ẍ, and the wheelsets' spin by ẍ/r0: checked). The light links (traction rods,
     // 80 kg, and rotary arms, 180 kg, measured 2e-2 to 6e-2 and 1e-3 to 4e-3 rad/s²) ring at
     // their own high frequencies on straight track too and are left out.
-    let acc = &r.dy[N_DOF..2 * N_DOF];
     let mut main: Vec<usize> = (CARBODY + Y..CARBODY + 6).collect();
     for b in 0..N_BOGIES {
         main.extend(frame(b) + Y..frame(b) + 6);
@@ -74,16 +85,34 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         main.extend(hollow_shaft(w)..hollow_shaft(w) + 3);
     }
     let names = dof_names();
-    let (worst, at) = main
-        .iter()
-        .map(|&i| (acc[i].abs(), i))
-        .fold((0.0, 0), |a, b| if b.0 > a.0 { b } else { a });
-    println!("largest acceleration {worst:.2e} ({})", names[at]);
+    let worst = |value: &dyn Fn(usize) -> f64| {
+        main.iter()
+            .map(|&i| (value(i).abs(), i))
+            .fold((0.0, 0), |a, b| if b.0 > a.0 { b } else { a })
+    };
+    let n = window.len() as f64;
+    let (mean, at) = worst(&|i| window.iter().map(|r| r.dy[N_DOF + i]).sum::<f64>() / n);
+    let (chatter, chatter_at) = worst(&|i| {
+        window
+            .iter()
+            .map(|r| r.dy[N_DOF + i].abs())
+            .fold(0.0, f64::max)
+    });
+    println!(
+        "largest mean acceleration {mean:.2e} ({}), largest instant {chatter:.2e} ({})",
+        names[at], names[chatter_at]
+    );
     assert!(
-        worst < 1e-3,
-        "largest acceleration {worst:.2e} at {}",
+        mean < 1e-3,
+        "largest mean acceleration {mean:.2e} at {}",
         names[at]
     );
+    assert!(
+        chatter < 5e-3,
+        "chatter {chatter:.2e} at {}",
+        names[chatter_at]
+    );
+    let acc = &r.dy[N_DOF..2 * N_DOF];
     let drift = acc[CARBODY + X];
     for b in 0..N_BOGIES {
         assert!((acc[frame(b) + X] - drift).abs() < 0.05 * drift.abs());
@@ -110,7 +139,7 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         -mass * drift,
         -drift / G * 1e3
     );
-    let relative = last(&r, "carbody_floor_ay_front");
+    let relative = last(r, "carbody_floor_ay_front");
     let lateral = track_plane_lateral(speed, cant, relative);
     println!(
         "balanced: V = {:.2} m/s, lateral in track plane {lateral:.2e} m/s²",
@@ -132,10 +161,10 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     let (mut left, mut right, mut total_y, mut largest_y) = (0.0, 0.0, 0.0, 0.0f64);
     for w in 1..=4 {
         let (ql, qr) = (
-            last(&r, &format!("wheel{w}_left_Q")),
-            last(&r, &format!("wheel{w}_right_Q")),
+            last(r, &format!("wheel{w}_left_Q")),
+            last(r, &format!("wheel{w}_right_Q")),
         );
-        let y = last(&r, &format!("wheel{w}_right_Y")) + last(&r, &format!("wheel{w}_left_Y"));
+        let y = last(r, &format!("wheel{w}_right_Y")) + last(r, &format!("wheel{w}_left_Y"));
         println!("wheelset {w}: Q {ql:.0} / {qr:.0} N, sum Y {y:.0} N");
         left += ql;
         right += qr;

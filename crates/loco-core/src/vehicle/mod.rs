@@ -33,6 +33,7 @@
 
 pub mod bodies;
 pub mod channel_set;
+pub mod creep_decay;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
@@ -44,6 +45,7 @@ pub mod integrator;
 pub mod kinematics;
 pub mod layout;
 pub mod linearise;
+pub mod long_step_range;
 pub mod mass;
 pub mod modes;
 pub mod parameter_schema;

@@ -4,10 +4,12 @@
 //! structure; [`run`] records every channel of it at each output sample.
 
 use super::channel_set::ChannelSet;
+use super::creep_decay::creep_decay_rate;
 use super::damper_elements::decaying_states;
 use super::decaying_states::DecayingStates;
 use super::exponential_rk4::ExponentialRk4;
 use super::integrator::{Integrator, OdeSystem, Rk4Workspace};
+use super::long_step_range::LongStepRange;
 use super::simulation::VehicleSystem;
 use super::stiff_linear_part::{gearbox_bearings, StiffLinearPart};
 use super::structure::VehicleStructure;
@@ -166,7 +168,7 @@ pub fn integrate(
     mut on_step: impl FnMut(usize, f64, &mut VehicleSystem, &[f64]) -> Result<Flow>,
     mut observe: impl FnMut(f64, &VehicleSystem, &[f64], &[f64]),
 ) -> Result<()> {
-    let mut workspace = Stepper::new(system, dt);
+    let mut workspace = Stepper::new(system, dt, y);
     let mut t = 0.0;
     for n in 0..=steps {
         let flow = on_step(n, t, system, y)?;
@@ -199,16 +201,6 @@ pub fn integrate(
     Ok(())
 }
 
-/// Lateral excursion of a wheelset from the rails' centre line beyond which a step longer than
-/// [`REFERENCE_STEP`] is cut into whole parts no longer than it, m (at the step's start or,
-/// at the wheelset's lateral velocity, at its end): EN 15302's reference
-/// amplitude of the equivalent conicity (3 mm), the bound of quasi-linear tread running. Beyond
-/// it the contact point heads for the flange root, where the contact geometry changes within a
-/// millimetre and a 2 ms step misses what 1 ms catches (the box corner that hunts into the flange
-/// root: A_yb +1.5 % at 2 ms against RK4 at 1 ms, +0.07 % with the cut); on the tread the
-/// vehicle keeps the long step.
-pub const FINE_STEP_EXCURSION: f64 = 3e-3;
-
 /// The exponential scheme's linear part: the gearbox bearings and the dampers' decaying states.
 type LinearPart = (Arc<StiffLinearPart>, Arc<DecayingStates>);
 
@@ -235,15 +227,18 @@ impl Scheme {
 }
 
 /// The time loop's stepping: the run's step, cut into `parts` whole parts no longer than
-/// [`REFERENCE_STEP`] while a wheelset is beyond [`FINE_STEP_EXCURSION`].
+/// [`REFERENCE_STEP`] while a wheel is outside the pair's [`LongStepRange`].
 struct Stepper {
     long: Scheme,
     /// The parts and their workspace (`None` when the step is no longer than the reference).
     cut: Option<(usize, Scheme)>,
+    /// Where the long step holds.
+    range: LongStepRange,
 }
 
 impl Stepper {
-    fn new(system: &VehicleSystem, dt: f64) -> Self {
+    /// The stepping of a run with steps of `dt` (s) from the state `y` at t = 0.
+    fn new(system: &VehicleSystem, dt: f64, y: &[f64]) -> Self {
         let linear = (system.integrator == Integrator::ExponentialRk4).then(|| {
             (
                 Arc::new(gearbox_bearings(&system.structure)),
@@ -255,6 +250,12 @@ impl Stepper {
         Self {
             long: Scheme::new(system, dt, &linear),
             cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64, &linear))),
+            range: if parts > 1 {
+                let rate = creep_decay_rate(system, 0.0, y);
+                LongStepRange::for_step(&system.wheel_rail, rate, dt)
+            } else {
+                LongStepRange::tread()
+            },
         }
     }
 
@@ -270,9 +271,7 @@ impl Stepper {
         observe: impl FnOnce(&VehicleSystem, &[f64], &[f64]),
     ) -> Result<()> {
         match &mut self.cut {
-            Some((parts, scheme))
-                if system.largest_lateral_excursion(t, y, dt) > FINE_STEP_EXCURSION =>
-            {
+            Some((parts, scheme)) if !self.range.holds(system, t, y, dt) => {
                 let h = dt / *parts as f64;
                 let at = |i: usize| if i == *parts { t_end } else { t + i as f64 * h };
                 step_with(scheme, system, t, h, at(1), y, observe);

@@ -312,24 +312,11 @@ impl VehicleSystem {
 
     /// The rails under wheelset `w` at time `t` (s): the track's, or the linearisation's inputs.
     #[inline]
-    fn rails_at(&self, w: usize, t: f64) -> RailIrregularity {
+    pub(crate) fn rails_at(&self, w: usize, t: f64) -> RailIrregularity {
         match &self.rail_inputs {
             Some(inputs) => inputs[w],
             None => self.track.at(self.wheelset_distance(w, t)),
         }
-    }
-
-    /// The largest lateral displacement of a wheelset from its rails' centre line in state `y`
-    /// at time `t` (s) or, moving on at its lateral velocity, `ahead` (s) later, m.
-    pub fn largest_lateral_excursion(&self, t: f64, y: &[f64], ahead: f64) -> f64 {
-        (0..N_WHEELSETS)
-            .map(|w| {
-                let rails = self.rails_at(w, t);
-                let now = y[wheelset(w) + Y] - 0.5 * (rails.y_left + rails.y_right);
-                let later = now + ahead * y[N_DOF + wheelset(w) + Y];
-                now.abs().max(later.abs())
-            })
-            .fold(0.0, f64::max)
     }
 
     /// Generalized forces for a state (used by the static search and the linearisation).
