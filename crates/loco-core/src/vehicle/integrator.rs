@@ -21,8 +21,8 @@
 //! [`super::decaying_states`]), so that a 2 ms step is stable with the damper laws of the 1 ms
 //! reference: `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
 //! the reference over the SPEC §6 box on the study's 500 m runs, and halving its step changes
-//! W_y by at most 0.011 % and A_yb by at most 0.2 % (the convergence study). Steps beyond 3 mm of
-//! wheelset excursion are cut to 1 ms ([`super::run::FINE_STEP_EXCURSION`]). Solved exactly, the
+//! W_y by at most 0.011 % and A_yb by at most 0.2 % (the convergence study). Steps are cut to 1 ms
+//! while a wheel is outside its pair's smooth contact range ([`super::long_step_range`]). Solved exactly, the
 //! bearings' modes keep only their physical damping (`hollow_shaft.bearing_damping_time`), which
 //! brings a steady curve to rest (`tests/curving.rs`); RK4 at 1 ms damps them numerically as well.
 //!
