@@ -21,6 +21,7 @@
 //! vehicle running at 5–9 mm in a curve on a cone rang at 0.6 m/s² with the long step where it
 //! rests at 1 ms (tests/curving_quasi_static.rs), so slow runs keep the tread range.
 
+use super::creep_decay::CREEP_RESOLVED;
 use super::layout::{wheelset, N_DOF, N_WHEELSETS, Y};
 use super::simulation::VehicleSystem;
 use super::wheel_rail::WheelRail;
@@ -38,10 +39,6 @@ pub const TREAD_RANGE: f64 = 3e-3;
 /// jump: 5°, where the study's treads change by 0.05° (new, thin flange) to 0.18° (worn flange
 /// root) per 0.1 mm node and their jumps by 19–51°.
 pub const CONTACT_JUMP: f64 = 5.0 * std::f64::consts::PI / 180.0;
-
-/// Largest `λ h` of the creep forces' decay (rate λ, step h) with which the long step keeps
-/// the pair's whole smooth range: RK4's stages resolve `e^(−λh)` to 4e-4 per step there.
-pub const CREEP_RESOLVED: f64 = 0.5;
 
 /// The lateral range of a wheel/rail pair in which the long step holds, m: `[towards the left
 /// flange (+y), towards the right flange (−y)]`, each wheel's table position.

@@ -14,6 +14,7 @@
 //! the mode lies (its coordinate, for the error message) comes from a few steps of inverse
 //! iteration shifted to that eigenvalue.
 
+use super::creep_decay::{creep_decay_rate, CREEP_RESOLVED};
 use super::integrator::Integrator;
 use super::layout::{dof_names, N_DOF};
 use super::run::REFERENCE_STEP;
@@ -109,7 +110,14 @@ pub fn in_equilibrium_at_stable_step(
     // there, and a compliance slower than it matters) where the scheme carries them at that
     // step: every pole fits RK4's stages, or the exponential scheme solves it exactly. Otherwise
     // the vehicle runs at the reference step.
+    // Nor is a step beyond the reference taken where it does not resolve the creep forces'
+    // decay (slow runs, [`creep_decay_rate`]).
     let mut reference = None;
+    if stable > REFERENCE_STEP
+        && creep_decay_rate(&system, 0.0, &equilibrium.state) * stable > CREEP_RESOLVED
+    {
+        stable = step / (step / REFERENCE_STEP).ceil();
+    }
     if stable > REFERENCE_STEP {
         let at_reference = build(REFERENCE_STEP)?;
         if carries_laws(&at_reference, stable) {
