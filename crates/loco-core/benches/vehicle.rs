@@ -113,12 +113,18 @@ fn bench_vehicle(c: &mut Criterion) {
     let table_exponential = with(&table, exponential);
     let name = "run_500m_200kmh_table_etdrk4";
     bench_run(&mut group, name, &structure, case, &table_exponential);
-    let curved = Scenario {
-        curve: DesignSection::reference_curve(0.1, CurveDirection::Left),
-        ..scenario.clone()
+    // The scenario on a curve, with its contact and track (built outside the timed runs).
+    let on_curve = |curve: Vec<DesignSection>| {
+        let curved = Scenario {
+            curve,
+            ..scenario.clone()
+        };
+        let contact = Arc::new(build_wheel_rail(&structure.parameters, &curved).unwrap());
+        let track = Arc::new(build_track(&curved, &structure).unwrap());
+        (curved, contact, track)
     };
-    let curved_contact = Arc::new(build_wheel_rail(&structure.parameters, &curved).unwrap());
-    let curved_track = Arc::new(build_track(&curved, &structure).unwrap());
+    let (curved, curved_contact, curved_track) =
+        on_curve(DesignSection::reference_curve(0.1, CurveDirection::Left));
     let case = (&curved_contact, &curved_track);
     bench_run(
         &mut group,
@@ -129,20 +135,11 @@ fn bench_vehicle(c: &mut Criterion) {
     );
     // A curve like the curving study's (R = 3000 m, 60 mm cant: about 97 mm of deficiency at
     // 200 km/h, one contact patch per wheel as on straight track), with both schemes.
-    let study_curve = Scenario {
-        curve: DesignSection::study_curve(CurveDirection::Left),
-        ..scenario.clone()
-    };
-    let study_contact = Arc::new(build_wheel_rail(&structure.parameters, &study_curve).unwrap());
-    let study_track = Arc::new(build_track(&study_curve, &structure).unwrap());
+    let (study_curve, study_contact, study_track) =
+        on_curve(DesignSection::study_curve(CurveDirection::Left));
     let case = (&study_contact, &study_track);
-    bench_run(
-        &mut group,
-        "run_500m_200kmh_study_curve",
-        &structure,
-        case,
-        &study_curve,
-    );
+    let name = "run_500m_200kmh_study_curve";
+    bench_run(&mut group, name, &structure, case, &study_curve);
     let study_curve_exponential = with(&study_curve, exponential);
     let name = "run_500m_200kmh_study_curve_etdrk4";
     bench_run(&mut group, name, &structure, case, &study_curve_exponential);

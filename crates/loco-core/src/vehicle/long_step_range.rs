@@ -16,12 +16,11 @@
 //! there), 5.9 mm for the new wheel (flange at 7.9 mm), 3 mm for the worn one (jump at 1.7 mm).
 //! Until stop 27 the range was 3 mm for every pair: S_low runs then took 28 % more steps.
 //!
-//! The wider range needs the creep forces' decay resolved by the long step
-//! ([`super::creep_decay`], `λ h ≤` [`CREEP_RESOLVED`]): at 10 m/s (`λ h` = 1.82 at 2 ms) a
-//! vehicle running at 5–9 mm in a curve on a cone rang at 0.6 m/s² with the long step where it
-//! rests at 1 ms (tests/curving_quasi_static.rs), so slow runs keep the tread range.
+//! The long step itself is taken only where it resolves the creep forces' decay
+//! ([`super::stiffest_mode::stable_step`], [`super::creep_decay`]): at 10 m/s (`λ h` = 1.82 at
+//! 2 ms) a vehicle running at 5–9 mm in a curve on a cone rang at 0.6 m/s² with it, where it
+//! rests at 1 ms (tests/curving_quasi_static.rs).
 
-use super::creep_decay::CREEP_RESOLVED;
 use super::layout::{wheelset, N_DOF, N_WHEELSETS, Y};
 use super::simulation::VehicleSystem;
 use super::wheel_rail::WheelRail;
@@ -46,22 +45,6 @@ pub const CONTACT_JUMP: f64 = 5.0 * std::f64::consts::PI / 180.0;
 pub struct LongStepRange(pub [f64; 2]);
 
 impl LongStepRange {
-    /// The tread range on both sides.
-    pub fn tread() -> Self {
-        Self([TREAD_RANGE; 2])
-    }
-
-    /// The range for steps of `step` (s) of a run whose creep forces decay at `creep_rate`
-    /// (1/s): the tread range unless the decay is resolved ([`CREEP_RESOLVED`]), then
-    /// [`Self::of`].
-    pub fn for_step(wheel_rail: &WheelRail, creep_rate: f64, step: f64) -> Self {
-        if creep_rate * step <= CREEP_RESOLVED {
-            Self::of(wheel_rail)
-        } else {
-            Self::tread()
-        }
-    }
-
     /// The range of `wheel_rail`'s contact table (its half range where no point jumps).
     pub fn of(wheel_rail: &WheelRail) -> Self {
         let table = wheel_rail.table();

@@ -4,7 +4,6 @@
 //! structure; [`run`] records every channel of it at each output sample.
 
 use super::channel_set::ChannelSet;
-use super::creep_decay::creep_decay_rate;
 use super::damper_elements::decaying_states;
 use super::decaying_states::DecayingStates;
 use super::exponential_rk4::ExponentialRk4;
@@ -168,7 +167,7 @@ pub fn integrate(
     mut on_step: impl FnMut(usize, f64, &mut VehicleSystem, &[f64]) -> Result<Flow>,
     mut observe: impl FnMut(f64, &VehicleSystem, &[f64], &[f64]),
 ) -> Result<()> {
-    let mut workspace = Stepper::new(system, dt, y);
+    let mut workspace = Stepper::new(system, dt);
     let mut t = 0.0;
     for n in 0..=steps {
         let flow = on_step(n, t, system, y)?;
@@ -237,8 +236,7 @@ struct Stepper {
 }
 
 impl Stepper {
-    /// The stepping of a run with steps of `dt` (s) from the state `y` at t = 0.
-    fn new(system: &VehicleSystem, dt: f64, y: &[f64]) -> Self {
+    fn new(system: &VehicleSystem, dt: f64) -> Self {
         let linear = (system.integrator == Integrator::ExponentialRk4).then(|| {
             (
                 Arc::new(gearbox_bearings(&system.structure)),
@@ -250,12 +248,7 @@ impl Stepper {
         Self {
             long: Scheme::new(system, dt, &linear),
             cut: (parts > 1).then(|| (parts, Scheme::new(system, dt / parts as f64, &linear))),
-            range: if parts > 1 {
-                let rate = creep_decay_rate(system, 0.0, y);
-                LongStepRange::for_step(&system.wheel_rail, rate, dt)
-            } else {
-                LongStepRange::tread()
-            },
+            range: LongStepRange::of(&system.wheel_rail),
         }
     }
 

@@ -76,17 +76,28 @@ pub const MAX_SUBSTEPS: f64 = 8.0;
 /// The RK4 step a run with the requested (longest) `step` (s) takes: `step` itself when the
 /// vehicle's stiffest mode about `equilibrium` is stable with it (every run of a vehicle the
 /// step suits is unchanged), else the longest whole fraction `step / k` that is, so that the
-/// output samples stay on whole steps. Beyond [`MAX_SUBSTEPS`] the error of [`check_step`].
+/// output samples stay on whole steps; and the reference step where a longer one would not
+/// resolve the creep forces' decay ([`CREEP_RESOLVED`]). Beyond [`MAX_SUBSTEPS`] the error of
+/// [`check_step`].
 pub fn stable_step(system: &VehicleSystem, equilibrium: &Equilibrium, step: f64) -> Result<f64> {
     let mode = stiffest_mode(system, equilibrium);
-    if mode.omega * step <= RK4_IMAGINARY_LIMIT {
-        return Ok(step);
+    let stable = if mode.omega * step <= RK4_IMAGINARY_LIMIT {
+        step
+    } else {
+        let k = (mode.omega * step / RK4_IMAGINARY_LIMIT).ceil();
+        if k > MAX_SUBSTEPS {
+            return check_step_for(&mode, step).map(|()| step);
+        }
+        step / k
+    };
+    // Nor is a step beyond the reference taken where it does not resolve the creep forces'
+    // decay (slow runs, [`creep_decay_rate`]).
+    if stable > REFERENCE_STEP
+        && creep_decay_rate(system, 0.0, &equilibrium.state) * stable > CREEP_RESOLVED
+    {
+        return Ok(step / (step / REFERENCE_STEP).ceil());
     }
-    let k = (mode.omega * step / RK4_IMAGINARY_LIMIT).ceil();
-    if k <= MAX_SUBSTEPS {
-        return Ok(step / k);
-    }
-    check_step_for(&mode, step).map(|()| step)
+    Ok(stable)
 }
 
 /// The system `build` makes for an RK4 step (s), in static equilibrium, at the step a time
@@ -110,14 +121,7 @@ pub fn in_equilibrium_at_stable_step(
     // there, and a compliance slower than it matters) where the scheme carries them at that
     // step: every pole fits RK4's stages, or the exponential scheme solves it exactly. Otherwise
     // the vehicle runs at the reference step.
-    // Nor is a step beyond the reference taken where it does not resolve the creep forces'
-    // decay (slow runs, [`creep_decay_rate`]).
     let mut reference = None;
-    if stable > REFERENCE_STEP
-        && creep_decay_rate(&system, 0.0, &equilibrium.state) * stable > CREEP_RESOLVED
-    {
-        stable = step / (step / REFERENCE_STEP).ceil();
-    }
     if stable > REFERENCE_STEP {
         let at_reference = build(REFERENCE_STEP)?;
         if carries_laws(&at_reference, stable) {

@@ -8,6 +8,7 @@ use loco_core::vehicle::run::{run, RunOutput, RunSettings};
 use loco_core::vehicle::scenario::{build_track, curve_design, start_distance, Scenario};
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::stiffest_mode::stable_step;
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::vehicle::track_frame::CurvedTrack;
 use loco_core::vehicle::wheel_rail::WheelRail;
@@ -48,11 +49,13 @@ pub fn run_on_curve(
     )
     .unwrap();
     system.curve = Some(Arc::new(CurvedTrack::new(design, &structure)));
-    let mut y = static_equilibrium(&mut system, &StaticsSettings::default())
-        .unwrap()
-        .state;
+    let equilibrium = static_equilibrium(&mut system, &StaticsSettings::default()).unwrap();
+    // The step a run takes (the stable-step rule of `simulate`).
+    let step = stable_step(&system, &equilibrium, scenario.run.step).unwrap();
+    let mut y = equilibrium.state;
     let settings = RunSettings {
         duration: distance / speed,
+        step,
         ..scenario.run
     };
     let output = run(&mut system, &mut y, &settings, None).unwrap();
