@@ -18,6 +18,7 @@ pub mod contact;
 pub mod csv_table;
 pub mod dampers;
 pub mod error;
+pub mod kept;
 pub mod metrics;
 pub mod toml_fields;
 pub mod track;

@@ -18,7 +18,7 @@ use crate::vehicle::parameters::ParameterSet;
 use crate::vehicle::run::RunOutput;
 use crate::vehicle::run_statistics::RunStatistics;
 use crate::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate_prepared, Scenario, TrackSpec,
+    build_track, shared_wheel_rail, simulate_prepared, Scenario, TrackSpec,
 };
 use crate::vehicle::structure::VehicleStructure;
 use crate::vehicle::wheel_rail::WheelRail;
@@ -184,10 +184,7 @@ fn prepare(spec: &BatchSpec, columns: Vec<Column>, base: Arc<VehicleStructure>) 
     let wheel_rail = if columns.iter().any(Column::changes_contact) {
         None
     } else {
-        Some(Arc::new(build_wheel_rail(
-            &base.parameters,
-            &spec.scenario,
-        )?))
+        Some(shared_wheel_rail(&base.parameters, &spec.scenario)?)
     };
     let track = match (&spec.scenario.track, spec.per_sample_track) {
         (TrackSpec::Synthetic(_), true) => None,
@@ -297,7 +294,7 @@ fn run_sample(
     };
     let wheel_rail = match &shared.wheel_rail {
         Some(w) => Arc::clone(w),
-        None => Arc::new(build_wheel_rail(&structure.parameters, &scenario)?),
+        None => shared_wheel_rail(&structure.parameters, &scenario)?,
     };
     let track = match &shared.track {
         Some(t) => Arc::clone(t),

@@ -74,3 +74,4 @@ pub mod track_limits;
 pub mod units;
 pub mod wheel_channels;
 pub mod wheel_rail;
+pub mod wheel_rail_cache;

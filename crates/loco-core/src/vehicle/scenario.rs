@@ -12,6 +12,7 @@ use super::suspects::with_suspects;
 use super::track_frame::CurvedTrack;
 use super::track_limits::TrackLimits;
 use super::wheel_rail::{WheelRail, WheelRailSettings};
+use super::wheel_rail_cache::{self, WheelRailInputs};
 use crate::contact::builtin::builtin_profile;
 use crate::contact::fastsim::FastsimParams;
 use crate::contact::geometry::ContactGeometry;
@@ -236,11 +237,21 @@ impl ContactParameters {
 
 /// Builds the wheel-rail contact (contact table and FASTSIM) of a scenario for a vehicle.
 pub fn build_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
-    wheel_rail_of(parameters, scenario).map_err(|e| with_suspects(e, parameters))
+    WheelRailInputs::of(parameters, scenario)
+        .and_then(|inputs| wheel_rail_of(&inputs))
+        .map_err(|e| with_suspects(e, parameters))
 }
 
-fn wheel_rail_of(parameters: &ParameterSet, scenario: &Scenario) -> Result<WheelRail> {
-    let c = ContactParameters::from_parameters(parameters)?;
+/// As [`build_wheel_rail`], shared: the contact built before in this process for the same
+/// inputs, if it is still kept ([`super::wheel_rail_cache`]).
+pub fn shared_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Result<Arc<WheelRail>> {
+    WheelRailInputs::of(parameters, scenario)
+        .and_then(|inputs| wheel_rail_cache::shared(&inputs, wheel_rail_of))
+        .map_err(|e| with_suspects(e, parameters))
+}
+
+fn wheel_rail_of(inputs: &WheelRailInputs) -> Result<WheelRail> {
+    let c = inputs.contact;
     let r0 = c.nominal_radius;
     let half = c.contact_half_distance;
     let wheelset = WheelsetSetup {
@@ -250,9 +261,9 @@ fn wheel_rail_of(parameters: &ParameterSet, scenario: &Scenario) -> Result<Wheel
         ..WheelsetSetup::default()
     };
     let geometry = ContactGeometry::new(
-        [&scenario.wheel, &scenario.wheel],
-        [&scenario.rail, &scenario.rail],
-        &scenario.track_setup,
+        [inputs.wheel, inputs.wheel],
+        [inputs.rail, inputs.rail],
+        inputs.track_setup,
         &wheelset,
         &ContactSearchParams::default(),
     )?;
@@ -269,11 +280,11 @@ fn wheel_rail_of(parameters: &ParameterSet, scenario: &Scenario) -> Result<Wheel
     let fastsim_params = FastsimParams {
         poisson_ratio: c.poisson_ratio,
         shear_modulus: c.shear_modulus,
-        ..scenario.fastsim
+        ..*inputs.fastsim
     };
     Ok(WheelRail::new(
         table,
-        scenario.creep.solver(fastsim_params)?,
+        inputs.creep.solver(fastsim_params)?,
         WheelRailSettings {
             friction: c.friction,
             contact_modulus: c.young_modulus / (2.0 * (1.0 - c.poisson_ratio * c.poisson_ratio)),
@@ -418,7 +429,7 @@ impl PerfectTrackVehicle {
     pub fn new(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<Self> {
         scenario.validate()?;
         let structure = vehicle.into_vehicle()?;
-        let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+        let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
         let perfect = Scenario {
             track: TrackSpec::Perfect,
             ..scenario.clone()
@@ -477,7 +488,7 @@ pub fn simulate_cancellable(
 ) -> Result<SimulationResult> {
     scenario.validate()?;
     let structure = vehicle.into_vehicle()?;
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario)?);
+    let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
     let track = Arc::new(build_track(scenario, &structure)?);
     simulate_prepared(structure, wheel_rail, track, scenario, cancel)
 }

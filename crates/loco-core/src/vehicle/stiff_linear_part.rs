@@ -16,6 +16,7 @@ use super::layout::N_DOF;
 use super::mass::MassMatrix;
 use super::structure::VehicleStructure;
 use super::suspension::GEARBOX_BEARINGS;
+use crate::kept::Kept;
 use nalgebra::DMatrix;
 
 /// A sparse row or column: (coordinate index, coefficient).
@@ -177,7 +178,16 @@ impl StiffLinearPart {
     /// Automatic Control 23, 1978: integrals of matrix exponentials as one larger exponential).
     /// The blocks are scaled to the time `tau` first (`ż·τ`, `∫z/τ`, `h·τ²`, ...), so that
     /// all entries of the exponentiated matrix are of order (ω·τ)² at most.
+    ///
+    /// Kept for reuse ([`crate::kept`]): a batch's samples share the bearings and the mass
+    /// matrix, and the exponentials cost 1.2 % of a 500 m run.
     pub fn propagator(&self, tau: f64) -> Propagator {
+        static KEPT: Kept<Propagator> = Kept::new(8);
+        let key = format!("{:?} {:?} {tau:?}", self.own, self.own_inverse);
+        (*KEPT.get_or_build(key, || self.build_propagator(tau))).clone()
+    }
+
+    fn build_propagator(&self, tau: f64) -> Propagator {
         let r = self.len();
         // Blocks: 0 z, 1 ż, 2 ∫z, 3 ∫∫z, 4 h, 5 ḣ, 6 ḧ; scale σ_b (scaled block = σ_b · block).
         let sigma = [
