@@ -41,6 +41,10 @@ pub struct ExponentialRk4 {
     /// Deflection inputs and outputs of the propagators (5r and 2r).
     input: Vec<f64>,
     output: Vec<f64>,
+    /// The springs' deflections `[J q | J q̇]` (2r) of the step's start state, of the first
+    /// stage's and of the others: formed once for each state and read by every stage that
+    /// takes it out of `f` or starts from it.
+    springs: [Vec<f64>; 3],
     /// The decaying states' deflections at the step's start, the three stages and the end.
     deltas: [Vec<f64>; 5],
 }
@@ -71,6 +75,7 @@ impl ExponentialRk4 {
             w: std::array::from_fn(|_| vec![0.0; n]),
             input: vec![0.0; 5 * r],
             output: vec![0.0; 2 * r],
+            springs: std::array::from_fn(|_| vec![0.0; 2 * r]),
         }
     }
 
@@ -102,6 +107,7 @@ impl ExponentialRk4 {
             w: [w0, w1, w2],
             input,
             output,
+            springs: [sy, sa, ss],
             deltas: [d0, da, db, dc, d_end],
             ..
         } = self;
@@ -117,19 +123,19 @@ impl ExponentialRk4 {
         linear.decaying.deflections(y, d0);
         system.derivatives(t, y, k1);
         observe(system, y, k1);
-        linear.remove(y, d0, k1, scratch.output);
-        linear.propagate(linear.half, (y, d0), &[k1], &mut scratch, (a, da));
+        linear.remove(y, (d0, sy), k1);
+        linear.propagate(linear.half, (y, d0, sy), &[k1], &mut scratch, (a, da));
         system.derivatives(t + 0.5 * h, a, k2);
-        linear.remove(a, da, k2, scratch.output);
-        linear.propagate(linear.half, (y, d0), &[k2], &mut scratch, (stage, db));
+        linear.remove(a, (da, sa), k2);
+        linear.propagate(linear.half, (y, d0, sy), &[k2], &mut scratch, (stage, db));
         system.derivatives(t + 0.5 * h, stage, k3);
-        linear.remove(stage, db, k3, scratch.output);
+        linear.remove(stage, (db, ss), k3);
         for ((w, x3), x1) in w0.iter_mut().zip(k3.iter()).zip(k1.iter()) {
             *w = 2.0 * x3 - x1;
         }
-        linear.propagate(linear.half, (a, da), &[w0], &mut scratch, (stage, dc));
+        linear.propagate(linear.half, (a, da, sa), &[w0], &mut scratch, (stage, dc));
         system.derivatives(t_end, stage, k4);
-        linear.remove(stage, dc, k4, scratch.output);
+        linear.remove(stage, (dc, ss), k4);
         // N along the step as the quadratic w0 + w1·t + w2·t²/2 (the φ1, φ2, φ3 weights).
         for i in 0..y.len() {
             let (n1, n23, n4) = (k1[i], k2[i] + k3[i], k4[i]);
@@ -137,7 +143,7 @@ impl ExponentialRk4 {
             w2[i] = 4.0 * (n1 - n23 + n4) / (h * h);
         }
         let end = (&mut stage[..], &mut d_end[..]);
-        linear.propagate(linear.full, (y, d0), &[k1, w1, w2], &mut scratch, end);
+        linear.propagate(linear.full, (y, d0, sy), &[k1, w1, w2], &mut scratch, end);
         y.copy_from_slice(stage);
         system.after_step(t_end, h, y);
     }
@@ -153,24 +159,26 @@ struct Linear<'a> {
 }
 
 impl Linear<'_> {
-    /// `k = f(y)` into `N(y) = f(y) − L y`; `deflections` are the decaying states' at `y`.
-    fn remove(&self, y: &[f64], deflections: &[f64], k: &mut [f64], z: &mut [f64]) {
+    /// `k = f(y)` into `N(y) = f(y) − L y`; `deflections` are the decaying states' at `y`, and
+    /// `springs` receives the springs' deflections of `y` for the stages that start from it.
+    fn remove(&self, y: &[f64], (deflections, springs): (&[f64], &mut [f64]), k: &mut [f64]) {
         // The decaying states read the coordinate rows (q̇) before the springs change them.
         self.decaying.remove_linear(deflections, k);
-        remove_linear(self.part, y, k, z);
+        remove_linear(self.part, y, springs, k);
     }
 
     /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from the state
-    /// `y0` with its decaying states' deflections `start`, into `out` with its deflections.
+    /// `y0` with its decaying states' deflections `start` and its springs' deflections
+    /// `springs` (from [`Self::remove`]), into `out` with its deflections.
     fn propagate(
         &self,
         (springs, decay): (&Propagator, &DecayPropagator),
-        (y0, start): (&[f64], &[f64]),
+        (y0, start, deflected): (&[f64], &[f64], &[f64]),
         w: &[&[f64]],
         scratch: &mut Scratch,
         (out, deflections): (&mut [f64], &mut [f64]),
     ) {
-        propagate(self.part, springs, y0, w, scratch, out);
+        propagate(self.part, springs, y0, deflected, w, scratch, out);
         self.decaying.propagate(decay, start, w, out, deflections);
     }
 }
@@ -183,17 +191,18 @@ struct Scratch<'a> {
 
 /// Turns `k = f(y)` into `N(y) = f(y) − L y` with `L y = [P q̇; −B J q]`: the springs' part
 /// of the velocities `P q̇ = G J q̇` out of the coordinate rows, `+B J q` into the velocity rows.
-fn remove_linear(part: &StiffLinearPart, y: &[f64], k: &mut [f64], z: &mut [f64]) {
+/// `springs` receives `[J q | J q̇]` (2r).
+fn remove_linear(part: &StiffLinearPart, y: &[f64], springs: &mut [f64], k: &mut [f64]) {
     let (n, r) = (part.n_dof(), part.len());
-    let (z, u) = z.split_at_mut(r);
-    let u = &mut u[..r];
+    let (z, u) = springs.split_at_mut(r);
     part.deflections(&y[..n], z);
     part.deflections(&y[n..2 * n], u);
     part.add_projection(u, -1.0, &mut k[..n]);
     part.add_response(z, 1.0, &mut k[n..2 * n]);
 }
 
-/// `out` = the exact solution at `tau` of `ẏ = L y + Σ w_k t^k/k!` from `y0`, with one to three
+/// `out` = the exact solution at `tau` of `ẏ = L y + Σ w_k t^k/k!` from `y0` (its springs'
+/// deflections `[J q | J q̇]` in `deflected`), with one to three
 /// forcing vectors `w` (combinations of `N`, whose coordinate rows `(I − P) q̇` deflect no
 /// spring). Outside the springs' part this is the polynomial RK4 takes; inside it the
 /// propagator adds the springs' motion.
@@ -201,15 +210,15 @@ fn propagate(
     part: &StiffLinearPart,
     propagator: &Propagator,
     y0: &[f64],
+    deflected: &[f64],
     w: &[&[f64]],
     scratch: &mut Scratch,
     out: &mut [f64],
 ) {
     let (n, r, tau) = (part.n_dof(), part.len(), propagator.tau);
     let input = &mut *scratch.input;
-    input.fill(0.0);
-    part.deflections(&y0[..n], &mut input[..r]);
-    part.deflections(&y0[n..2 * n], &mut input[r..2 * r]);
+    input[..2 * r].copy_from_slice(deflected);
+    input[(2 + w.len()) * r..].fill(0.0);
     for (i, wi) in w.iter().enumerate() {
         part.deflections(&wi[n..2 * n], &mut input[(2 + i) * r..(3 + i) * r]);
     }
