@@ -236,3 +236,41 @@ fn bad_input_names_the_argument() {
     .unwrap_err();
     assert!(err.to_string().contains("nu"));
 }
+
+/// The AVX build of the strips' loop gives the bits of the baseline build, with and without the
+/// fallback (|φ'| > 1), in partial and full slip, on the default and an odd grid.
+#[test]
+fn avx_and_baseline_paths_give_the_same_bits() {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        let (a, b) = axes(1.7);
+        let mut fallbacks = [0, 0];
+        for f in [solver(10, 10), solver(7, 13)] {
+            for c in [
+                creep(1e-4, -6.25e-4, 0.625),
+                creep(-2e-3, 1e-3, 0.0),
+                creep(0.0, 0.0, 4.0),
+                creep(5e-3, -8e-3, -1.5),
+                creep(0.05, 0.02, 0.3),
+            ] {
+                let call = f.prepare(a, b, 80e3, 0.35, &c).unwrap();
+                fallbacks[usize::from(call.phi_s.abs() > 1.0)] += 1;
+                let same = |x: CreepForces, y: CreepForces| {
+                    [x.fx, x.fy, x.mz].map(f64::to_bits) == [y.fx, y.fy, y.mz].map(f64::to_bits)
+                };
+                // SAFETY: AVX was detected above.
+                let (plain, avx) = if call.phi_s.abs() > 1.0 {
+                    (f.integrate_lanes::<true>(&call), unsafe {
+                        f.integrate_avx::<true>(&call)
+                    })
+                } else {
+                    (f.integrate_lanes::<false>(&call), unsafe {
+                        f.integrate_avx::<false>(&call)
+                    })
+                };
+                assert!(same(plain, avx), "{c:?}: {plain:?} against {avx:?}");
+            }
+        }
+        assert!(fallbacks[0] > 0 && fallbacks[1] > 0, "{fallbacks:?}");
+    }
+}
