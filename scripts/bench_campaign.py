@@ -2,10 +2,11 @@
 
 A campaign hands the native side one chunk at a time (what a Dask worker gets, and what
 ``loco reproduce`` runs locally); whatever a chunk rebuilds that one batch builds once (the
-contact table, the propagators) is the campaign's overhead. Runs the design (``--samples``
-Latin-hypercube samples of the six study parameters, S_high, 200 km/h, 500 m, the default
-scheme) ``--repeat`` times each way on ``--threads`` threads and prints the best wall time of
-each. ``--mode batch`` or ``--mode campaign`` runs one way once (for ``farm-bench``).
+contact table, the tabulated FASTSIM, the propagators) is the campaign's overhead. Runs the
+design (``--samples`` Latin-hypercube samples of the six study parameters, S_high, 200 km/h,
+500 m, the default scheme, the creep model ``--creep``) ``--repeat`` times each way on
+``--threads`` threads and prints the best wall time of each. ``--mode batch`` or
+``--mode campaign`` runs one way once (for ``farm-bench``).
 
     python scripts/bench_campaign.py --samples 48 --chunk-size 8
 """
@@ -28,9 +29,12 @@ def main() -> None:
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--mode", choices=("both", "batch", "campaign"), default="both")
+    parser.add_argument("--creep", choices=loco.simulation.CREEP_MODELS, default="fastsim")
     args = parser.parse_args()
     params = latin_hypercube(args.samples, seed=1)
-    scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=500.0, seed=1)
+    scenario = loco.Scenario(
+        name="S_high", speed=200 / 3.6, distance=500.0, seed=1, creep=args.creep
+    )
 
     def batch() -> loco.BatchResult:
         return loco.run_batch(
