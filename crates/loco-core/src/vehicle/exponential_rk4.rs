@@ -169,7 +169,7 @@ impl Linear<'_> {
 
     /// The exact solution at the propagators' time of `ẏ = L y + Σ w_k t^k/k!` from the state
     /// `y0` with its decaying states' deflections `start` and its springs' deflections
-    /// `springs` (from [`Self::remove`]), into `out` with its deflections.
+    /// `deflected` (from [`Self::remove`]), into `out` with its deflections.
     fn propagate(
         &self,
         (springs, decay): (&Propagator, &DecayPropagator),
