@@ -32,11 +32,14 @@
 //! the bound at element centres instead would overstate the thin slip zones of small creepage).
 //! At vanishing creepage the only error left is the strip (y) quadrature; p0 is taken from the
 //! same strip sum (→ 3N/(2πab)), so full slip gives |F| = μN on any grid. The Kalker coefficient
-//! factor k multiplies G in the flexibilities and in the scaled creepages. Strips are integrated
-//! [`LANES`] at a time, as in FASTSIM, and the slip-zone sums start at a group's first slipping
+//! factor k multiplies G in the flexibilities and in the scaled creepages. Every per-strip step
+//! (the strip theory, the march, the bound check, the zones' forces) runs [`LANES`] strips at a
+//! time in SIMD lanes (`fastrip_lanes`), and the slip-zone sums start at a group's first slipping
 //! element. [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
 
-use super::fastrip_march::{march, Element, LaneState, Lanes, LANES};
+use super::fastrip_lanes::{
+    add_strip_forces, exceeds_bound, march, strip_lanes, Element, LaneState, LANES,
+};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::Result;
@@ -84,13 +87,13 @@ impl Default for FastripParams {
 
 /// Geometry of [`LANES`] strips in units of (a, b).
 #[derive(Debug, Clone, Copy, Default)]
-struct StripLanes {
+pub(super) struct StripLanes {
     /// Strip centre y_j / b.
-    eta: [f64; LANES],
+    pub(super) eta: [f64; LANES],
     /// Strip half-length a_j / a (0 for padding).
-    half_length: [f64; LANES],
+    pub(super) half_length: [f64; LANES],
     /// a / a_j (0 for padding).
-    inv_half_length: [f64; LANES],
+    pub(super) inv_half_length: [f64; LANES],
 }
 
 /// A ready-to-run FaStrip solver: parameters, Kalker table and the normalised grid.
@@ -109,32 +112,23 @@ pub struct Fastrip {
 }
 
 /// Per-call constants of [`Fastrip::creep_forces`] (SI units; primed creepages in units of μ p0).
-struct Call {
-    a: f64,
-    b: f64,
-    inv_a: f64,
-    xi_s: f64,
-    eta_s: f64,
-    phi_s: f64,
-    d_factor: f64,
-    unit_spin: bool,
+pub(super) struct Call {
+    pub(super) a: f64,
+    pub(super) b: f64,
+    pub(super) inv_a: f64,
+    pub(super) xi_s: f64,
+    pub(super) eta_s: f64,
+    pub(super) phi_s: f64,
+    pub(super) d_factor: f64,
+    pub(super) unit_spin: bool,
     /// FASTSIM's slope of p_x: (ξ/L1, φ/L3), Pa/m and Pa/m².
-    slope_x: (f64, f64),
+    pub(super) slope_x: (f64, f64),
     /// FASTSIM's slope of p_y: (η/L2, φ/L3), Pa/m and Pa/m².
-    slope_y: (f64, f64),
-    bound_peak: f64,
-    dy: f64,
+    pub(super) slope_y: (f64, f64),
+    pub(super) bound_peak: f64,
+    pub(super) dy: f64,
     /// μ p0/a · dy (N/m²).
-    strip_scale: f64,
-}
-
-/// Per-strip result of the strip theory: slip half-length d (m; d = a_j means full slip),
-/// direction (κ, λ).
-#[derive(Debug, Clone, Copy, Default)]
-struct StripSolution {
-    d: f64,
-    kappa: f64,
-    lambda: f64,
+    pub(super) strip_scale: f64,
 }
 
 impl Fastrip {
@@ -281,134 +275,50 @@ impl Fastrip {
             // function enables.
             return unsafe { self.integrate_avx::<FALLBACK>(k) };
         }
-        self.integrate_lanes::<FALLBACK>(k)
+        self.integrate_lanes::<FALLBACK, 2, { LANES / 2 }>(k)
     }
 
     /// [`Self::integrate_lanes`] compiled for AVX.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
     unsafe fn integrate_avx<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
-        self.integrate_lanes::<FALLBACK>(k)
+        self.integrate_lanes::<FALLBACK, 4, { LANES / 4 }>(k)
     }
 
     // The lane index runs over several per-lane arrays in lockstep.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
-    fn integrate_lanes<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
+    fn integrate_lanes<const FALLBACK: bool, const W: usize, const G: usize>(
+        &self,
+        k: &Call,
+    ) -> CreepForces {
         let nx = self.params.nx as f64;
-        let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
+        let mut f = [0.0; 3];
         for group in &self.strips {
-            let mut lanes = Lanes::default();
-            let mut sol = [StripSolution::default(); LANES];
+            let (lanes, sol) = strip_lanes::<W, G>(group, k, nx);
             let mut first_slip = self.elements.len();
             for l in 0..LANES {
-                let y = group.eta[l] * k.b;
-                let a_j = group.half_length[l] * k.a;
-                lanes.y[l] = y;
-                lanes.a_j[l] = a_j;
-                lanes.gx[l] = a_j * (k.slope_x.0 - y * k.slope_x.1);
-                lanes.gy0[l] = a_j * k.slope_y.0;
-                lanes.gy1[l] = a_j * a_j * k.slope_y.1;
-                lanes.bound_j[l] = k.bound_peak * group.half_length[l];
-                // Strip theory, branch-free so that the lanes vectorise.
-                let u = k.xi_s - k.phi_s * y * k.inv_a;
-                let disc = k.eta_s * k.eta_s + (1.0 - k.phi_s * k.phi_s) * u * u;
-                let d_raw = (disc.max(0.0).sqrt() + k.eta_s * k.phi_s) * k.d_factor;
-                let partial = !k.unit_spin && disc >= 0.0 && d_raw >= 0.0 && d_raw < a_j;
-                let d = if partial { d_raw } else { a_j };
-                let v = k.eta_s + k.phi_s * d * k.inv_a;
-                let inv = 1.0 / (u * u + v * v).max(1e-20).sqrt();
-                sol[l] = StripSolution {
-                    d,
-                    kappa: u * inv,
-                    lambda: v * inv,
-                };
-                // x_i/a_j · nx/2 + 1/2: an element's slip fraction is this minus its u_k·nx/2.
-                let c = (2.0 * d - a_j) * k.inv_a * group.inv_half_length[l] * 0.5 * nx + 0.5;
-                lanes.slip_offset[l] = c;
                 if group.half_length[l] > 0.0 {
                     // Elements before the first with a slip fraction (u_k·nx/2 < c) need none.
                     // (`as` truncates: the floor of a non-negative number.)
-                    let before = (0.5 * nx - 1.5 - c).max(0.0);
+                    let before = (0.5 * nx - 1.5 - lanes.slip_offset[l]).max(0.0);
                     first_slip = first_slip.min(before as usize);
                 }
             }
             let mut state = LaneState::default();
             let (ahead, behind) = self.elements.split_at(first_slip.min(self.elements.len()));
-            march::<false, FALLBACK>(ahead, &lanes, &mut state);
-            march::<true, FALLBACK>(behind, &lanes, &mut state);
-            for l in 0..LANES {
-                let (s, a_j, y) = (sol[l], lanes.a_j[l], lanes.y[l]);
-                let adhesion = s.d < a_j;
-                if FALLBACK && adhesion && self.exceeds_bound(k.a, a_j, s, k.phi_s) {
-                    let area = 2.0 * a_j / nx * k.dy;
-                    fx += state.sx[l] * area;
-                    fy += state.sy[l] * area;
-                    mz += (a_j * state.syu[l] - y * state.sx[l]) * area;
-                    continue;
-                }
-                // ∫ S_c·a over the adhesion zone (m²) and its first moment (m³).
-                let (c0, c1) = if adhesion {
-                    segment(a_j, 2.0 * s.d - a_j)
-                } else {
-                    (0.0, 0.0)
-                };
-                if adhesion {
-                    let [gx, gy, gm] = adhesion_integrals(a_j, s, k.phi_s, c0, c1);
-                    fx += gx * k.strip_scale;
-                    fy += gy * k.strip_scale;
-                    mz += (gm - y * gx) * k.strip_scale;
-                }
-                // Slip zone: FASTSIM's directions, the exact magnitude ∫ μ p_n over the zone.
-                if state.wb[l] > 0.0 {
-                    let w = (0.5 * PI * a_j * a_j - c0) * k.strip_scale / state.wb[l];
-                    fx += state.qx[l] * w;
-                    fy += state.qy[l] * w;
-                    mz += (a_j * state.qyu[l] - y * state.qx[l]) * w;
-                }
-            }
+            march::<false, FALLBACK, W, G>(ahead, &lanes, &mut state);
+            march::<true, FALLBACK, W, G>(behind, &lanes, &mut state);
+            let exceeds = if FALLBACK {
+                exceeds_bound::<W, G>(&self.elements, k.a, &lanes.a_j, &sol, k.phi_s)
+            } else {
+                [false; LANES]
+            };
+            add_strip_forces::<FALLBACK, W, G>(&lanes, &sol, &state, &exceeds, k, nx, &mut f);
         }
+        let [fx, fy, mz] = f;
         CreepForces { fx, fy, mz }
     }
-
-    /// Whether the strip theory's adhesion tractions exceed μ p0 at an element centre
-    /// (CONTACT's validity check of the strip solution).
-    fn exceeds_bound(&self, a: f64, a_j: f64, s: StripSolution, phi_s: f64) -> bool {
-        let x_i = 2.0 * s.d - a_j;
-        let r = a_j - s.d;
-        self.elements.iter().any(|e| {
-            let x = e.u * a_j;
-            let sc = (a_j * a_j - x * x).max(0.0).sqrt() / a;
-            let sa = (r * r - (x - s.d).powi(2)).max(0.0).sqrt() / a;
-            let (tx, ty) = (s.kappa * (sc - sa), s.lambda * sc - (s.lambda - phi_s) * sa);
-            x > x_i && tx * tx + ty * ty > 1.0
-        })
-    }
-}
-
-/// The part of the strip's semi-ellipse √(a_j² − x²) ahead of x_i (a circular segment): its
-/// area (m²) and first moment about x = 0 (m³).
-fn segment(a_j: f64, x_i: f64) -> (f64, f64) {
-    let cos_t = (x_i / a_j).clamp(-1.0, 1.0);
-    let sin_t = (1.0 - cos_t * cos_t).sqrt();
-    (
-        0.5 * a_j * a_j * (cos_t.acos() - sin_t * cos_t),
-        a_j * a_j * a_j * sin_t * sin_t * sin_t / 3.0,
-    )
-}
-
-/// ∫ over the adhesion zone of (p_x, p_y, x·p_y) in units of μ p0/a (m², m², m³), from the
-/// segment `c0`, `c1` of the bound and the whole adhesion semi-ellipse (radius a_j − d, centre d).
-fn adhesion_integrals(a_j: f64, s: StripSolution, phi_s: f64, c0: f64, c1: f64) -> [f64; 3] {
-    let r = a_j - s.d;
-    let a0 = 0.5 * PI * r * r;
-    let a1 = s.d * a0;
-    let lambda_a = s.lambda - phi_s;
-    [
-        s.kappa * (c0 - a0),
-        s.lambda * c0 - lambda_a * a0,
-        s.lambda * c1 - lambda_a * a1,
-    ]
 }
 
 /// One checked FaStrip evaluation (builds the solver; for repeated calls keep a [`Fastrip`]).

@@ -260,13 +260,14 @@ fn avx_and_baseline_paths_give_the_same_bits() {
                 };
                 // SAFETY: AVX was detected above.
                 let (plain, avx) = if call.phi_s.abs() > 1.0 {
-                    (f.integrate_lanes::<true>(&call), unsafe {
+                    (f.integrate_lanes::<true, 2, { LANES / 2 }>(&call), unsafe {
                         f.integrate_avx::<true>(&call)
                     })
                 } else {
-                    (f.integrate_lanes::<false>(&call), unsafe {
-                        f.integrate_avx::<false>(&call)
-                    })
+                    (
+                        f.integrate_lanes::<false, 2, { LANES / 2 }>(&call),
+                        unsafe { f.integrate_avx::<false>(&call) },
+                    )
                 };
                 assert!(same(plain, avx), "{c:?}: {plain:?} against {avx:?}");
             }

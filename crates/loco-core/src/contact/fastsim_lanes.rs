@@ -12,9 +12,10 @@
 
 use std::ops::{Add, Mul, Sub};
 
-/// The same quantity of `W` strips: two fill an SSE2 register, four an AVX one.
+/// The same quantity of `W` strips: two fill an SSE2 register, four an AVX one (also FaStrip's
+/// march, `fastrip_lanes`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Lanes<const W: usize>([f64; W]);
+pub(super) struct Lanes<const W: usize>(pub(super) [f64; W]);
 
 macro_rules! lane_op {
     ($trait:ident, $method:ident, $op:tt) => {
@@ -33,8 +34,13 @@ lane_op!(Mul, mul, *);
 
 impl<const W: usize> Lanes<W> {
     #[inline(always)]
-    fn splat(v: f64) -> Self {
+    pub(super) fn splat(v: f64) -> Self {
         Self([v; W])
+    }
+    /// Lane by lane `f(self, rhs)`.
+    #[inline(always)]
+    pub(super) fn zip(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+        self.map2(rhs, f)
     }
     #[inline(always)]
     fn map2(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
@@ -45,11 +51,11 @@ impl<const W: usize> Lanes<W> {
         Self(out)
     }
     #[inline(always)]
-    fn div(self, rhs: Self) -> Self {
+    pub(super) fn div(self, rhs: Self) -> Self {
         self.map2(rhs, |a, b| a / b)
     }
     #[inline(always)]
-    fn sqrt(self) -> Self {
+    pub(super) fn sqrt(self) -> Self {
         let mut out = self.0;
         for o in &mut out {
             *o = o.sqrt();
@@ -57,12 +63,20 @@ impl<const W: usize> Lanes<W> {
         Self(out)
     }
     #[inline(always)]
-    fn max(self, floor: Self) -> Self {
+    pub(super) fn max(self, floor: Self) -> Self {
         self.map2(floor, f64::max)
     }
     #[inline(always)]
-    fn min(self, cap: Self) -> Self {
+    pub(super) fn min(self, cap: Self) -> Self {
         self.map2(cap, f64::min)
+    }
+    #[inline(always)]
+    pub(super) fn clamp(self, lo: f64, hi: f64) -> Self {
+        let mut out = self.0;
+        for o in &mut out {
+            *o = o.clamp(lo, hi);
+        }
+        Self(out)
     }
 }
 

@@ -19,7 +19,7 @@ pub mod elliptic;
 #[cfg(test)]
 mod en15302_data;
 pub mod fastrip;
-mod fastrip_march;
+mod fastrip_lanes;
 pub mod fastsim;
 mod fastsim_lanes;
 pub mod fastsim_table;
