@@ -48,11 +48,14 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     let cant = 0.1;
     let speed = balanced_speed(cant);
     // 200 m of steady curve after the transition ends under the last wheelset, then a window of
-    // 1.6 m (57 ms) sampled every 0.1 m: the leading wheelsets run in two-point contact at the
-    // new wheel's flange jump (-7.8 mm, 7.9 mm on the table), and the bogie frames ring there
-    // at 1–3e-3 rad/s² (RK4 at 0.25 ms alike), a chatter of ~1e-8 rad. A single instant reads
-    // anything in that band (0.95e-3 at 300 m, 3.2e-3 at 301 m): the quasi-static state is
-    // checked on the window's mean, the chatter bounded by its largest value.
+    // 1.6 m (57 ms) sampled every 0.1 m: every body at rest at every instant, not on average.
+    // Issue 17: the traction rods' 49 Hz modes (rod yaw and pitch on their rubber nodes) had
+    // 0.13 % damping while the nodes had none, so the transition's excitation rang for seconds
+    // (e-fold in 2.4 s, 68 m): frame roll 3.1e-3 rad/s² and rod yaw 0.23 rad/s² here, the
+    // same at table steps of 0.1, 0.05 and 0.025 mm (not the table's kinks) and with RK4 at
+    // 0.25 ms. With the nodes' hysteresis (`traction_rod.bushing_damping_time`, ζ ≈ 5 %) it
+    // has died out (frames ≤ 1.3e-5). The largest left is the rotary arms' own 81-85 Hz ring
+    // (6.4e-4 rad/s²): their nodes have no damping, their modes 0.2-0.3 %.
     let window: Vec<CurveRun> = (0..16)
         .into_par_iter()
         .map(|k| {
@@ -64,53 +67,27 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         })
         .collect();
     let r = &window[0];
-    // The carbody, frames, wheelsets, motors and hollow shafts at rest in the track frame:
-    // accelerations below 1e-3 m/s² (rad/s²), except along the track: with no traction the
-    // curving resistance slows the whole vehicle against the frame moving at V (every body by
-    // the same ẍ, and the wheelsets' spin by ẍ/r0: checked). The light links (traction rods,
-    // 80 kg, and rotary arms, 180 kg, measured 2e-2 to 6e-2 and 1e-3 to 4e-3 rad/s²) ring at
-    // their own high frequencies on straight track too and are left out.
-    let mut main: Vec<usize> = (CARBODY + Y..CARBODY + 6).collect();
-    for b in 0..N_BOGIES {
-        main.extend(frame(b) + Y..frame(b) + 6);
-    }
+    // Every body at rest in the track frame, the light links (traction rods, 80 kg, rotary
+    // arms, 180 kg) too: accelerations below 1e-3 m/s² (rad/s²), except along the track: with
+    // no traction the curving resistance slows the whole vehicle against the frame moving at V
+    // (every body by the same ẍ, and the wheelsets' spin by ẍ/r0: checked below).
+    let mut along: Vec<usize> = vec![CARBODY + X, frame(0) + X, frame(1) + X];
     for w in 0..N_WHEELSETS {
-        main.extend([
-            wheelset(w) + Y,
-            wheelset(w) + Z,
-            wheelset(w) + ROLL,
-            wheelset(w) + YAW,
-        ]);
-        main.extend(motor(w) + Y..motor(w) + 6);
-        main.extend(hollow_shaft(w)..hollow_shaft(w) + 3);
+        along.extend([wheelset(w) + X, wheelset(w) + PITCH, motor(w) + X]);
     }
     let names = dof_names();
-    let worst = |value: &dyn Fn(usize) -> f64| {
-        main.iter()
-            .map(|&i| (value(i).abs(), i))
-            .fold((0.0, 0), |a, b| if b.0 > a.0 { b } else { a })
-    };
-    let n = window.len() as f64;
-    let (mean, at) = worst(&|i| window.iter().map(|r| r.dy[N_DOF + i]).sum::<f64>() / n);
-    let (chatter, chatter_at) = worst(&|i| {
-        window
-            .iter()
-            .map(|r| r.dy[N_DOF + i].abs())
-            .fold(0.0, f64::max)
-    });
+    let (largest, at) = (0..N_DOF)
+        .filter(|i| !along.contains(i))
+        .flat_map(|i| window.iter().map(move |r| (r.dy[N_DOF + i].abs(), i)))
+        .fold((0.0, 0), |a, b| if b.0 > a.0 { b } else { a });
     println!(
-        "largest mean acceleration {mean:.2e} ({}), largest instant {chatter:.2e} ({})",
-        names[at], names[chatter_at]
-    );
-    assert!(
-        mean < 1e-3,
-        "largest mean acceleration {mean:.2e} at {}",
+        "largest acceleration in the window {largest:.2e} ({})",
         names[at]
     );
     assert!(
-        chatter < 5e-3,
-        "chatter {chatter:.2e} at {}",
-        names[chatter_at]
+        largest < 1e-3,
+        "acceleration {largest:.2e} at {}",
+        names[at]
     );
     let acc = &r.dy[N_DOF..2 * N_DOF];
     let drift = acc[CARBODY + X];

@@ -229,6 +229,10 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
             r.pos("traction_rod.frame_bushing_stiffness_z")?,
         ),
     ];
+    // Rubber's hysteresis as a damping time on the same series spring (two Kelvin nodes of one
+    // time constant in series are one of it): without it the rods' 49 Hz modes ring for seconds.
+    let rod_tau = r.non_neg("traction_rod.bushing_damping_time")?;
+    let rod_c = rod_k.map(|k| rod_tau * k);
     for b in 0..N_BOGIES {
         let xb = layout.bogie_x[b];
         let fr = body_frame(b);
@@ -314,11 +318,14 @@ pub fn build_suspension(p: &ParameterSet, layout: &Layout, bodies: &[Body]) -> R
             hardening_stiffness: bump_hard_k,
         });
         let rod_end = rod.frame_end(layout, b);
-        s.bushings.push(bushing(
-            format!("traction_rod_{tag}"),
-            attach(bodies, fr, body_traction_rod(b), rod_end),
-            rod_k,
-        ));
+        s.bushings.push(Bushing {
+            damping: rod_c,
+            ..bushing(
+                format!("traction_rod_{tag}"),
+                attach(bodies, fr, body_traction_rod(b), rod_end),
+                rod_k,
+            )
+        });
     }
 
     // Drive: motor mounts, gearbox bearings, six-link coupling.
