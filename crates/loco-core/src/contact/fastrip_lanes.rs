@@ -9,7 +9,7 @@
 //! half-length a_j (u = x/a_j), tractions in Pa.
 
 use super::fastrip::{Call, StripLanes};
-use super::fastsim_lanes::Lanes as Simd;
+use super::fastsim_lanes::{Lanes as Simd, INSIDE_BOUND};
 use std::f64::consts::PI;
 
 /// Strips integrated together: the default grid's 10 strips and 2 empty ones, three AVX
@@ -88,6 +88,7 @@ pub(super) fn march<const SLIP: bool, const FALLBACK: bool, const W: usize, cons
         Simd::splat(f64::MAX),
         Simd::splat(1.0),
     );
+    let inside = Simd::splat(INSIDE_BOUND);
     for e in elements {
         let (du, u_mid, shape) = (
             Simd::splat(e.du),
@@ -99,21 +100,25 @@ pub(super) fn march<const SLIP: bool, const FALLBACK: bool, const W: usize, cons
             px[g] = px[g] - du * gx[g];
             py[g] = py[g] - du * (gy0[g] + u_mid * gy1[g]);
             let bound = bound_j[g] * shape;
-            let norm = (px[g] * px[g] + py[g] * py[g]).sqrt().max(floor);
-            // Finite even for p = 0 (where it multiplies zero tractions).
-            let to_bound = bound.div(norm).min(cap);
-            if SLIP {
-                let w = (slip_offset[g] - e_e).clamp(0.0, 1.0);
-                let wt = w * to_bound;
-                let ty = wt * py[g];
-                qx[g] = qx[g] + wt * px[g];
-                qy[g] = qy[g] + ty;
-                qyu[g] = qyu[g] + ty * u;
-                wb[g] = wb[g] + w * bound;
+            let norm2 = px[g] * px[g] + py[g] * py[g];
+            // Ahead of the slip zones the scale is all that is read: exactly 1 where every lane
+            // is inside the bound (as in FASTSIM's lanes), so the root and division are skipped.
+            if SLIP || !norm2.all_le(bound * bound * inside) {
+                // Finite even for p = 0 (where it multiplies zero tractions).
+                let to_bound = bound.div(norm2.sqrt().max(floor)).min(cap);
+                if SLIP {
+                    let w = (slip_offset[g] - e_e).clamp(0.0, 1.0);
+                    let wt = w * to_bound;
+                    let ty = wt * py[g];
+                    qx[g] = qx[g] + wt * px[g];
+                    qy[g] = qy[g] + ty;
+                    qyu[g] = qyu[g] + ty * u;
+                    wb[g] = wb[g] + w * bound;
+                }
+                let scale = to_bound.min(one);
+                px[g] = px[g] * scale;
+                py[g] = py[g] * scale;
             }
-            let scale = to_bound.min(one);
-            px[g] = px[g] * scale;
-            py[g] = py[g] * scale;
             if FALLBACK {
                 sx[g] = sx[g] + px[g];
                 sy[g] = sy[g] + py[g];
