@@ -47,6 +47,8 @@ struct StripLanes {
     half_length: [f64; LANES],
     /// Pressure shape factor of the strip.
     shape: [f64; LANES],
+    /// The lane of each of the group's strips, in the strips' order (the order of the sums).
+    lane_of_strip: [usize; LANES],
 }
 
 /// Normal pressure distribution that bounds the tangential traction.
@@ -123,11 +125,26 @@ impl Fastsim {
             let s = (1.0 - eta * eta).sqrt();
             (eta, s, if elliptic { s } else { s * s })
         };
+        // A group's strips go to the lanes outermost first, so that strips of similar width share
+        // a register: the outer ones saturate first, and a register whose lanes are all inside
+        // the bound skips the projection's root and division (`fastsim_lanes`). The sums still
+        // run in the strips' order.
         let strips: Vec<StripLanes> = (0..ny.div_ceil(LANES))
             .map(|group| {
                 let mut lanes = StripLanes::default();
-                for lane in 0..LANES {
-                    let j = group * LANES + lane;
+                let mut order: [usize; LANES] = std::array::from_fn(|i| i);
+                let eta_of = |i: usize| {
+                    let j = group * LANES + i;
+                    if j < ny {
+                        strip(j).0.abs()
+                    } else {
+                        -1.0
+                    }
+                };
+                order.sort_by(|&p, &q| eta_of(q).total_cmp(&eta_of(p)));
+                for (lane, &i) in order.iter().enumerate() {
+                    let j = group * LANES + i;
+                    lanes.lane_of_strip[i] = lane;
                     if j < ny {
                         (lanes.eta[lane], lanes.half_length[lane], lanes.shape[lane]) = strip(j);
                     }
@@ -208,7 +225,7 @@ impl Fastsim {
                 bound: std::array::from_fn(|l| bound_peak * group.shape[l]),
             };
             let sums = integrate_strips(&inputs, &self.elements, eta_l2, phi, inv_l3);
-            for l in 0..LANES {
+            for &l in &group.lane_of_strip {
                 let area = 2.0 * a_j[l] / nx * dy;
                 fx += sums.sx[l] * area;
                 fy += sums.sy[l] * area;
@@ -273,115 +290,5 @@ pub(super) fn check_contact_inputs(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::super::kalker::{kalker_coefficients, linear_creep_forces};
-    use super::*;
-
-    const A: f64 = 8e-3;
-    const B: f64 = 4e-3;
-    const N: f64 = 82e3;
-    const G: f64 = 82e9;
-
-    fn creep(xi: f64, eta: f64, phi: f64) -> Creepages {
-        Creepages {
-            longitudinal: xi,
-            lateral: eta,
-            spin: phi,
-        }
-    }
-
-    fn solver(n: usize, bound: TractionBound) -> Fastsim {
-        Fastsim::new(FastsimParams {
-            nx: n,
-            ny: n,
-            bound,
-            shear_modulus: G,
-            ..FastsimParams::default()
-        })
-        .unwrap()
-    }
-
-    #[test]
-    fn small_creepage_tends_to_linear_theory() {
-        for aob in [0.3_f64, 1.0, 2.0, 5.0] {
-            let (a, b) = (
-                A * aob.sqrt() / 2.0_f64.sqrt(),
-                B * 2.0_f64.sqrt() / aob.sqrt(),
-            );
-            let coef = kalker_coefficients(a / b, 0.28).unwrap();
-            let s = solver(100, TractionBound::Parabolic);
-            for c in [
-                creep(1e-7, 0.0, 0.0),
-                creep(0.0, 1e-7, 0.0),
-                creep(0.0, 0.0, 1e-5),
-            ] {
-                let f = s.creep_forces(a, b, N, 0.3, &c);
-                let lin = linear_creep_forces(a, b, G, &coef, &c);
-                let (got, want) = (f.fx + f.fy, lin.fx + lin.fy);
-                assert!(
-                    (got / want - 1.0).abs() < 0.01,
-                    "a/b={aob}: {got} vs {want} for {c:?}"
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn saturates_at_mu_n_on_any_grid() {
-        for n in [1, 3, 10, 40] {
-            for bound in [TractionBound::Parabolic, TractionBound::Elliptic] {
-                let s = solver(n, bound);
-                let f = s.creep_forces(A, B, N, 0.3, &creep(0.3, -0.4, 0.0));
-                let total = f.fx.hypot(f.fy);
-                assert!((total / (0.3 * N) - 1.0).abs() < 1e-9, "n={n}: {total}");
-                // Full slip: FASTSIM's traction points along (ξ/L1, η/L2) = (C11 ξ, C22 η)·const.
-                let coef = kalker_coefficients(A / B, 0.28).unwrap();
-                let want = (coef.c22 * -0.4) / (coef.c11 * 0.3);
-                assert!((f.fy / f.fx - want).abs() < 1e-9);
-            }
-        }
-    }
-
-    #[test]
-    fn signs_follow_kalker() {
-        let s = solver(20, TractionBound::Parabolic);
-        let f = s.creep_forces(A, B, N, 0.3, &creep(1e-4, 0.0, 0.0));
-        assert!(f.fx < 0.0 && f.fy.abs() < 1e-9 * f.fx.abs());
-        let f = s.creep_forces(A, B, N, 0.3, &creep(0.0, 1e-4, 0.0));
-        assert!(f.fy < 0.0 && f.mz > 0.0);
-        let f = s.creep_forces(A, B, N, 0.3, &creep(0.0, 0.0, 0.1));
-        assert!(f.fy < 0.0 && f.mz < 0.0);
-    }
-
-    #[test]
-    fn kalker_factor_scales_small_creepage_forces() {
-        let base = solver(20, TractionBound::Parabolic);
-        let half = Fastsim::new(FastsimParams {
-            kalker_factor: 0.5,
-            ..*base.params()
-        })
-        .unwrap();
-        let c = creep(1e-7, 1e-7, 0.0);
-        let f1 = base.creep_forces(A, B, N, 0.3, &c);
-        let f2 = half.creep_forces(A, B, N, 0.3, &c);
-        assert!((f2.fx / f1.fx - 0.5).abs() < 1e-9);
-    }
-
-    #[test]
-    fn bad_input_names_the_argument() {
-        let p = FastsimParams::default();
-        let c = creep(0.0, 0.0, 0.0);
-        let err = fastsim(0.0, B, N, 0.3, &c, p).unwrap_err();
-        assert!(err.to_string().contains("`a`"));
-        assert_eq!(
-            fastsim(A, B, 0.0, 0.3, &creep(1e-3, 0.0, 0.0), p).unwrap(),
-            CreepForces::default()
-        );
-        let err = fastsim(A, B, N, -0.1, &c, p).unwrap_err();
-        assert!(err.to_string().contains("mu"));
-        let err = fastsim(A, B, N, 0.3, &c, FastsimParams { nx: 0, ..p }).unwrap_err();
-        assert!(err.to_string().contains("grid.nx"));
-        let err = fastsim(A, B, N, 0.3, &creep(f64::NAN, 0.0, 0.0), p).unwrap_err();
-        assert!(err.to_string().contains("creepage_long"));
-    }
-}
+#[path = "fastsim_tests.rs"]
+mod tests;
