@@ -64,6 +64,18 @@ pub(super) struct Element {
     pub(super) u_mid: f64,
 }
 
+/// `LANES` per-strip values as `G` registers of `W` lanes.
+#[inline(always)]
+fn pack<const W: usize, const G: usize>(a: &[f64; LANES]) -> [Simd<W>; G] {
+    std::array::from_fn(|g| Simd(std::array::from_fn(|l| a[W * g + l])))
+}
+
+/// The registers' lanes back as `LANES` per-strip values.
+#[inline(always)]
+fn unpack<const W: usize, const G: usize>(v: &[Simd<W>; G]) -> [f64; LANES] {
+    std::array::from_fn(|l| v[l / W].0[l % W])
+}
+
 /// FASTSIM over `elements` for [`LANES`] strips, `G` groups of `W` lanes of one SIMD register
 /// each (`W·G = LANES`); `SLIP`: accumulate the slip-zone sums, `FALLBACK`: FASTSIM's own sums.
 /// The state lives in registers for the march ([`Simd`] values, as in FASTSIM's lanes) and every
@@ -74,15 +86,27 @@ pub(super) fn march<const SLIP: bool, const FALLBACK: bool, const W: usize, cons
     lanes: &Lanes,
     st: &mut LaneState,
 ) {
-    let pack = |a: &[f64; LANES]| -> [Simd<W>; G] {
-        std::array::from_fn(|g| Simd(std::array::from_fn(|l| a[W * g + l])))
-    };
-    let (gx, gy0, gy1) = (pack(&lanes.gx), pack(&lanes.gy0), pack(&lanes.gy1));
-    let (bound_j, slip_offset) = (pack(&lanes.bound_j), pack(&lanes.slip_offset));
-    let (mut px, mut py) = (pack(&st.px), pack(&st.py));
-    let (mut qx, mut qy, mut qyu, mut wb) =
-        (pack(&st.qx), pack(&st.qy), pack(&st.qyu), pack(&st.wb));
-    let (mut sx, mut sy, mut syu) = (pack(&st.sx), pack(&st.sy), pack(&st.syu));
+    let (gx, gy0, gy1) = (
+        pack::<W, G>(&lanes.gx),
+        pack::<W, G>(&lanes.gy0),
+        pack::<W, G>(&lanes.gy1),
+    );
+    let (bound_j, slip_offset) = (
+        pack::<W, G>(&lanes.bound_j),
+        pack::<W, G>(&lanes.slip_offset),
+    );
+    let (mut px, mut py) = (pack::<W, G>(&st.px), pack::<W, G>(&st.py));
+    let (mut qx, mut qy, mut qyu, mut wb) = (
+        pack::<W, G>(&st.qx),
+        pack::<W, G>(&st.qy),
+        pack::<W, G>(&st.qyu),
+        pack::<W, G>(&st.wb),
+    );
+    let (mut sx, mut sy, mut syu) = (
+        pack::<W, G>(&st.sx),
+        pack::<W, G>(&st.sy),
+        pack::<W, G>(&st.syu),
+    );
     let (floor, cap, one) = (
         Simd::splat(f64::MIN_POSITIVE),
         Simd::splat(f64::MAX),
@@ -126,20 +150,15 @@ pub(super) fn march<const SLIP: bool, const FALLBACK: bool, const W: usize, cons
             }
         }
     }
-    let unpack = |v: [Simd<W>; G], a: &mut [f64; LANES]| {
-        for (l, x) in a.iter_mut().enumerate() {
-            *x = v[l / W].0[l % W];
-        }
-    };
-    unpack(px, &mut st.px);
-    unpack(py, &mut st.py);
-    unpack(qx, &mut st.qx);
-    unpack(qy, &mut st.qy);
-    unpack(qyu, &mut st.qyu);
-    unpack(wb, &mut st.wb);
-    unpack(sx, &mut st.sx);
-    unpack(sy, &mut st.sy);
-    unpack(syu, &mut st.syu);
+    st.px = unpack(&px);
+    st.py = unpack(&py);
+    st.qx = unpack(&qx);
+    st.qy = unpack(&qy);
+    st.qyu = unpack(&qyu);
+    st.wb = unpack(&wb);
+    st.sx = unpack(&sx);
+    st.sy = unpack(&sy);
+    st.syu = unpack(&syu);
 }
 
 /// The strip theory of [`LANES`] strips: slip half-length d (m; d = a_j means full slip) and the
@@ -158,13 +177,10 @@ pub(super) fn strip_lanes<const W: usize, const G: usize>(
     k: &Call,
     nx: f64,
 ) -> (Lanes, StripSolutions) {
-    let pack = |a: &[f64; LANES]| -> [Simd<W>; G] {
-        std::array::from_fn(|g| Simd(std::array::from_fn(|l| a[W * g + l])))
-    };
     let (eta, half_length, inv_half) = (
-        pack(&group.eta),
-        pack(&group.half_length),
-        pack(&group.inv_half_length),
+        pack::<W, G>(&group.eta),
+        pack::<W, G>(&group.half_length),
+        pack::<W, G>(&group.inv_half_length),
     );
     let s = Simd::<W>::splat;
     let (a, b, inv_a) = (s(k.a), s(k.b), s(k.inv_a));
@@ -229,11 +245,8 @@ pub(super) fn exceeds_bound<const W: usize, const G: usize>(
     sol: &StripSolutions,
     phi_s: f64,
 ) -> [bool; LANES] {
-    let pack = |a: &[f64; LANES]| -> [Simd<W>; G] {
-        std::array::from_fn(|g| Simd(std::array::from_fn(|l| a[W * g + l])))
-    };
-    let (a_j, d) = (pack(a_j), pack(&sol.d));
-    let (kappa, lambda) = (pack(&sol.kappa), pack(&sol.lambda));
+    let (a_j, d) = (pack::<W, G>(a_j), pack::<W, G>(&sol.d));
+    let (kappa, lambda) = (pack::<W, G>(&sol.kappa), pack::<W, G>(&sol.lambda));
     let (zero, two, phi_s) = (Simd::splat(0.0), Simd::splat(2.0), Simd::splat(phi_s));
     let lambda_a: [Simd<W>; G] = std::array::from_fn(|g| lambda[g] - phi_s);
     let kappa2: [Simd<W>; G] = std::array::from_fn(|g| kappa[g] * kappa[g]);
@@ -277,11 +290,11 @@ pub(super) fn add_strip_forces<const FALLBACK: bool, const W: usize, const G: us
     nx: f64,
     f: &mut [f64; 3],
 ) {
-    let pack = |a: &[f64; LANES]| -> [Simd<W>; G] {
-        std::array::from_fn(|g| Simd(std::array::from_fn(|l| a[W * g + l])))
-    };
-    let unpack = |v: &[Simd<W>; G]| -> [f64; LANES] { std::array::from_fn(|l| v[l / W].0[l % W]) };
-    let (a_j, d, y) = (pack(&lanes.a_j), pack(&sol.d), pack(&lanes.y));
+    let (a_j, d, y) = (
+        pack::<W, G>(&lanes.a_j),
+        pack::<W, G>(&sol.d),
+        pack::<W, G>(&lanes.y),
+    );
     let s = Simd::<W>::splat;
     let (one, two, three, half_pi) = (s(1.0), s(2.0), s(3.0), s(0.5 * PI));
     // The segment's angle θ (cos θ = x_i/a_j) and its first moment a_j³ sin³θ / 3.
@@ -301,9 +314,18 @@ pub(super) fn add_strip_forces<const FALLBACK: bool, const W: usize, const G: us
             c1[l] = moment[l];
         }
     }
-    let (c0, c1) = (pack(&c0), pack(&c1));
-    let (kappa, lambda, phi_s) = (pack(&sol.kappa), pack(&sol.lambda), s(k.phi_s));
-    let (qx, qy, qyu, wb) = (pack(&st.qx), pack(&st.qy), pack(&st.qyu), pack(&st.wb));
+    let (c0, c1) = (pack::<W, G>(&c0), pack::<W, G>(&c1));
+    let (kappa, lambda, phi_s) = (
+        pack::<W, G>(&sol.kappa),
+        pack::<W, G>(&sol.lambda),
+        s(k.phi_s),
+    );
+    let (qx, qy, qyu, wb) = (
+        pack::<W, G>(&st.qx),
+        pack::<W, G>(&st.qy),
+        pack::<W, G>(&st.qyu),
+        pack::<W, G>(&st.wb),
+    );
     let (scale, zero) = (s(k.strip_scale), s(0.0));
     let mut terms = [[zero; G]; 9];
     for g in 0..G {
@@ -322,7 +344,11 @@ pub(super) fn add_strip_forces<const FALLBACK: bool, const W: usize, const G: us
         terms[4][g] = qy[g] * w;
         terms[5][g] = (a_j[g] * qyu[g] - y[g] * qx[g]) * w;
         if FALLBACK {
-            let (sx, sy, syu) = (pack(&st.sx), pack(&st.sy), pack(&st.syu));
+            let (sx, sy, syu) = (
+                pack::<W, G>(&st.sx),
+                pack::<W, G>(&st.sy),
+                pack::<W, G>(&st.syu),
+            );
             let area = (two * a_j[g]).div(s(nx)) * s(k.dy);
             terms[6][g] = sx[g] * area;
             terms[7][g] = sy[g] * area;
