@@ -32,6 +32,7 @@
 //!   angle, flange contact, ΣY), named once.
 
 pub mod bodies;
+mod bushing_lanes;
 pub mod channel_set;
 pub mod creep_decay;
 pub mod creep_model;
