@@ -54,6 +54,7 @@ pub mod parameters;
 pub mod presets;
 pub mod rail_plane;
 pub mod response_psd;
+mod row_groups;
 pub mod run;
 pub mod run_limits;
 pub mod run_metrics;
