@@ -20,10 +20,10 @@ use std::cell::RefCell;
 
 #[cfg(target_arch = "x86_64")]
 #[path = "bushing_lanes_avx.rs"]
-mod avx;
+pub(super) mod avx;
 
 /// Elements per lane group.
-const W: usize = 4;
+pub(super) const W: usize = 4;
 
 /// The constants of `W` elements of one kind, lane `l` of each array the `l`-th element's;
 /// lanes without an element join body 0 to itself with zeros, and their forces are dropped.

@@ -33,31 +33,31 @@ pub(super) unsafe fn compute_avx(
     }
 }
 
-type V3 = [__m256d; 3];
+pub(in crate::vehicle) type V3 = [__m256d; 3];
 
 // The lane-wise operations: each an IEEE operation per lane, as the scalar code's.
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn mul(a: __m256d, b: __m256d) -> __m256d {
+pub(in crate::vehicle) unsafe fn mul(a: __m256d, b: __m256d) -> __m256d {
     _mm256_mul_pd(a, b)
 }
 
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn dif(a: __m256d, b: __m256d) -> __m256d {
+pub(in crate::vehicle) unsafe fn dif(a: __m256d, b: __m256d) -> __m256d {
     _mm256_sub_pd(a, b)
 }
 
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn sum(a: __m256d, b: __m256d) -> __m256d {
+pub(in crate::vehicle) unsafe fn sum(a: __m256d, b: __m256d) -> __m256d {
     _mm256_add_pd(a, b)
 }
 
 /// [`super::kinematics::cross`] lane by lane (the same products and differences).
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn cross(a: V3, b: V3) -> V3 {
+pub(in crate::vehicle) unsafe fn cross(a: V3, b: V3) -> V3 {
     [
         dif(mul(a[1], b[2]), mul(a[2], b[1])),
         dif(mul(a[2], b[0]), mul(a[0], b[2])),
@@ -67,13 +67,13 @@ unsafe fn cross(a: V3, b: V3) -> V3 {
 
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn add(a: V3, b: V3) -> V3 {
+pub(in crate::vehicle) unsafe fn add(a: V3, b: V3) -> V3 {
     [sum(a[0], b[0]), sum(a[1], b[1]), sum(a[2], b[2])]
 }
 
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn sub(a: V3, b: V3) -> V3 {
+pub(in crate::vehicle) unsafe fn sub(a: V3, b: V3) -> V3 {
     [dif(a[0], b[0]), dif(a[1], b[1]), dif(a[2], b[2])]
 }
 
@@ -107,7 +107,11 @@ unsafe fn scaled(s: __m256d, x: V3) -> V3 {
 /// Component `k` of the bodies' 6-vectors, one body per lane.
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn gather(bodies: &[usize; W], of: &[[f64; 6]; N_BODIES], k: usize) -> __m256d {
+pub(in crate::vehicle) unsafe fn gather(
+    bodies: &[usize; W],
+    of: &[[f64; 6]; N_BODIES],
+    k: usize,
+) -> __m256d {
     _mm256_set_pd(
         of[bodies[3]][k],
         of[bodies[2]][k],
@@ -119,7 +123,7 @@ unsafe fn gather(bodies: &[usize; W], of: &[[f64; 6]; N_BODIES], k: usize) -> __
 /// A quad's constant 3-vector as three registers (lane `l` from index `l` of each array).
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn v3(a: &[[f64; W]; 3]) -> V3 {
+pub(in crate::vehicle) unsafe fn v3(a: &[[f64; W]; 3]) -> V3 {
     // Each array is four contiguous f64 a reference holds: one unaligned load reads them.
     [
         _mm256_loadu_pd(a[0].as_ptr()),
@@ -131,7 +135,7 @@ unsafe fn v3(a: &[[f64; W]; 3]) -> V3 {
 /// Stores the lanes of a 3-vector into `out` (lane `l` at index `l` of each array).
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn store(x: V3, out: &mut [[f64; W]; 3]) {
+pub(in crate::vehicle) unsafe fn store(x: V3, out: &mut [[f64; W]; 3]) {
     // Each array is four contiguous f64 a mutable reference holds.
     for (o, x) in out.iter_mut().zip(x) {
         _mm256_storeu_pd(o.as_mut_ptr(), x);

@@ -38,6 +38,7 @@ pub mod creep_decay;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
+mod damper_lanes;
 pub mod decaying_states;
 pub mod elements;
 pub mod exponential_rk4;

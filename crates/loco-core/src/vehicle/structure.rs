@@ -4,6 +4,7 @@
 
 use super::bodies::{build_bodies, Body, Layout};
 use super::bushing_lanes::BushingLanes;
+use super::damper_lanes::DamperLanes;
 use super::elements::{Attachment, BodyStates, Wrenches};
 use super::kinematics::{point_motion, sub};
 use super::layout::{N_BODIES, N_DOF};
@@ -26,6 +27,8 @@ pub struct VehicleStructure {
     pub gravity: f64,
     /// `suspension.bushings` grouped for the time loop (the same forces, same bits).
     bushing_lanes: BushingLanes,
+    /// `suspension.dampers`' kinematics in lanes (the same strokes and arms, same bits).
+    pub(crate) damper_lanes: DamperLanes,
 }
 
 /// A vehicle as the model's entry points take it: a parameter set, built on the way in, or a
@@ -63,6 +66,7 @@ impl VehicleStructure {
         let suspension = build_suspension(&parameters, &layout, &bodies)?;
         let gravity = check_positive("track.gravity", parameters.get("track.gravity")?)?;
         let bushing_lanes = BushingLanes::new(&suspension.bushings);
+        let damper_lanes = DamperLanes::new(&suspension.dampers);
         Ok(Self {
             parameters,
             layout,
@@ -71,6 +75,7 @@ impl VehicleStructure {
             suspension,
             gravity,
             bushing_lanes,
+            damper_lanes,
         })
     }
 
