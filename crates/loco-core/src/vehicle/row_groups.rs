@@ -90,6 +90,79 @@ impl RowGroups {
     }
 }
 
+/// Rows of the same length evaluated four at a time, each lane with its own columns.
+///
+/// Why: the springs' deflection rows `J` and the dampers' elongation rows read different
+/// coordinates (their own wheelset's, their own bogie's), so they share no columns, but come in
+/// rows of equal length (a wheelset's three rows have 5, 3 and 3 terms, as the other
+/// wheelsets'). Four such rows take their `k`-th terms in one step. Each lane's sum is its row's
+/// own, from −0 term by term in the row's order; lanes without a row are dropped.
+#[derive(Debug, Clone, Default)]
+pub struct LaneRows {
+    groups: Vec<LaneGroup>,
+}
+
+#[derive(Debug, Clone)]
+struct LaneGroup {
+    /// Index of each row (lane) among the rows; up to four.
+    rows: Vec<usize>,
+    /// Per term: each lane's column and coefficient (column 0, coefficient 0 in empty lanes).
+    columns: Vec<[usize; 4]>,
+    coefficients: Vec<[f64; 4]>,
+}
+
+impl LaneRows {
+    /// The lanes of `rows`: rows of one length four at a time, in the rows' order.
+    pub fn new(rows: &[Sparse]) -> Self {
+        let mut lengths: Vec<usize> = rows.iter().map(Vec::len).collect();
+        lengths.sort_unstable();
+        lengths.dedup();
+        let mut groups = Vec::new();
+        for len in lengths {
+            let members: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].len() == len).collect();
+            for chunk in members.chunks(4) {
+                let mut columns = vec![[0; 4]; len];
+                let mut coefficients = vec![[0.0; 4]; len];
+                for (lane, &i) in chunk.iter().enumerate() {
+                    for (k, &(j, c)) in rows[i].iter().enumerate() {
+                        columns[k][lane] = j;
+                        coefficients[k][lane] = c;
+                    }
+                }
+                groups.push(LaneGroup {
+                    rows: chunk.to_vec(),
+                    columns,
+                    coefficients,
+                });
+            }
+        }
+        Self { groups }
+    }
+
+    /// Calls `f(i, Σ_k c_ik · x[j_ik])` for every row `i` (rows in no particular order).
+    #[inline(always)]
+    pub fn for_each(&self, x: &[f64], mut f: impl FnMut(usize, f64)) {
+        for g in &self.groups {
+            let mut sums = [-0.0; 4];
+            for (j, c) in g.columns.iter().zip(&g.coefficients) {
+                let xj = [x[j[0]], x[j[1]], x[j[2]], x[j[3]]];
+                for ((s, c), xj) in sums.iter_mut().zip(c).zip(xj) {
+                    *s += c * xj;
+                }
+            }
+            for (&i, s) in g.rows.iter().zip(sums) {
+                f(i, s);
+            }
+        }
+    }
+
+    /// `out[i] = Σ_k c_ik · x[j_ik]` for every row `i`.
+    #[inline]
+    pub fn apply(&self, x: &[f64], out: &mut [f64]) {
+        self.for_each(x, |i, s| out[i] = s);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -122,6 +195,34 @@ mod tests {
         ] {
             let mut out = vec![f64::NAN; rows.len()];
             groups.apply(&x, &mut out);
+            for (row, o) in rows.iter().zip(&out) {
+                let expected: f64 = row.iter().map(|&(j, c)| c * x[j]).sum();
+                assert_eq!(o.to_bits(), expected.to_bits());
+            }
+        }
+    }
+
+    #[test]
+    fn lanes_give_the_bits_of_one_row_at_a_time() {
+        // Nine rows of lengths 1 to 3 on their own columns (groups of four, padded lanes), and
+        // an empty one; inputs with zeros of both signs.
+        let mut rows: Vec<Sparse> = (0..9)
+            .map(|r| {
+                (0..1 + r % 3)
+                    .map(|k| ((r * 3 + k * 5) % 10, ((r + k) as f64 * 0.83).sin()))
+                    .collect()
+            })
+            .collect();
+        rows.push(vec![]);
+        let lanes = LaneRows::new(&rows);
+        for x in [
+            (0..10).map(|i| (i as f64 * 1.3).cos()).collect::<Vec<_>>(),
+            (0..10)
+                .map(|i| if i % 2 == 0 { 0.0 } else { -0.0 })
+                .collect(),
+        ] {
+            let mut out = vec![f64::NAN; rows.len()];
+            lanes.apply(&x, &mut out);
             for (row, o) in rows.iter().zip(&out) {
                 let expected: f64 = row.iter().map(|&(j, c)| c * x[j]).sum();
                 assert_eq!(o.to_bits(), expected.to_bits());

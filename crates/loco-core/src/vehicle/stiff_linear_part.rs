@@ -14,7 +14,7 @@
 
 use super::layout::N_DOF;
 use super::mass::MassMatrix;
-use super::row_groups::RowGroups;
+use super::row_groups::{LaneRows, RowGroups};
 use super::structure::VehicleStructure;
 use super::suspension::GEARBOX_BEARINGS;
 use crate::kept::Kept;
@@ -30,6 +30,8 @@ pub struct StiffLinearPart {
     n_dof: usize,
     /// Rows of `J`: deflection per coordinate (m/m, m/rad, rad/rad).
     rows: Vec<Sparse>,
+    /// The same rows in lanes, for [`Self::deflections`].
+    row_lanes: LaneRows,
     /// Columns of `B = M⁻¹ Jᵀ K`: acceleration per unit deflection, 1/s² (or m/(s²·rad)).
     response: Vec<Sparse>,
     /// Columns of `G = B (J B)⁻¹`: with it `P = G J` projects a motion onto the part that
@@ -98,6 +100,7 @@ impl StiffLinearPart {
             .collect();
         Self {
             n_dof,
+            row_lanes: LaneRows::new(&rows),
             rows,
             response,
             projection,
@@ -137,9 +140,7 @@ impl StiffLinearPart {
     /// `out = J x` (r values) for coordinates (or velocities, or accelerations) `x`.
     #[inline]
     pub fn deflections(&self, x: &[f64], out: &mut [f64]) {
-        for (o, row) in out.iter_mut().zip(&self.rows) {
-            *o = row.iter().map(|&(j, c)| c * x[j]).sum();
-        }
+        self.row_lanes.apply(x, out);
     }
 
     /// `out += scale · B z` (accelerations, 1/s² times the deflections' units).
