@@ -133,7 +133,7 @@ impl DamperLanes {
 
 #[cfg(target_arch = "x86_64")]
 mod avx {
-    use super::super::bushing_lanes::avx::{add, cross, gather, mul, store, sub, sum, v3, V3};
+    use super::super::bushing_lanes::avx::{add, cross, gather6, mul, store, sub, sum, v3, V3};
     use super::super::elements::BodyStates;
     use super::{DamperQuad, QuadMotion};
     use std::arch::x86_64::{__m256d, _mm256_storeu_pd};
@@ -150,33 +150,22 @@ mod avx {
     pub(super) unsafe fn motions(quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
         for (q, out) in quads.iter().zip(out) {
             let (a, b) = (&q.body_a, &q.body_b);
-            let (pos, vel) = (&s.position, &s.velocity);
+            let (ua, ub) = (gather6(a, &s.position), gather6(b, &s.position));
+            let (wa, wb) = (gather6(a, &s.velocity), gather6(b, &s.velocity));
             let (point_a, point_b) = (v3(&q.point_a), v3(&q.point_b));
             // `Attachment::relative_motion` (through `point_motion`) and `apply_pair`'s arms.
-            let rot_a = [gather(a, pos, 3), gather(a, pos, 4), gather(a, pos, 5)];
-            let rot_b = [gather(b, pos, 3), gather(b, pos, 4), gather(b, pos, 5)];
+            let rot_a = [ua[3], ua[4], ua[5]];
+            let rot_b = [ub[3], ub[4], ub[5]];
             let turn_a = cross(rot_a, point_a);
             let turn_b = cross(rot_b, point_b);
             let d = sub(
-                add(
-                    [gather(b, pos, 0), gather(b, pos, 1), gather(b, pos, 2)],
-                    turn_b,
-                ),
-                add(
-                    [gather(a, pos, 0), gather(a, pos, 1), gather(a, pos, 2)],
-                    turn_a,
-                ),
+                add([ub[0], ub[1], ub[2]], turn_b),
+                add([ua[0], ua[1], ua[2]], turn_a),
             );
-            let rate_a = [gather(a, vel, 3), gather(a, vel, 4), gather(a, vel, 5)];
-            let rate_b = [gather(b, vel, 3), gather(b, vel, 4), gather(b, vel, 5)];
-            let va = add(
-                [gather(a, vel, 0), gather(a, vel, 1), gather(a, vel, 2)],
-                cross(rate_a, point_a),
-            );
-            let vb = add(
-                [gather(b, vel, 0), gather(b, vel, 1), gather(b, vel, 2)],
-                cross(rate_b, point_b),
-            );
+            let rate_a = [wa[3], wa[4], wa[5]];
+            let rate_b = [wb[3], wb[4], wb[5]];
+            let va = add([wa[0], wa[1], wa[2]], cross(rate_a, point_a));
+            let vb = add([wb[0], wb[1], wb[2]], cross(rate_b, point_b));
             let v = sub(vb, va);
             let n = v3(&q.direction);
             // Four contiguous f64 each, which the references hold.
