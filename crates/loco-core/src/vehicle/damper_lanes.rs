@@ -113,21 +113,26 @@ impl DamperLanes {
                 unsafe { avx::motions(&self.quads, states, motions) };
                 return f(DamperMotions(motions));
             }
-            for (i, p) in placements.iter().enumerate() {
-                let (q, l) = (&mut motions[i / W], i % W);
-                let (d, v) = p.at.relative_motion(states);
-                q.along[l] = dot(d, p.direction);
-                q.rate[l] = dot(v, p.direction);
-                let (ua, ub) = (&states.position[p.at.body_a], &states.position[p.at.body_b]);
-                let arm_a = add(p.at.point_a, cross([ua[3], ua[4], ua[5]], p.at.point_a));
-                let arm_b = add(p.at.point_b, cross([ub[3], ub[4], ub[5]], p.at.point_b));
-                for k in 0..3 {
-                    q.arm_a[k][l] = arm_a[k];
-                    q.arm_b[k][l] = arm_b[k];
-                }
-            }
+            scalar_motions(placements, states, motions);
             f(DamperMotions(motions))
         })
+    }
+}
+
+/// The motions one damper at a time, with the scalar kinematics (where there is no AVX).
+fn scalar_motions(placements: &[DamperPlacement], states: &BodyStates, motions: &mut [QuadMotion]) {
+    for (i, p) in placements.iter().enumerate() {
+        let (q, l) = (&mut motions[i / W], i % W);
+        let (d, v) = p.at.relative_motion(states);
+        q.along[l] = dot(d, p.direction);
+        q.rate[l] = dot(v, p.direction);
+        let (ua, ub) = (&states.position[p.at.body_a], &states.position[p.at.body_b]);
+        let arm_a = add(p.at.point_a, cross([ua[3], ua[4], ua[5]], p.at.point_a));
+        let arm_b = add(p.at.point_b, cross([ub[3], ub[4], ub[5]], p.at.point_b));
+        for k in 0..3 {
+            q.arm_a[k][l] = arm_a[k];
+            q.arm_b[k][l] = arm_b[k];
+        }
     }
 }
 

@@ -43,4 +43,23 @@ fn the_lanes_give_the_strokes_and_forces_of_one_damper_at_a_time() {
         }
     });
     assert_eq!(bits(&got), bits(&expected));
+    // The scalar path (a processor without AVX) gives the same motions.
+    let mut scalar = vec![QuadMotion::default(); placements.len().div_ceil(W)];
+    scalar_motions(placements, &states, &mut scalar);
+    lanes.with_motions(placements, &states, false, |motions| {
+        for (q, s) in motions.0.iter().zip(&scalar) {
+            let b = |m: &QuadMotion| {
+                let mut v: Vec<u64> = m.along.iter().chain(&m.rate).map(|x| x.to_bits()).collect();
+                v.extend(
+                    m.arm_a
+                        .iter()
+                        .chain(&m.arm_b)
+                        .flatten()
+                        .map(|x| x.to_bits()),
+                );
+                v
+            };
+            assert_eq!(b(q), b(s));
+        }
+    });
 }
