@@ -73,6 +73,21 @@ impl DamperElement {
     }
 }
 
+impl DamperElement {
+    /// [`Self::apply`] with the placement's lever arms on A and B already turned with the
+    /// bodies (m, `DamperMotions::arms`).
+    #[inline]
+    pub fn apply_at(&self, arms: &[[f64; 3]; 2], force: f64, wrenches: &mut Wrenches) {
+        let force = force * self.placement.count;
+        let n = self.placement.direction;
+        self.placement.at.apply_pair_at(
+            arms,
+            [-force * n[0], -force * n[1], -force * n[2]],
+            wrenches,
+        );
+    }
+}
+
 /// The internal states of `dampers` that decay at a constant rate (the linear Maxwell laws,
 /// [`Damper::linear_state_rate_per_s`]), which the exponential scheme solves exactly, with their
 /// elongation per coordinate of `structure` (the bodies' small-motion kinematics, as

@@ -23,6 +23,7 @@
 //! Numerica 19, 2010, §2.1: `φ_{k+1}(z) = (φ_k(z) − 1/k!)/z`, `φ_0 = e^z`), and `x_d` is
 //! `J q + c0 − δ` with the stage's coordinates.
 
+use super::row_groups::LaneRows;
 use super::stiff_linear_part::Sparse;
 use nalgebra::Matrix4;
 
@@ -39,6 +40,9 @@ pub struct DecayingState {
     pub offset: f64,
 }
 
+// The reference definitions: the time loop takes the rows' sums in lanes (`LaneRows`), and the
+// tests check it against these.
+#[cfg(test)]
 impl DecayingState {
     /// The linearised elongation `J q + c0` (m) of the state vector (or stage) `y`.
     #[inline]
@@ -59,6 +63,8 @@ pub struct DecayingStates {
     states: Vec<DecayingState>,
     /// Number of coordinates `q` (the state is `[q | q̇ | other states]`).
     n_dof: usize,
+    /// The states' elongation rows `J` in lanes: each row's sum as the state's own.
+    elongations: LaneRows,
 }
 
 /// Per state, over a time `τ`: `[e^{−rτ}, τ φ1, τ² φ2, τ³ φ3]` at `z = −rτ`.
@@ -71,7 +77,12 @@ impl DecayingStates {
     /// The states `states` (each rate finite and ≥ 0) of a system with `n_dof` coordinates.
     pub fn new(n_dof: usize, states: Vec<DecayingState>) -> Self {
         debug_assert!(states.iter().all(|s| s.rate.is_finite() && s.rate >= 0.0));
-        Self { states, n_dof }
+        let rows: Vec<Sparse> = states.iter().map(|s| s.elongation.clone()).collect();
+        Self {
+            elongations: LaneRows::new(&rows),
+            states,
+            n_dof,
+        }
     }
 
     /// Number of states.
@@ -92,9 +103,11 @@ impl DecayingStates {
     /// Writes the deflections `δ` of the state vector (or stage) `y` into `out` (one per state).
     #[inline]
     pub fn deflections(&self, y: &[f64], out: &mut [f64]) {
-        for (o, s) in out.iter_mut().zip(&self.states) {
-            *o = s.deflection(y);
-        }
+        // `DecayingState::deflection`, the rows' sums taken in lanes.
+        self.elongations.for_each(y, |i, sum| {
+            let s = &self.states[i];
+            out[i] = sum + s.offset - y[s.index];
+        });
     }
 
     /// Writes `N_δ = J q̇ − ẋ_d + r·δ` into each state's row of `k = f(y)`, with `deflections`
@@ -103,11 +116,11 @@ impl DecayingStates {
     #[inline]
     pub fn remove_linear(&self, deflections: &[f64], k: &mut [f64]) {
         let (rates, others) = k.split_at_mut(2 * self.n_dof);
-        for (s, delta) in self.states.iter().zip(deflections) {
-            let elongation_rate: f64 = s.elongation.iter().map(|&(j, c)| c * rates[j]).sum();
-            let i = s.index - 2 * self.n_dof;
-            others[i] = elongation_rate - others[i] + s.rate * delta;
-        }
+        self.elongations.for_each(rates, |i, elongation_rate| {
+            let s = &self.states[i];
+            let o = s.index - 2 * self.n_dof;
+            others[o] = elongation_rate - others[o] + s.rate * deflections[i];
+        });
     }
 
     /// The exact propagation over `tau` (s).
@@ -137,15 +150,18 @@ impl DecayingStates {
         out: &mut [f64],
         deflections: &mut [f64],
     ) {
-        let states = self.states.iter().zip(&p.coefficients);
-        for (((s, c), &delta0), delta) in states.zip(start).zip(deflections) {
-            let mut d = c[0] * delta0;
+        // The coordinates the elongations read, and the states written (after them).
+        let (coordinates, others) = out.split_at_mut(2 * self.n_dof);
+        self.elongations.for_each(coordinates, |i, sum| {
+            let (s, c) = (&self.states[i], &p.coefficients[i]);
+            let mut d = c[0] * start[i];
             for (k, wk) in w.iter().enumerate() {
                 d += c[k + 1] * wk[s.index];
             }
-            *delta = d;
-            out[s.index] = s.elongation_at(out) - d;
-        }
+            deflections[i] = d;
+            // `DecayingState::elongation_at` of the stage, less `δ`.
+            others[s.index - 2 * self.n_dof] = sum + s.offset - d;
+        });
     }
 }
 
@@ -187,6 +203,45 @@ mod tests {
         let (a, b) = (phi(-1.0 + 1e-12), phi(-1.0 - 1e-12));
         for k in 0..4 {
             assert!((a[k] - b[k]).abs() < 1e-11, "φ{k}");
+        }
+    }
+
+    #[test]
+    fn the_lanes_give_the_bits_of_one_state_at_a_time() {
+        // Seven states (a group of four and one of three) of two row lengths over 6
+        // coordinates; the state vector holds zeros of both signs.
+        let states: Vec<DecayingState> = (0..7)
+            .map(|i| DecayingState {
+                index: 12 + i,
+                rate: 100.0 * (i + 1) as f64,
+                elongation: (0..2 + i % 2)
+                    .map(|k| ((i + 2 * k) % 6, (i as f64 + 0.3 * k as f64).sin()))
+                    .collect(),
+                offset: 0.01 * i as f64,
+            })
+            .collect();
+        let part = DecayingStates::new(6, states.clone());
+        let y: Vec<f64> = (0..19)
+            .map(|j| match j % 5 {
+                0 => -0.0,
+                1 => 0.0,
+                _ => (j as f64 * 0.7).cos(),
+            })
+            .collect();
+        let mut out = vec![f64::NAN; 7];
+        part.deflections(&y, &mut out);
+        for (s, o) in states.iter().zip(&out) {
+            assert_eq!(o.to_bits(), s.deflection(&y).to_bits());
+        }
+        let p = part.propagator(1e-3);
+        let (w0, w1) = (y.iter().map(|v| 2.0 * v).collect::<Vec<_>>(), y.clone());
+        let (mut stage, mut delta) = (y.clone(), vec![0.0; 7]);
+        part.propagate(&p, &out, &[&w0, &w1], &mut stage, &mut delta);
+        for (s, d) in states.iter().zip(&delta) {
+            assert_eq!(
+                stage[s.index].to_bits(),
+                (s.elongation_at(&stage) - d).to_bits()
+            );
         }
     }
 

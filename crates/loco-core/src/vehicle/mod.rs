@@ -32,11 +32,13 @@
 //!   angle, flange contact, ΣY), named once.
 
 pub mod bodies;
+mod bushing_lanes;
 pub mod channel_set;
 pub mod creep_decay;
 pub mod creep_model;
 pub mod critical_speed;
 pub mod damper_elements;
+mod damper_lanes;
 pub mod decaying_states;
 pub mod elements;
 pub mod exponential_rk4;
@@ -53,6 +55,7 @@ pub mod parameters;
 pub mod presets;
 pub mod rail_plane;
 pub mod response_psd;
+mod row_groups;
 pub mod run;
 pub mod run_limits;
 pub mod run_metrics;

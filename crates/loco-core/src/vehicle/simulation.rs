@@ -265,16 +265,21 @@ impl VehicleSystem {
             .add_structural_forces(states, speed, &mut self.wrenches);
         // Dampers carry no static force: the static search leaves them out.
         let statics = matches!(self.contact_mode, ContactMode::Held { .. });
-        for (i, damper) in self.dampers.iter().enumerate().filter(|_| !statics) {
-            let (x, v) = damper.stroke(states);
-            let n = damper.n_states();
-            let o = damper.state_offset;
-            let mut rates = [0.0; MAX_STATES];
-            let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
-            dy[o..o + n].copy_from_slice(&rates[..n]);
-            damper.apply(states, force, &mut self.wrenches);
-            self.damper_forces[i] = force;
-        }
+        let placements = &self.structure.suspension.dampers;
+        let dampers = &self.dampers;
+        let lanes = &self.structure.damper_lanes;
+        lanes.with_motions(placements, states, statics, |motions| {
+            for (i, damper) in dampers.iter().enumerate().filter(|_| !statics) {
+                let (x, v) = motions.stroke(i, damper.static_elongation);
+                let n = damper.n_states();
+                let o = damper.state_offset;
+                let mut rates = [0.0; MAX_STATES];
+                let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
+                dy[o..o + n].copy_from_slice(&rates[..n]);
+                damper.apply_at(&motions.arms(i), force, &mut self.wrenches);
+                self.damper_forces[i] = force;
+            }
+        });
         if let Some(curve) = &self.curve {
             curve.add_frame_forces(&self.frame_work, &self.body_states, &mut self.wrenches);
         }

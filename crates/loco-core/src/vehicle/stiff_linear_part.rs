@@ -14,6 +14,7 @@
 
 use super::layout::N_DOF;
 use super::mass::MassMatrix;
+use super::row_groups::{LaneRows, RowGroups};
 use super::structure::VehicleStructure;
 use super::suspension::GEARBOX_BEARINGS;
 use crate::kept::Kept;
@@ -29,6 +30,8 @@ pub struct StiffLinearPart {
     n_dof: usize,
     /// Rows of `J`: deflection per coordinate (m/m, m/rad, rad/rad).
     rows: Vec<Sparse>,
+    /// The same rows in lanes, for [`Self::deflections`].
+    row_lanes: LaneRows,
     /// Columns of `B = M⁻¹ Jᵀ K`: acceleration per unit deflection, 1/s² (or m/(s²·rad)).
     response: Vec<Sparse>,
     /// Columns of `G = B (J B)⁻¹`: with it `P = G J` projects a motion onto the part that
@@ -51,8 +54,9 @@ pub struct Propagator {
     /// Time the propagator covers, s.
     pub tau: f64,
     /// The (2r × 5r) map by rows, its zeros left out (the bearings of different wheelsets do not
-    /// meet in the mass matrix, and the exponential keeps the blocks apart exactly).
-    rows: Vec<Sparse>,
+    /// meet in the mass matrix, and the exponential keeps the blocks apart exactly), grouped by
+    /// their columns (a wheelset's rows read the same inputs).
+    rows: RowGroups,
 }
 
 impl StiffLinearPart {
@@ -96,6 +100,7 @@ impl StiffLinearPart {
             .collect();
         Self {
             n_dof,
+            row_lanes: LaneRows::new(&rows),
             rows,
             response,
             projection,
@@ -135,9 +140,7 @@ impl StiffLinearPart {
     /// `out = J x` (r values) for coordinates (or velocities, or accelerations) `x`.
     #[inline]
     pub fn deflections(&self, x: &[f64], out: &mut [f64]) {
-        for (o, row) in out.iter_mut().zip(&self.rows) {
-            *o = row.iter().map(|&(j, c)| c * x[j]).sum();
-        }
+        self.row_lanes.apply(x, out);
     }
 
     /// `out += scale · B z` (accelerations, 1/s² times the deflections' units).
@@ -239,10 +242,13 @@ impl StiffLinearPart {
                 map[(r + i, j)] += weights[j / r] * self.own_inverse[(i, j % r)];
             }
         }
-        let rows = (0..2 * r)
+        let rows: Vec<Sparse> = (0..2 * r)
             .map(|i| sparse(&map.row(i).iter().copied().collect::<Vec<_>>()))
             .collect();
-        Propagator { tau, rows }
+        Propagator {
+            tau,
+            rows: RowGroups::new(&rows),
+        }
     }
 }
 
@@ -250,9 +256,7 @@ impl Propagator {
     /// `out = [∫z; Y](τ)` (2r) from `input = [z0; ż0; h0; h1; h2]` (5r).
     #[inline]
     pub fn apply(&self, input: &[f64], out: &mut [f64]) {
-        for (o, row) in out.iter_mut().zip(&self.rows) {
-            *o = row.iter().map(|&(j, c)| c * input[j]).sum();
-        }
+        self.rows.apply(input, out);
     }
 }
 

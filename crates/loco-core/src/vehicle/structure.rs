@@ -3,6 +3,8 @@
 //! gyroscopic moments, springs, bushings, bump stops).
 
 use super::bodies::{build_bodies, Body, Layout};
+use super::bushing_lanes::BushingLanes;
+use super::damper_lanes::DamperLanes;
 use super::elements::{Attachment, BodyStates, Wrenches};
 use super::kinematics::{point_motion, sub};
 use super::layout::{N_BODIES, N_DOF};
@@ -23,6 +25,10 @@ pub struct VehicleStructure {
     pub suspension: Suspension,
     /// Gravitational acceleration, m/s².
     pub gravity: f64,
+    /// `suspension.bushings` grouped for the time loop (the same forces, same bits).
+    bushing_lanes: BushingLanes,
+    /// `suspension.dampers`' kinematics in lanes (the same strokes and arms, same bits).
+    pub(crate) damper_lanes: DamperLanes,
 }
 
 /// A vehicle as the model's entry points take it: a parameter set, built on the way in, or a
@@ -59,6 +65,8 @@ impl VehicleStructure {
         .map_err(|e| super::suspects::with_suspects(e, &parameters))?;
         let suspension = build_suspension(&parameters, &layout, &bodies)?;
         let gravity = check_positive("track.gravity", parameters.get("track.gravity")?)?;
+        let bushing_lanes = BushingLanes::new(&suspension.bushings);
+        let damper_lanes = DamperLanes::new(&suspension.dampers);
         Ok(Self {
             parameters,
             layout,
@@ -66,6 +74,8 @@ impl VehicleStructure {
             mass,
             suspension,
             gravity,
+            bushing_lanes,
+            damper_lanes,
         })
     }
 
@@ -95,9 +105,8 @@ impl VehicleStructure {
                 wrenches[i][5] -= h * v[3];
             }
         }
-        for bushing in &self.suspension.bushings {
-            bushing.apply(states, wrenches);
-        }
+        self.bushing_lanes
+            .apply(&self.suspension.bushings, states, wrenches);
         for stop in &self.suspension.bump_stops {
             stop.apply(states, wrenches);
         }
