@@ -225,13 +225,14 @@ impl Scheme {
     }
 }
 
-/// How long (s) the step stays cut after a wheel was last outside its smooth contact range:
-/// about a hunting period (3.9–4.4 Hz on S_high), so that a wheelset that hunts beyond the range
-/// runs the whole cycle on the short step instead of switching twice a cycle. Switching in
-/// and out put the long step's error into every cycle: at the box corner C_sy 10 kN·s/m,
-/// K_ncsy 10 kN/mm, C_sx 200 kN·s/m, K_ncsx 10 kN/mm on S_high (hunting at A_yb 6.5 m/s²), A_yb
-/// was 1.1 % off RK4 at 0.25 ms, where the scheme at 1 ms throughout is 0.2 % off.
-const CUT_HOLD: f64 = 0.25;
+/// How long (s) the step stays cut after a wheel was last outside its smooth contact range: half
+/// a period of S_high's hunting (3.9–4.4 Hz: 0.11–0.13 s), so that a wheelset hunting beyond the
+/// range, which leaves it on one side and comes back beyond it on the other half a cycle later,
+/// runs the whole cycle on the short step instead of switching twice a cycle. The switching put
+/// the long step's error into every cycle: at the box corner C_sy 10 kN·s/m, K_ncsy 10 kN/mm,
+/// C_sx 200 kN·s/m, K_ncsx 10 kN/mm on S_high (hunting, A_yb 6.5 m/s²) A_yb was 1.1 % off RK4 at
+/// 0.25 ms, 0.2 % with the hold (as the scheme at 1 ms throughout); 0.05 s was not enough.
+const CUT_HOLD: f64 = 0.12;
 
 /// The time loop's stepping: the run's step, cut into `parts` whole parts no longer than
 /// [`REFERENCE_STEP`] while a wheel is outside the pair's [`LongStepRange`].
