@@ -149,6 +149,54 @@ pub(in crate::vehicle) unsafe fn gather6(
     ]
 }
 
+/// Two bodies' attachment points in relative motion, four pairs per register
+/// (`Attachment::motion_and_arms`; the bushings' and the dampers' lanes share it).
+pub(in crate::vehicle) struct PairMotion {
+    /// Each body's small rotation (rad) and rotation rate (rad/s), body a then body b.
+    pub(in crate::vehicle) rot: [V3; 2],
+    pub(in crate::vehicle) rate: [V3; 2],
+    /// Displacement (m) and velocity (m/s) of b's point against a's.
+    pub(in crate::vehicle) d: V3,
+    pub(in crate::vehicle) v: V3,
+    /// Each point's lever arm from its body's centre, turned with the body (m).
+    pub(in crate::vehicle) arm: [V3; 2],
+}
+
+/// The motion of the points `point_a` on bodies `a` and `point_b` on bodies `b` (lane `l` one
+/// pair), in the scalar code's operations and order.
+#[target_feature(enable = "avx")]
+#[inline]
+pub(in crate::vehicle) unsafe fn pair_motion(
+    a: &[usize; W],
+    b: &[usize; W],
+    point_a: &[[f64; W]; 3],
+    point_b: &[[f64; W]; 3],
+    s: &BodyStates,
+) -> PairMotion {
+    let (ua, ub) = (gather6(a, &s.position), gather6(b, &s.position));
+    let (wa, wb) = (gather6(a, &s.velocity), gather6(b, &s.velocity));
+    let (point_a, point_b) = (v3(point_a), v3(point_b));
+    let rot_a = [ua[3], ua[4], ua[5]];
+    let rot_b = [ub[3], ub[4], ub[5]];
+    let turn_a = cross(rot_a, point_a);
+    let turn_b = cross(rot_b, point_b);
+    let d = sub(
+        add([ub[0], ub[1], ub[2]], turn_b),
+        add([ua[0], ua[1], ua[2]], turn_a),
+    );
+    let rate_a = [wa[3], wa[4], wa[5]];
+    let rate_b = [wb[3], wb[4], wb[5]];
+    let va = add([wa[0], wa[1], wa[2]], cross(rate_a, point_a));
+    let vb = add([wb[0], wb[1], wb[2]], cross(rate_b, point_b));
+    PairMotion {
+        rot: [rot_a, rot_b],
+        rate: [rate_a, rate_b],
+        d,
+        v: sub(vb, va),
+        arm: [add(point_a, turn_a), add(point_b, turn_b)],
+    }
+}
+
 /// A quad's constant 3-vector as three registers (lane `l` from index `l` of each array).
 #[target_feature(enable = "avx")]
 #[inline]
@@ -176,25 +224,9 @@ pub(in crate::vehicle) unsafe fn store(x: V3, out: &mut [[f64; W]; 3]) {
 #[target_feature(enable = "avx")]
 #[inline]
 unsafe fn quad_forces<const ON_LOAD_PATH: bool>(q: &Quad, s: &BodyStates, out: &mut QuadForces) {
-    let (a, b) = (&q.body_a, &q.body_b);
-    let (ua, ub) = (gather6(a, &s.position), gather6(b, &s.position));
-    let (wa, wb) = (gather6(a, &s.velocity), gather6(b, &s.velocity));
-    let (point_a, point_b) = (v3(&q.point_a), v3(&q.point_b));
-    // `Attachment::motion_and_arms`.
-    let rot_a = [ua[3], ua[4], ua[5]];
-    let rot_b = [ub[3], ub[4], ub[5]];
-    let turn_a = cross(rot_a, point_a);
-    let turn_b = cross(rot_b, point_b);
-    let d = sub(
-        add([ub[0], ub[1], ub[2]], turn_b),
-        add([ua[0], ua[1], ua[2]], turn_a),
-    );
-    let rate_a = [wa[3], wa[4], wa[5]];
-    let rate_b = [wb[3], wb[4], wb[5]];
-    let va = add([wa[0], wa[1], wa[2]], cross(rate_a, point_a));
-    let vb = add([wb[0], wb[1], wb[2]], cross(rate_b, point_b));
-    let v = sub(vb, va);
-    let (arm_a, arm_b) = (add(point_a, turn_a), add(point_b, turn_b));
+    let m = pair_motion(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
+    let ([rot_a, rot_b], [rate_a, rate_b], [arm_a, arm_b]) = (m.rot, m.rate, m.arm);
+    let (d, v) = (m.d, m.v);
     let (neg_k, c) = (v3(&q.neg_stiffness), v3(&q.damping));
     let (neg_kr, cr) = (v3(&q.neg_rotational_stiffness), v3(&q.rotational_damping));
     let (rotation, rate) = (sub(rot_b, rot_a), sub(rate_b, rate_a));

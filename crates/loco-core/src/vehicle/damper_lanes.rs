@@ -138,7 +138,7 @@ fn scalar_motions(placements: &[DamperPlacement], states: &BodyStates, motions: 
 
 #[cfg(target_arch = "x86_64")]
 mod avx {
-    use super::super::bushing_lanes::avx::{add, cross, gather6, mul, store, sub, sum, v3, V3};
+    use super::super::bushing_lanes::avx::{mul, pair_motion, store, sum, v3, V3};
     use super::super::elements::BodyStates;
     use super::{DamperQuad, QuadMotion};
     use std::arch::x86_64::{__m256d, _mm256_storeu_pd};
@@ -154,30 +154,14 @@ mod avx {
     #[target_feature(enable = "avx")]
     pub(super) unsafe fn motions(quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
         for (q, out) in quads.iter().zip(out) {
-            let (a, b) = (&q.body_a, &q.body_b);
-            let (ua, ub) = (gather6(a, &s.position), gather6(b, &s.position));
-            let (wa, wb) = (gather6(a, &s.velocity), gather6(b, &s.velocity));
-            let (point_a, point_b) = (v3(&q.point_a), v3(&q.point_b));
             // `Attachment::relative_motion` (through `point_motion`) and `apply_pair`'s arms.
-            let rot_a = [ua[3], ua[4], ua[5]];
-            let rot_b = [ub[3], ub[4], ub[5]];
-            let turn_a = cross(rot_a, point_a);
-            let turn_b = cross(rot_b, point_b);
-            let d = sub(
-                add([ub[0], ub[1], ub[2]], turn_b),
-                add([ua[0], ua[1], ua[2]], turn_a),
-            );
-            let rate_a = [wa[3], wa[4], wa[5]];
-            let rate_b = [wb[3], wb[4], wb[5]];
-            let va = add([wa[0], wa[1], wa[2]], cross(rate_a, point_a));
-            let vb = add([wb[0], wb[1], wb[2]], cross(rate_b, point_b));
-            let v = sub(vb, va);
+            let m = pair_motion(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
             let n = v3(&q.direction);
             // Four contiguous f64 each, which the references hold.
-            _mm256_storeu_pd(out.along.as_mut_ptr(), dot(d, n));
-            _mm256_storeu_pd(out.rate.as_mut_ptr(), dot(v, n));
-            store(add(point_a, turn_a), &mut out.arm_a);
-            store(add(point_b, turn_b), &mut out.arm_b);
+            _mm256_storeu_pd(out.along.as_mut_ptr(), dot(m.d, n));
+            _mm256_storeu_pd(out.rate.as_mut_ptr(), dot(m.v, n));
+            store(m.arm[0], &mut out.arm_a);
+            store(m.arm[1], &mut out.arm_b);
         }
     }
 }
