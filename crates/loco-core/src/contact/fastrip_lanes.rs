@@ -199,14 +199,14 @@ pub(super) fn strip_lanes<const W: usize, const G: usize>(
         let d_raw = (disc.max(zero).sqrt() + eta_s * phi_s) * d_factor;
         // Partial slip where the discriminant is not negative and 0 ≤ d < a_j (and |φ'| ≠ 1):
         // an invalid slip length becomes +∞, which no strip takes.
-        let valid = disc.zip(d_raw, |ds, dr| {
+        let valid = disc.map2(d_raw, |ds, dr| {
             if ds >= 0.0 && dr >= 0.0 {
                 dr
             } else {
                 f64::INFINITY
             }
         });
-        let d = valid.zip(a_j, |dr, aj| if !unit_spin && dr < aj { dr } else { aj });
+        let d = valid.map2(a_j, |dr, aj| if !unit_spin && dr < aj { dr } else { aj });
         let v = eta_s + phi_s * d * inv_a;
         let inv = one.div((u * u + v * v).max(floor).sqrt());
         // x_i/a_j · nx/2 + 1/2: an element's slip fraction is this minus its u_k·nx/2.

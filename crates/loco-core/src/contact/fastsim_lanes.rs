@@ -39,11 +39,7 @@ impl<const W: usize> Lanes<W> {
     }
     /// Lane by lane `f(self, rhs)`.
     #[inline(always)]
-    pub(super) fn zip(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
-        self.map2(rhs, f)
-    }
-    #[inline(always)]
-    fn map2(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+    pub(super) fn map2(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
         let mut out = self.0;
         for (o, r) in out.iter_mut().zip(rhs.0) {
             *o = f(*o, r);

@@ -59,27 +59,13 @@ impl DamperElement {
     }
 
     /// Adds the forces of the placement's `count` dampers, each in tension `force` (N), to the
-    /// two bodies.
-    #[inline]
-    pub fn apply(&self, states: &BodyStates, force: f64, wrenches: &mut Wrenches) {
-        let force = force * self.placement.count;
-        let n = self.placement.direction;
-        // Tension pulls the second end (B) back toward the first.
-        self.placement.at.apply_pair(
-            states,
-            [-force * n[0], -force * n[1], -force * n[2]],
-            wrenches,
-        );
-    }
-}
-
-impl DamperElement {
-    /// [`Self::apply`] with the placement's lever arms on A and B already turned with the
-    /// bodies (m, `DamperMotions::arms`).
+    /// two bodies at the placement's lever arms on A and B, already turned with the bodies (m,
+    /// `DamperMotions::arms`).
     #[inline]
     pub fn apply_at(&self, arms: &[[f64; 3]; 2], force: f64, wrenches: &mut Wrenches) {
         let force = force * self.placement.count;
         let n = self.placement.direction;
+        // Tension pulls the second end (B) back toward the first.
         self.placement.at.apply_pair_at(
             arms,
             [-force * n[0], -force * n[1], -force * n[2]],
