@@ -13,7 +13,7 @@ use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::{RunSettings, EXPONENTIAL_STEP, REFERENCE_STEP};
+use loco_core::vehicle::run::{Recorded, RunSettings, EXPONENTIAL_STEP, REFERENCE_STEP};
 use loco_core::vehicle::scenario::{
     build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
 };
@@ -39,6 +39,7 @@ fn bench_run(
                 contact.clone(),
                 track.clone(),
                 black_box(scenario),
+                Recorded::Every,
                 None,
             )
             .unwrap()

@@ -6,7 +6,7 @@
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::integrator::Integrator;
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::RunSettings;
+use loco_core::vehicle::run::{Recorded, RunSettings};
 use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
 use loco_core::vehicle::structure::VehicleStructure;
 use std::sync::Arc;
@@ -51,6 +51,7 @@ fn main() {
             wheel_rail.clone(),
             track.clone(),
             &scenario,
+            Recorded::Metrics,
             None,
         );
         let wall = t.elapsed().as_secs_f64();

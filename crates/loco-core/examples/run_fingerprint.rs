@@ -16,6 +16,7 @@
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::run::Recorded;
 use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::vehicle::wheel_channels::{
@@ -56,7 +57,15 @@ fn main() {
     if args.get(3).is_some_and(|a| a == "prepare") {
         return;
     }
-    let result = simulate_prepared(structure, wheel_rail, track, &scenario, None).unwrap();
+    let result = simulate_prepared(
+        structure,
+        wheel_rail,
+        track,
+        &scenario,
+        Recorded::Every,
+        None,
+    )
+    .unwrap();
     let mut curving: HashSet<String> = (0..4)
         .map(|w| wheelset_channel(w, WheelsetQuantity::GuidingForce))
         .collect();

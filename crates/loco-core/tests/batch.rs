@@ -53,6 +53,14 @@ fn bit_identical_on_one_and_two_threads_and_equal_to_single_runs() {
     assert_eq!(*i, 1);
     assert_eq!(bits(&h.time), bits(&single.output.time));
     assert_eq!(h.channels.len(), single.output.channels.len());
+
+    // Row 0, whose histories are not returned, records only its metrics' channels
+    // (`Recorded::Metrics`): the same metrics as a single run that records every channel.
+    let mut p = ParameterSet::default_vehicle();
+    p.set("C_sx", 8e5).unwrap();
+    p.set("K_py", 3.5e6).unwrap();
+    let single = simulate(p, &s.scenario).unwrap();
+    assert_eq!(bits(one.row(0)), bits(&single.metrics.values()));
 }
 
 #[test]

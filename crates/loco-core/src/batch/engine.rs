@@ -15,7 +15,7 @@ use crate::error::{LocoError, Result};
 use crate::metrics::RunMetrics;
 use crate::track::TrackIrregularity;
 use crate::vehicle::parameters::ParameterSet;
-use crate::vehicle::run::RunOutput;
+use crate::vehicle::run::{Recorded, RunOutput};
 use crate::vehicle::run_statistics::RunStatistics;
 use crate::vehicle::scenario::{
     build_track, shared_wheel_rail, simulate_prepared, Scenario, TrackSpec,
@@ -300,11 +300,18 @@ fn run_sample(
         Some(t) => Arc::clone(t),
         None => Arc::new(build_track(&scenario, &structure)?),
     };
+    // A sample whose time histories are not returned records only what its metrics read.
+    let recorded = if spec.histories.contains(&i) {
+        Recorded::Every
+    } else {
+        Recorded::Metrics
+    };
     let result = simulate_prepared(
         structure,
         wheel_rail,
         track,
         &scenario,
+        recorded,
         Some(&monitor.cancel),
     )?;
     Ok((result.metrics, result.output, result.statistics))

@@ -21,7 +21,7 @@ use super::wheel_channels::{
     wheel_channel, wheelset_channel, WheelQuantity, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
     WHEELSET_MOTION_QUANTITIES, WHEEL_FORCE_QUANTITIES,
 };
-use crate::error::Result;
+use crate::error::{LocoError, Result};
 
 /// Calls `$callback! { $( CONSTANT Variant "name", "doc"; )* }` with every channel kind, in
 /// declaration order: the one list from which [`ChannelKind`], its [`ChannelKind::ALL`] and
@@ -258,6 +258,30 @@ impl ChannelSet {
         })
     }
 
+    /// The set of only the channels called `names`, in recording order (a run that needs no
+    /// more than its metrics records their channels alone). An unknown name is an error.
+    pub fn only(self, names: &[&str]) -> Result<Self> {
+        if let Some(missing) = names
+            .iter()
+            .find(|n| !self.channels.iter().any(|c| c.name == **n))
+        {
+            return Err(LocoError::input(
+                "channels",
+                format!("no channel `{missing}`"),
+            ));
+        }
+        let channels: Vec<Channel> = self
+            .channels
+            .into_iter()
+            .filter(|c| names.contains(&c.name.as_str()))
+            .collect();
+        Ok(Self {
+            probes: channels.iter().map(|c| c.probe).collect(),
+            channels,
+            static_load: self.static_load,
+        })
+    }
+
     /// The channels, in recording order.
     pub fn channels(&self) -> &[Channel] {
         &self.channels
@@ -361,5 +385,18 @@ mod tests {
         let kinds: HashSet<_> = set.channels().iter().map(Channel::kind).collect();
         assert_eq!(kinds, ChannelKind::ALL.iter().copied().collect());
         assert_eq!(set.channels()[0].unit, "m/s²");
+    }
+
+    #[test]
+    fn a_subset_keeps_the_recording_order_and_refuses_unknown_names() {
+        let s = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+        let all = ChannelSet::new(&s).unwrap().names();
+        // Asked in another order than recorded: recorded in the set's order.
+        let asked = [all[5].as_str(), all[1].as_str()];
+        let only = ChannelSet::new(&s).unwrap().only(&asked).unwrap();
+        assert_eq!(only.names(), vec![all[1].clone(), all[5].clone()]);
+        assert_eq!(only.probes.len(), 2);
+        let e = ChannelSet::new(&s).unwrap().only(&["no_such_channel"]);
+        assert!(e.unwrap_err().to_string().contains("no_such_channel"));
     }
 }

@@ -12,6 +12,9 @@ pub const CARBODY_VERTICAL: &str = "carbody_floor_az_front";
 /// Channel of the bogie frame lateral acceleration used for A_yb.
 pub const BOGIE_LATERAL: &str = "frame1_ay_wheelset1";
 
+/// The channels [`run_metrics`] reads: what a run records when only its metrics are kept.
+pub const METRIC_CHANNELS: [&str; 3] = [CARBODY_LATERAL, CARBODY_VERTICAL, BOGIE_LATERAL];
+
 /// Every metric of a run at running speed `speed` (m/s) with bogie mass `bogie_mass` (kg).
 pub fn run_metrics(output: &RunOutput, speed: f64, bogie_mass: f64) -> Result<RunMetrics> {
     let channel = |name: &str| {

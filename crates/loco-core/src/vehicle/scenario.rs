@@ -4,7 +4,7 @@
 
 use super::creep_model::CreepModel;
 use super::parameters::ParameterSet;
-use super::run::{run, RunOutput, RunSettings};
+use super::run::{run, Recorded, RunOutput, RunSettings};
 use super::simulation::VehicleSystem;
 use super::statics::{in_equilibrium_at_stable_step, StaticsSettings};
 use super::structure::{IntoVehicle, VehicleStructure};
@@ -340,12 +340,14 @@ pub struct SimulationResult {
     pub statistics: super::run_statistics::RunStatistics,
 }
 
-/// Simulates a scenario with prepared contact and track (batches share them across samples).
+/// Simulates a scenario with prepared contact and track (batches share them across samples),
+/// recording the `recorded` channels.
 pub fn simulate_prepared(
     structure: Arc<VehicleStructure>,
     wheel_rail: Arc<WheelRail>,
     track: Arc<TrackIrregularity>,
     scenario: &Scenario,
+    recorded: Recorded,
     cancel: Option<&AtomicBool>,
 ) -> Result<SimulationResult> {
     let started = std::time::Instant::now();
@@ -401,7 +403,7 @@ pub fn simulate_prepared(
         settle: scenario.lead_in / scenario.speed,
         ..scenario.run
     };
-    let output = run(&mut system, &mut y, &settings, cancel)?;
+    let output = run(&mut system, &mut y, &settings, recorded, cancel)?;
     let metrics =
         super::run_metrics::run_metrics_or_undefined(&output, scenario.speed, bogie_mass)?;
     let mut statistics = system.statistics;
@@ -490,5 +492,12 @@ pub fn simulate_cancellable(
     let structure = vehicle.into_vehicle()?;
     let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
     let track = Arc::new(build_track(scenario, &structure)?);
-    simulate_prepared(structure, wheel_rail, track, scenario, cancel)
+    simulate_prepared(
+        structure,
+        wheel_rail,
+        track,
+        scenario,
+        Recorded::Every,
+        cancel,
+    )
 }

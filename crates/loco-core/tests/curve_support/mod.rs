@@ -4,7 +4,7 @@
 
 use loco_core::track::DesignSection;
 use loco_core::vehicle::integrator::OdeSystem;
-use loco_core::vehicle::run::{run, RunOutput, RunSettings};
+use loco_core::vehicle::run::{run, Recorded, RunOutput, RunSettings};
 use loco_core::vehicle::scenario::{build_track, curve_design, start_distance, Scenario};
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
@@ -58,7 +58,7 @@ pub fn run_on_curve(
         step,
         ..scenario.run
     };
-    let output = run(&mut system, &mut y, &settings, None).unwrap();
+    let output = run(&mut system, &mut y, &settings, Recorded::Every, None).unwrap();
     let mut dy = vec![0.0; y.len()];
     system.derivatives(settings.duration, &y, &mut dy);
     CurveRun {
