@@ -226,9 +226,10 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
             l.output.channel(&format!("wheel{w}_left_Q")).unwrap(),
             r.output.channel(&format!("wheel{w}_right_Q")).unwrap(),
         );
-        // Judged by the rms difference; the peak is printed. Wheel 3's peak (261 N for 8
-        // samples, rms 12 N; the others < 11 N) is where the gauge-side second contact point of
-        // the leading outer wheel of bogie 2 comes into contact: at y = -7.70 mm its gap in
+        // Judged by the rms difference; the peak is printed. Wheel 3's peak (45 N, rms 1.8 N
+        // at stop 32, the others < 5 N; 261 N for 8 samples when this test was written) is
+        // where the gauge-side second contact point of the leading outer wheel of bogie 2
+        // comes into contact: at y = -7.70 mm its gap in
         // the contact table (9.6e-5 m) equals the tread's elastic approach. The normal force
         // there is K δ^1.5 + c_n δ̇ (`vehicle::wheel_rail`), and the damping term starts with
         // a jump of c_n δ̇ ≈ 2.8e5 N·s/m × 0.01 m/s ≈ 2.8 kN (measured: the outer load steps by
