@@ -63,6 +63,7 @@ pub mod run_statistics;
 pub mod scenario;
 pub mod scenario_settings;
 pub mod shifted_hessenberg;
+pub mod simulate;
 pub mod simulation;
 mod states_cache;
 pub mod statics;
