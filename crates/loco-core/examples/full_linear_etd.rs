@@ -83,7 +83,9 @@ fn run_full_linear(
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let settle_steps = (settings.settle / h).round() as usize;
     let total = settle_steps + (n_samples - 1) * steps_per_sample;
-    let mut channels = vec![Vec::with_capacity(n_samples); channel_set.len()];
+    let mut channels: Vec<Vec<f64>> = (0..channel_set.len())
+        .map(|_| Vec::with_capacity(n_samples))
+        .collect();
     let mut time = Vec::with_capacity(n_samples);
     let mut y = DVector::from_vec(y0);
     let mut rhs = 0;
