@@ -64,6 +64,7 @@ pub mod scenario;
 pub mod scenario_settings;
 pub mod shifted_hessenberg;
 pub mod simulation;
+mod state_check;
 mod states_cache;
 pub mod statics;
 pub mod stiff_linear_part;

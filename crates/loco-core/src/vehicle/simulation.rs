@@ -15,10 +15,7 @@
 use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::{Integrator, OdeSystem};
-use super::layout::{
-    body_wheelset, coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF,
-    N_WHEELSETS, X, Y, YAW,
-};
+use super::layout::{body_wheelset, N_BODIES, N_DOF, N_WHEELSETS, YAW};
 use super::run_statistics::RunStatistics;
 use super::states_cache::StatesCache;
 use super::structure::VehicleStructure;
@@ -29,15 +26,7 @@ use crate::error::{LocoError, Result};
 use crate::track::{RailIrregularity, TrackIrregularity};
 use std::sync::Arc;
 
-/// Largest displacement of any coordinate in a run (longitudinal ones relative to the carbody),
-/// m: suspension travel is tens of millimetres and the contact range ±25 mm, so a body a metre
-/// away is a numerical blow-up, not a motion.
-pub const RUNAWAY_DISPLACEMENT: f64 = 1.0;
-/// Largest rotation of any coordinate but the wheelsets' spin, rad (29°), for the same reason.
-pub const RUNAWAY_ROTATION: f64 = 0.5;
-/// Lateral wheelset displacement beyond which a bounded state counts as derailed, m: twice the
-/// contact tables' half range (±25 mm, which already covers flange climbing).
-pub const DERAILED_LATERAL: f64 = 0.05;
+pub use super::state_check::{DERAILED_LATERAL, RUNAWAY_DISPLACEMENT, RUNAWAY_ROTATION};
 
 /// Running speed against time: constant, or a ramp that holds its start speed until it is started
 /// and then decelerates at a constant rate (SI units).
@@ -346,55 +335,7 @@ impl VehicleSystem {
     /// beyond the flanges while everything else stays bounded has derailed
     /// ([`LocoError::Derailed`]).
     pub fn check_state(&self, t: f64, y: &[f64]) -> Result<()> {
-        if let Some(i) = y.iter().position(|v| !v.is_finite()) {
-            let names = dof_names();
-            let location = if i < N_DOF {
-                names[i].clone()
-            } else if i < 2 * N_DOF {
-                format!("{} (velocity)", names[i - N_DOF])
-            } else {
-                "damper internal state".to_string()
-            };
-            return Err(LocoError::Diverged {
-                time: t,
-                location,
-                reason: "state is not finite".into(),
-            });
-        }
-        let carbody_x = y[CARBODY + X];
-        for (i, &q) in y[..N_DOF].iter().enumerate() {
-            let (q, limit, unit) = match coordinate_kind(i) {
-                CoordinateKind::Translation => (q, RUNAWAY_DISPLACEMENT, "m"),
-                CoordinateKind::Longitudinal => (q - carbody_x, RUNAWAY_DISPLACEMENT, "m"),
-                CoordinateKind::Rotation => (q, RUNAWAY_ROTATION, "rad"),
-                CoordinateKind::Spin => continue,
-            };
-            if q.abs() > limit {
-                let relative = if coordinate_kind(i) == CoordinateKind::Longitudinal {
-                    " relative to the carbody"
-                } else {
-                    ""
-                };
-                return Err(LocoError::Diverged {
-                    time: t,
-                    location: dof_names()[i].clone(),
-                    reason: format!(
-                        "runaway amplitude {q:.4e} {unit}{relative} (bound ±{limit} {unit})"
-                    ),
-                });
-            }
-        }
-        for w in 0..N_WHEELSETS {
-            let lateral = y[wheelset(w) + Y];
-            if lateral.abs() > DERAILED_LATERAL {
-                return Err(LocoError::Derailed {
-                    time: t,
-                    location: format!("wheelset{}", w + 1),
-                    reason: format!("lateral displacement {lateral:.4} m beyond the flanges"),
-                });
-            }
-        }
-        Ok(())
+        super::state_check::check_state(t, y)
     }
 }
 
