@@ -54,6 +54,7 @@ pub mod parameter_schema;
 pub mod parameters;
 pub mod presets;
 pub mod rail_plane;
+mod rail_planes;
 pub mod response_psd;
 mod row_groups;
 pub mod run;

@@ -16,6 +16,7 @@ use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::{Integrator, OdeSystem};
 use super::layout::{body_wheelset, N_BODIES, N_DOF, N_WHEELSETS, YAW};
+use super::rail_planes::RailPlanes;
 use super::run_statistics::RunStatistics;
 use super::states_cache::StatesCache;
 use super::structure::VehicleStructure;
@@ -138,6 +139,8 @@ pub struct VehicleSystem {
     pub(crate) states_cache: StatesCache,
     wrenches: Wrenches,
     gen_force: Vec<f64>,
+    /// The rails' plane under each wheelset at the last evaluation, for the next.
+    rail_planes: RailPlanes,
     /// Wheel-rail forces of the last evaluation, per wheelset `[left, right]`.
     pub wheel_forces: [[WheelForces; 2]; N_WHEELSETS],
     pub(crate) damper_forces: Vec<f64>,
@@ -190,6 +193,7 @@ impl VehicleSystem {
             states_cache: StatesCache::default(),
             wrenches: [[0.0; 6]; N_BODIES],
             gen_force: vec![0.0; N_DOF],
+            rail_planes: RailPlanes::default(),
             wheel_forces: [[WheelForces::default(); 2]; N_WHEELSETS],
             damper_forces: vec![0.0; n_dampers],
         })
@@ -280,16 +284,22 @@ impl VehicleSystem {
                 self.body_states.velocity[body_wheelset(w)][YAW] =
                     own_yaw + curve.wheelset_frame_yaw_rate(speed, &self.frame_work, w);
             }
-            let rails = if statics && self.rail_inputs.is_none() {
-                RailIrregularity::default()
-            } else {
-                self.rails_at(w, t)
+            let plane = match &self.rail_inputs {
+                Some(inputs) => self.wheel_rail.rail_plane(&inputs[w], speed),
+                None if statics => self
+                    .wheel_rail
+                    .rail_plane(&RailIrregularity::default(), speed),
+                None => {
+                    let distance = self.wheelset_distance(w, t);
+                    let planes = &mut self.rail_planes;
+                    planes.plane(&self.track, &self.wheel_rail, w, distance, speed)
+                }
             };
             let result = self.wheel_rail.apply(
                 w,
                 t,
                 &self.body_states,
-                &rails,
+                &plane,
                 speed,
                 self.contact_mode,
                 &mut self.wrenches,

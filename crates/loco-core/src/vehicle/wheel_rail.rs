@@ -166,8 +166,16 @@ impl WheelRail {
         &self.table
     }
 
+    /// The rails' plane of `rails` (the irregularities at a wheelset's position) seen at
+    /// `speed` V (m/s): the frame [`Self::apply`] reads the table in.
+    #[inline]
+    pub fn rail_plane(&self, rails: &RailIrregularity, speed: f64) -> RailPlane {
+        RailPlane::new(rails, self.settings.contact_half_distance, speed)
+    }
+
     /// Adds the wheel-rail forces on wheelset `w` at time `t` (s, for error messages) to
-    /// `wrenches`; `rails` are the irregularities at the wheelset's position, `speed` is V (m/s).
+    /// `wrenches`; `plane` is the rails' plane at the wheelset's position ([`Self::rail_plane`]),
+    /// `speed` is V (m/s).
     /// [`ContactMode::Held`] replaces the creep forces by a tangential spring (N/m) at each
     /// contact and a brake on the spin, holding the wheels in the static equilibrium search.
     #[allow(clippy::too_many_arguments)]
@@ -176,7 +184,7 @@ impl WheelRail {
         w: usize,
         t: f64,
         states: &BodyStates,
-        rails: &RailIrregularity,
+        plane: &RailPlane,
         speed: f64,
         mode: ContactMode,
         wrenches: &mut Wrenches,
@@ -202,7 +210,6 @@ impl WheelRail {
         }
         // The table is read in the rails' plane (see `rail_plane`).
         let h0 = self.centred_radius;
-        let plane = RailPlane::new(rails, self.settings.contact_half_distance, speed);
         let pose_in_plane = plane.pose(u[1], u[2], u[ROLL], h0);
         let (s_theta, c_theta) = plane.roll_sin_cos();
         let yaw_sin_cos = u[YAW].sin_cos();
