@@ -22,7 +22,7 @@ use super::states_cache::StatesCache;
 use super::structure::VehicleStructure;
 use super::track_frame::{CurvedTrack, FrameWork};
 use super::wheel_rail::{ContactMode, WheelForces, WheelRail};
-use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
+use crate::dampers::{Damper, DamperDiscreteState};
 use crate::error::{LocoError, Result};
 use crate::track::{RailIrregularity, TrackIrregularity};
 use std::sync::Arc;
@@ -266,9 +266,9 @@ impl VehicleSystem {
                 let (x, v) = motions.stroke(i, damper.static_elongation);
                 let n = damper.n_states();
                 let o = damper.state_offset;
-                let mut rates = [0.0; MAX_STATES];
-                let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
-                dy[o..o + n].copy_from_slice(&rates[..n]);
+                // The law writes every one of its state rates straight into `dy` (through a
+                // buffer, each damper cost a library copy call).
+                let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut dy[o..o + n]);
                 damper.apply_at(&motions.arms(i), force, &mut self.wrenches);
                 self.damper_forces[i] = force;
             }
