@@ -90,7 +90,7 @@ fn wheelset_wrench(
         0,
         0.0,
         &states,
-        &RailIrregularity::default(),
+        &wr.rail_plane(&RailIrregularity::default(), speed),
         speed,
         ContactMode::Rolling,
         &mut wrenches,
@@ -431,7 +431,9 @@ fn rail_roll_moment(
                 w,
                 0.0,
                 &s,
-                &RailIrregularity::default(),
+                &r.system
+                    .wheel_rail
+                    .rail_plane(&RailIrregularity::default(), speed),
                 speed,
                 ContactMode::Rolling,
                 &mut wrenches,

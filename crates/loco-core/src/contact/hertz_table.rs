@@ -50,18 +50,31 @@ impl HertzShapeTable {
         b_curv: f64,
         contact_modulus: f64,
     ) -> Result<HertzCoefficients> {
-        check_positive("curvature_long", a_curv)?;
-        check_positive("curvature_lat", b_curv)?;
-        check_positive("contact_modulus", contact_modulus)?;
-        let ln_rho = (a_curv.min(b_curv) / a_curv.max(b_curv)).ln();
+        // The three inputs tested at once in float operations (x·0 is 0 for a finite x, NaN
+        // for an infinite one): the three checks compiled to some fifty integer instructions
+        // per contact point, so they run only to name the input at fault.
+        let finite = a_curv * 0.0 + b_curv * 0.0 + contact_modulus * 0.0 == 0.0;
+        if !(a_curv > 0.0 && b_curv > 0.0 && contact_modulus > 0.0 && finite) {
+            check_positive("curvature_long", a_curv)?;
+            check_positive("curvature_lat", b_curv)?;
+            check_positive("contact_modulus", contact_modulus)?;
+        }
+        // Both are positive and finite here: a comparison orders them as `min`/`max` did,
+        // without their NaN handling.
+        let (lo, hi) = if a_curv <= b_curv {
+            (a_curv, b_curv)
+        } else {
+            (b_curv, a_curv)
+        };
+        let ln_rho = (lo / hi).ln();
         if ln_rho < LN_RHO_MIN {
             return HertzCoefficients::from_curvatures(a_curv, b_curv, contact_modulus);
         }
         let pos = (1.0 - ln_rho / LN_RHO_MIN) * (NODES - 1) as f64;
         let i = (pos as usize).min(NODES - 2);
         let t = pos - i as f64;
-        let (lo, hi) = (&self.nodes[i], &self.nodes[i + 1]);
-        let lerp = |j: usize| lo[j] + t * (hi[j] - lo[j]);
+        let (below, above) = (&self.nodes[i], &self.nodes[i + 1]);
+        let lerp = |j: usize| below[j] + t * (above[j] - below[j]);
         Ok(HertzCoefficients::from_shape(
             a_curv,
             b_curv,
@@ -104,5 +117,41 @@ mod tests {
         let far = table.coefficients(1e-8, 1.0, e_star).unwrap();
         let exact = HertzCoefficients::from_curvatures(1e-8, 1.0, e_star).unwrap();
         assert_eq!(far, exact);
+    }
+
+    #[test]
+    fn the_input_at_fault_is_named_as_by_three_checks() {
+        let table = HertzShapeTable::new();
+        let good = [0.8, 2.5, 1.15e11];
+        let names = ["curvature_long", "curvature_lat", "contact_modulus"];
+        let bad = [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        for (k, name) in names.iter().enumerate() {
+            for v in bad {
+                let mut x = good;
+                x[k] = v;
+                // A second bad input after the first: the first is still the one named.
+                if k < 2 {
+                    x[2] = f64::NAN;
+                }
+                let err = table.coefficients(x[0], x[1], x[2]).unwrap_err();
+                let first = check_positive(name, v).unwrap_err();
+                assert_eq!(err, first, "{name} = {v}");
+            }
+        }
+        for (a, b) in [
+            (0.8, 2.5),
+            (2.5, 0.8),
+            (1.0, 1.0),
+            (f64::MAX, 1.0),
+            (5e-324, 1.0),
+        ] {
+            let c = table.coefficients(a, b, 1.15e11).unwrap();
+            let swapped = table.coefficients(b, a, 1.15e11).unwrap();
+            assert_eq!(
+                c.stiffness().to_bits(),
+                swapped.stiffness().to_bits(),
+                "{a} {b}"
+            );
+        }
     }
 }

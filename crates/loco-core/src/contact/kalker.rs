@@ -143,6 +143,7 @@ impl KalkerTable {
 
     /// The coefficients for the semi-axis ratio `a_over_b` (> 0, finite; not checked here —
     /// use [`kalker_coefficients`] for checked input).
+    #[inline]
     pub fn coefficients(&self, a_over_b: f64) -> KalkerCoefficients {
         let (rows, g, a_shorter) = if a_over_b <= 1.0 {
             (&self.a_le_b, a_over_b, true)
@@ -162,7 +163,14 @@ impl KalkerTable {
                 c33: lerp(3),
             };
         }
-        // Elongated ellipse: asymptotic shape, anchored to the table at g = 0.1.
+        self.elongated(rows, g, a_shorter)
+    }
+
+    /// The coefficients below g = 0.1 (an elongated ellipse): Kalker's asymptotic shape,
+    /// anchored to the table at g = 0.1. Out of line: rare, and its logarithms and powers would
+    /// weigh on the inlined table look-up.
+    #[inline(never)]
+    fn elongated(&self, rows: &[[f64; 4]; 10], g: f64, a_shorter: bool) -> KalkerCoefficients {
         let nu = self.poisson_ratio;
         let at = asymptotes(g, nu, a_shorter);
         let edge = asymptotes(0.1, nu, a_shorter);

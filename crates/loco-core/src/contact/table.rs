@@ -179,7 +179,7 @@ impl ContactTable {
 
     /// The contact of the wheel on `side` (0 left, 1 right) at lateral displacement `y` (m)
     /// with the wheelset rolled by `roll` (rad, relative to the rails), interpolated in both.
-    #[inline]
+    #[inline(always)]
     pub fn lookup_wheel(&self, y: f64, side: usize, roll: f64) -> WheelLookup {
         let (i, w) = self.cell(y);
         let (a, b) = (&self.rows[i], &self.rows[i + 1]);
@@ -241,7 +241,7 @@ fn lerp(a: f64, b: f64, w: f64) -> f64 {
 }
 
 /// Interpolates a wheel's slots; a slot present at one end only is kept in its half.
-#[inline]
+#[inline(always)]
 fn lerp_wheel(a: &WheelContact, b: &WheelContact, w: f64) -> WheelContact {
     let mut out = WheelContact::default();
     for k in 0..2 {

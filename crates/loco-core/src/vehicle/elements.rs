@@ -94,7 +94,9 @@ impl Attachment {
     }
 
     /// Applies `f` (N) on B and `−f` on A at the arms of [`Self::motion_and_arms`].
-    #[inline]
+    // Always inlined: the damper loop calls it for every damper and evaluation, and the plain
+    // hint was not taken (a call and the arms passed through memory each time).
+    #[inline(always)]
     pub(crate) fn apply_pair_at(&self, arms: &[[f64; 3]; 2], f: [f64; 3], wrenches: &mut Wrenches) {
         add_force_at(wrenches, self.body_b, arms[1], f);
         add_force_at(wrenches, self.body_a, arms[0], [-f[0], -f[1], -f[2]]);

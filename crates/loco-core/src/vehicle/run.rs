@@ -121,7 +121,11 @@ pub fn run(
         Recorded::Metrics => ChannelSet::new(&system.structure)?.only(&METRIC_CHANNELS)?,
     };
     let names = channel_set.names();
-    let mut channels: Vec<Vec<f64>> = vec![Vec::with_capacity(n_samples); names.len()];
+    // Each channel reserved on its own: `vec![v; n]` clones `v`, and a clone of an empty vector
+    // has no capacity, so all but one channel grew by doubling and copying.
+    let mut channels: Vec<Vec<f64>> = (0..names.len())
+        .map(|_| Vec::with_capacity(n_samples))
+        .collect();
     let mut time = Vec::with_capacity(n_samples);
 
     let total_steps = (n_samples - 1) * steps_per_sample;

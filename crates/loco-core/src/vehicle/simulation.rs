@@ -15,29 +15,19 @@
 use super::damper_elements::{law_for_step, DamperElement};
 use super::elements::{BodyStates, Wrenches};
 use super::integrator::{Integrator, OdeSystem};
-use super::layout::{
-    body_wheelset, coordinate_kind, dof_names, wheelset, CoordinateKind, CARBODY, N_BODIES, N_DOF,
-    N_WHEELSETS, X, Y, YAW,
-};
+use super::layout::{body_wheelset, N_BODIES, N_DOF, N_WHEELSETS, YAW};
+use super::rail_planes::RailPlanes;
 use super::run_statistics::RunStatistics;
 use super::states_cache::StatesCache;
 use super::structure::VehicleStructure;
 use super::track_frame::{CurvedTrack, FrameWork};
 use super::wheel_rail::{ContactMode, WheelForces, WheelRail};
-use crate::dampers::{Damper, DamperDiscreteState, MAX_STATES};
+use crate::dampers::{Damper, DamperDiscreteState};
 use crate::error::{LocoError, Result};
 use crate::track::{RailIrregularity, TrackIrregularity};
 use std::sync::Arc;
 
-/// Largest displacement of any coordinate in a run (longitudinal ones relative to the carbody),
-/// m: suspension travel is tens of millimetres and the contact range ±25 mm, so a body a metre
-/// away is a numerical blow-up, not a motion.
-pub const RUNAWAY_DISPLACEMENT: f64 = 1.0;
-/// Largest rotation of any coordinate but the wheelsets' spin, rad (29°), for the same reason.
-pub const RUNAWAY_ROTATION: f64 = 0.5;
-/// Lateral wheelset displacement beyond which a bounded state counts as derailed, m: twice the
-/// contact tables' half range (±25 mm, which already covers flange climbing).
-pub const DERAILED_LATERAL: f64 = 0.05;
+pub use super::state_check::{DERAILED_LATERAL, RUNAWAY_DISPLACEMENT, RUNAWAY_ROTATION};
 
 /// Running speed against time: constant, or a ramp that holds its start speed until it is started
 /// and then decelerates at a constant rate (SI units).
@@ -149,6 +139,8 @@ pub struct VehicleSystem {
     pub(crate) states_cache: StatesCache,
     wrenches: Wrenches,
     gen_force: Vec<f64>,
+    /// The rails' plane under each wheelset at the last evaluation, for the next.
+    rail_planes: RailPlanes,
     /// Wheel-rail forces of the last evaluation, per wheelset `[left, right]`.
     pub wheel_forces: [[WheelForces; 2]; N_WHEELSETS],
     pub(crate) damper_forces: Vec<f64>,
@@ -201,6 +193,7 @@ impl VehicleSystem {
             states_cache: StatesCache::default(),
             wrenches: [[0.0; 6]; N_BODIES],
             gen_force: vec![0.0; N_DOF],
+            rail_planes: RailPlanes::default(),
             wheel_forces: [[WheelForces::default(); 2]; N_WHEELSETS],
             damper_forces: vec![0.0; n_dampers],
         })
@@ -273,9 +266,9 @@ impl VehicleSystem {
                 let (x, v) = motions.stroke(i, damper.static_elongation);
                 let n = damper.n_states();
                 let o = damper.state_offset;
-                let mut rates = [0.0; MAX_STATES];
-                let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut rates[..n]);
-                dy[o..o + n].copy_from_slice(&rates[..n]);
+                // The law writes every one of its state rates straight into `dy` (through a
+                // buffer, each damper cost a library copy call).
+                let force = damper.force(x, v, &y[o..o + n], &self.discrete[i], &mut dy[o..o + n]);
                 damper.apply_at(&motions.arms(i), force, &mut self.wrenches);
                 self.damper_forces[i] = force;
             }
@@ -291,16 +284,22 @@ impl VehicleSystem {
                 self.body_states.velocity[body_wheelset(w)][YAW] =
                     own_yaw + curve.wheelset_frame_yaw_rate(speed, &self.frame_work, w);
             }
-            let rails = if statics && self.rail_inputs.is_none() {
-                RailIrregularity::default()
-            } else {
-                self.rails_at(w, t)
+            let plane = match &self.rail_inputs {
+                Some(inputs) => self.wheel_rail.rail_plane(&inputs[w], speed),
+                None if statics => self
+                    .wheel_rail
+                    .rail_plane(&RailIrregularity::default(), speed),
+                None => {
+                    let distance = self.wheelset_distance(w, t);
+                    let planes = &mut self.rail_planes;
+                    planes.plane(&self.track, &self.wheel_rail, w, distance, speed)
+                }
             };
             let result = self.wheel_rail.apply(
                 w,
                 t,
                 &self.body_states,
-                &rails,
+                &plane,
                 speed,
                 self.contact_mode,
                 &mut self.wrenches,
@@ -346,55 +345,7 @@ impl VehicleSystem {
     /// beyond the flanges while everything else stays bounded has derailed
     /// ([`LocoError::Derailed`]).
     pub fn check_state(&self, t: f64, y: &[f64]) -> Result<()> {
-        if let Some(i) = y.iter().position(|v| !v.is_finite()) {
-            let names = dof_names();
-            let location = if i < N_DOF {
-                names[i].clone()
-            } else if i < 2 * N_DOF {
-                format!("{} (velocity)", names[i - N_DOF])
-            } else {
-                "damper internal state".to_string()
-            };
-            return Err(LocoError::Diverged {
-                time: t,
-                location,
-                reason: "state is not finite".into(),
-            });
-        }
-        let carbody_x = y[CARBODY + X];
-        for (i, &q) in y[..N_DOF].iter().enumerate() {
-            let (q, limit, unit) = match coordinate_kind(i) {
-                CoordinateKind::Translation => (q, RUNAWAY_DISPLACEMENT, "m"),
-                CoordinateKind::Longitudinal => (q - carbody_x, RUNAWAY_DISPLACEMENT, "m"),
-                CoordinateKind::Rotation => (q, RUNAWAY_ROTATION, "rad"),
-                CoordinateKind::Spin => continue,
-            };
-            if q.abs() > limit {
-                let relative = if coordinate_kind(i) == CoordinateKind::Longitudinal {
-                    " relative to the carbody"
-                } else {
-                    ""
-                };
-                return Err(LocoError::Diverged {
-                    time: t,
-                    location: dof_names()[i].clone(),
-                    reason: format!(
-                        "runaway amplitude {q:.4e} {unit}{relative} (bound ±{limit} {unit})"
-                    ),
-                });
-            }
-        }
-        for w in 0..N_WHEELSETS {
-            let lateral = y[wheelset(w) + Y];
-            if lateral.abs() > DERAILED_LATERAL {
-                return Err(LocoError::Derailed {
-                    time: t,
-                    location: format!("wheelset{}", w + 1),
-                    reason: format!("lateral displacement {lateral:.4} m beyond the flanges"),
-                });
-            }
-        }
-        Ok(())
+        super::state_check::check_state(t, y)
     }
 }
 

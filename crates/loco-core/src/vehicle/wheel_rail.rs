@@ -166,17 +166,72 @@ impl WheelRail {
         &self.table
     }
 
+    /// The rails' plane of `rails` (the irregularities at a wheelset's position) seen at
+    /// `speed` V (m/s): the frame [`Self::apply`] reads the table in.
+    #[inline]
+    pub fn rail_plane(&self, rails: &RailIrregularity, speed: f64) -> RailPlane {
+        RailPlane::new(rails, self.settings.contact_half_distance, speed)
+    }
+
     /// Adds the wheel-rail forces on wheelset `w` at time `t` (s, for error messages) to
-    /// `wrenches`; `rails` are the irregularities at the wheelset's position, `speed` is V (m/s).
+    /// `wrenches`; `plane` is the rails' plane at the wheelset's position ([`Self::rail_plane`]),
+    /// `speed` is V (m/s).
     /// [`ContactMode::Held`] replaces the creep forces by a tangential spring (N/m) at each
     /// contact and a brake on the spin, holding the wheels in the static equilibrium search.
+    /// On a processor with AVX (checked once at run time, then a cached flag) the same code
+    /// runs compiled for it; the bits are the same either way (see [`Self::apply_avx`]).
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
         &self,
         w: usize,
         t: f64,
         states: &BodyStates,
-        rails: &RailIrregularity,
+        plane: &RailPlane,
+        speed: f64,
+        mode: ContactMode,
+        wrenches: &mut Wrenches,
+        out: &mut [WheelForces; 2],
+    ) -> Result<()> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx") {
+            // SAFETY: the processor has just been found to support AVX, the only feature the
+            // function enables.
+            return unsafe { self.apply_avx(w, t, states, plane, speed, mode, wrenches, out) };
+        }
+        self.apply_on(w, t, states, plane, speed, mode, wrenches, out)
+    }
+
+    /// [`Self::apply`] compiled for AVX. Why: the table look-up's interpolation of two contact
+    /// points of nine quantities runs four quantities per register instead of two, and the
+    /// three-operand encoding spares the register copies. The operations are the IEEE
+    /// operations of the baseline code in its order (AVX has no fused multiply-add, and Rust
+    /// never contracts), and the library functions called are the same, so the bits are.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn apply_avx(
+        &self,
+        w: usize,
+        t: f64,
+        states: &BodyStates,
+        plane: &RailPlane,
+        speed: f64,
+        mode: ContactMode,
+        wrenches: &mut Wrenches,
+        out: &mut [WheelForces; 2],
+    ) -> Result<()> {
+        self.apply_on(w, t, states, plane, speed, mode, wrenches, out)
+    }
+
+    /// The body of [`Self::apply`], inlined into each of its compilations.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn apply_on(
+        &self,
+        w: usize,
+        t: f64,
+        states: &BodyStates,
+        plane: &RailPlane,
         speed: f64,
         mode: ContactMode,
         wrenches: &mut Wrenches,
@@ -202,7 +257,6 @@ impl WheelRail {
         }
         // The table is read in the rails' plane (see `rail_plane`).
         let h0 = self.centred_radius;
-        let plane = RailPlane::new(rails, self.settings.contact_half_distance, speed);
         let pose_in_plane = plane.pose(u[1], u[2], u[ROLL], h0);
         let (s_theta, c_theta) = plane.roll_sin_cos();
         let yaw_sin_cos = u[YAW].sin_cos();
@@ -331,3 +385,7 @@ fn side_name(side: Side) -> &'static str {
 
 /// Number of wheels.
 pub const N_WHEELS: usize = 2 * N_WHEELSETS;
+
+#[cfg(test)]
+#[path = "wheel_rail_tests.rs"]
+mod tests;
