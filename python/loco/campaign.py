@@ -25,7 +25,6 @@ import contextlib
 import functools
 import hashlib
 import json
-import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextvars import ContextVar
@@ -336,26 +335,22 @@ class _Bar:
         self._bar = tqdm(total=total, initial=done, desc="simulations", unit="run", smoothing=0.1)
         self._base = done
         self._failed = failed
-        # The running chunks report from their threads while this one counts finished chunks.
-        self._lock = threading.Lock()
 
     def chunk_progress(self, done: int, failed: int) -> None:
-        """Within the running chunks (local threads)."""
-        with self._lock:
-            if self._base + done != self._bar.n:
-                self._bar.n = self._base + done
-                if self._failed + failed:
-                    self._bar.set_postfix(failed=self._failed + failed, refresh=False)
-                self._bar.refresh()
+        """Within the running chunk (local threads)."""
+        if self._base + done != self._bar.n:
+            self._bar.n = self._base + done
+            if self._failed + failed:
+                self._bar.set_postfix(failed=self._failed + failed, refresh=False)
+            self._bar.refresh()
 
     def chunk_done(self, n: int, failed: int) -> None:
-        with self._lock:
-            self._base += n
-            self._failed += failed
-            self._bar.n = self._base
-            if self._failed:
-                self._bar.set_postfix(failed=self._failed, refresh=False)
-            self._bar.refresh()
+        self._base += n
+        self._failed += failed
+        self._bar.n = self._base
+        if self._failed:
+            self._bar.set_postfix(failed=self._failed, refresh=False)
+        self._bar.refresh()
 
     def close(self) -> None:
         self._bar.close()

@@ -4,8 +4,7 @@ A campaign (:func:`loco.campaign.run_campaign`) cuts its samples into chunks; ea
 native batch (``loco.run_batch`` without the Python layers: rayon threads inside) and comes back
 as a :class:`ChunkResult`. An executor runs chunks and yields their results as they complete:
 
-- :class:`LocalExecutor` (the default): the chunks on this machine's cores, the next one
-  starting while one ends.
+- :class:`LocalExecutor` (the default): the chunks one after the other on this machine's cores.
 - :class:`DaskExecutor`: a ``distributed.Client`` — a ``LocalCluster`` of worker processes
   started on request, or a running scheduler by address (``tcp://host:8786``, or the
   ``DASK_SCHEDULER_ADDRESS`` convention). The :class:`BatchJob` (vehicle, scenario, track seed,
@@ -33,7 +32,6 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.chunk_threads import overlapped
 from loco.simulation import Scenario
 from loco.track import Track
 from loco.vehicle import Locomotive
@@ -53,7 +51,7 @@ __all__ = [
 FloatArray = npt.NDArray[np.float64]
 #: Kept time histories of a chunk: sample index -> (time (s), channel names, channels).
 Histories = dict[int, tuple[FloatArray, list[str], FloatArray]]
-#: ``progress(done, failed)`` within the running chunks (local executor only).
+#: ``progress(done, failed)`` within the running chunk (local executor only).
 ChunkProgress = Callable[[int, int], object]
 
 #: Environment variable naming a running Dask scheduler (the ``distributed`` convention).
@@ -208,9 +206,8 @@ class Executor(ABC):
 
 
 class LocalExecutor(Executor):
-    """The chunks on this machine, ``threads`` rayon threads each (default: one per core), as
-    ``loco.run_batch`` runs a batch; with more than one thread, the next chunk already runs
-    while one ends (:func:`loco.chunk_threads.overlapped`), so no core idles between chunks."""
+    """The chunks one after another on this machine, ``threads`` rayon threads each (default:
+    one per core), as ``loco.run_batch`` runs a batch."""
 
     def __init__(self, threads: int | None = None) -> None:
         if threads is not None and threads < 1:
@@ -219,20 +216,15 @@ class LocalExecutor(Executor):
         self.slots = threads or os.cpu_count() or 1
 
     def default_chunk_size(self, n_samples: int) -> int:
-        # A few samples per thread: each chunk's shared setup stays small against its samples,
-        # while a kill loses only the chunks running.
+        # Chunks run one at a time here: a few samples per thread keeps the idle tail of each
+        # chunk's last samples small while a kill still loses only one chunk.
         return int(np.clip(-(-n_samples // 8), 4 * self.slots, 16 * self.slots))
 
     def map_chunks(
         self, job: BatchJob, chunks: Sequence[Chunk], progress: ChunkProgress | None = None
     ) -> Iterator[ChunkResult]:
-        def run(chunk: Chunk, report: ChunkProgress) -> ChunkResult:
-            return run_chunk(job, chunk, self.threads or 0, report)
-
-        # Two chunks at once fill each other's ends; on one thread there are no such gaps, and
-        # a second chunk would take a core the caller did not give (the store write still
-        # overlaps the next chunk).
-        yield from overlapped(run, chunks, 2 if self.slots > 1 else 1, progress)
+        for chunk in chunks:
+            yield run_chunk(job, chunk, self.threads or 0, progress)
 
     def describe(self) -> str:
         return f"local threads ({self.slots})"
