@@ -31,17 +31,14 @@ training nor in selection. Whether it reaches :data:`R2_REQUIRED` is reported, n
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
-from sklearn.model_selection import KFold
-from threadpoolctl import threadpool_limits
 
-from loco.studies.surrogate import WIDTH_FACTORS, RBFNetwork, r2_score
+from loco.studies.surrogate import WIDTH_FACTORS, RBFNetwork
 from loco.studies.surrogate_reference import GaussianProcessSurrogate
 
 __all__ = [
@@ -263,23 +260,14 @@ def select_surrogate(
     2 cores)."""
     if not np.isfinite(y).all():
         raise ValueError("select_surrogate: objective values must be finite (drop failed runs)")
-    with threadpool_limits(limits=1):
-        splits = _folds(x, n_splits, seed)
-        scores, fold_models = _cv_scores(x, y, bounds, splits, seed, log_target, candidates)
-        fitted = {k: _fit(k, x, y, bounds, seed, log_target) for k in candidates}
-        scores = {k: dataclasses.replace(v, hyperparameters=describe(fitted[k]))
-                  for k, v in scores.items()}  # fmt: skip
-        chosen = best_candidate(scores)
-        spec = fitted.get(SPEC_MODEL)
-        if not isinstance(spec, RBFNetwork):
-            spec = RBFNetwork(10, bounds=bounds, seed=seed).fit(x, _target(y, log_target))
-        inner = (
-            _nested(x, y, bounds, splits, fold_models, seed, log_target, candidates)
-            if nested
-            else None
-        )
-    return Selection(scores=scores, chosen=chosen, model=fitted[chosen], spec_model=spec,
-                     models=fitted, nested=inner)  # fmt: skip
+    # The fits live in surrogate_fits, which builds on this module's candidates.
+    from loco.studies.surrogate_fits import Objective, select_objectives
+
+    (selection,) = select_objectives(
+        [Objective(x, y)], bounds, n_splits=n_splits, seed=seed, log_target=log_target,
+        candidates=candidates, nested=nested,
+    )  # fmt: skip
+    return selection
 
 
 def best_candidate(scores: dict[str, CandidateScore]) -> str:
@@ -316,81 +304,7 @@ def nested_selection_r2(
     best fitted on that training set and scored on the outer test fold, which took no part in
     the choice. Its mean is the estimate of the accuracy of "choose, then fit" that the maximum
     of the candidates' scores overstates."""
-    with threadpool_limits(limits=1):
-        splits = _folds(x, n_splits, seed)
-        _, fold_models = _cv_scores(x, y, bounds, splits, seed, log_target, candidates)
-        return _nested(x, y, bounds, splits, fold_models, seed, log_target, candidates)
+    from loco.studies.surrogate_fits import Objective, nested_only
 
-
-Split = tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]
-
-
-def _folds(x: FloatArray, n_splits: int, seed: int) -> list[Split]:
-    return list(KFold(n_splits=n_splits, shuffle=True, random_state=seed).split(x))
-
-
-def _target(y: FloatArray, log_target: bool) -> FloatArray:
-    return np.asarray(np.log(y) if log_target else y, dtype=np.float64)
-
-
-def _back(p: npt.ArrayLike, log_target: bool) -> FloatArray:
-    v = np.asarray(p, dtype=np.float64)
-    return np.asarray(np.exp(v) if log_target else v, dtype=np.float64)
-
-
-def _fit(
-    kind: str, x: FloatArray, y: FloatArray, bounds: npt.ArrayLike, seed: int, log_target: bool
-) -> Regressor:
-    model = make_model(kind, bounds, seed=seed, log_target=log_target)
-    model.fit(x, _target(y, log_target))
-    return model
-
-
-def _cv_scores(
-    x: FloatArray,
-    y: FloatArray,
-    bounds: npt.ArrayLike,
-    splits: Sequence[Split],
-    seed: int,
-    log_target: bool,
-    candidates: Sequence[str],
-) -> tuple[dict[str, CandidateScore], dict[str, list[Regressor]]]:
-    """Every candidate fitted on each fold's training samples and scored on its test samples
-    (R² of the objective); the fold models too, for :func:`_nested`."""
-    scores: dict[str, CandidateScore] = {}
-    models: dict[str, list[Regressor]] = {}
-    for kind in candidates:
-        predictions = np.empty(len(y))
-        r2 = np.empty(len(splits))
-        models[kind] = []
-        for i, (train, test) in enumerate(splits):
-            model = _fit(kind, x[train], y[train], bounds, seed, log_target)
-            predictions[test] = _back(model.predict(x[test]), log_target)
-            r2[i] = float(r2_score(y[test], predictions[test])[0])
-            models[kind].append(model)
-        scores[kind] = CandidateScore(kind, r2, predictions, {})
-    return scores, models
-
-
-def _nested(
-    x: FloatArray,
-    y: FloatArray,
-    bounds: npt.ArrayLike,
-    splits: Sequence[Split],
-    fold_models: dict[str, list[Regressor]],
-    seed: int,
-    log_target: bool,
-    candidates: Sequence[str],
-) -> NestedScore:
-    chosen, r2 = [], np.empty(len(splits))
-    for i, (train, test) in enumerate(splits):
-        inner_splits = _folds(x[train], len(splits), seed)
-        inner, _ = _cv_scores(
-            x[train], y[train], bounds, inner_splits, seed, log_target, candidates
-        )
-        best = best_candidate(inner)
-        # The chosen candidate fitted on this outer training set is the outer fold's model.
-        p = _back(fold_models[best][i].predict(x[test]), log_target)
-        r2[i] = float(r2_score(y[test], p)[0])
-        chosen.append(best)
-    return NestedScore(tuple(chosen), r2)
+    return nested_only(Objective(x, y), bounds, n_splits=n_splits, seed=seed,
+                       log_target=log_target, candidates=candidates)  # fmt: skip

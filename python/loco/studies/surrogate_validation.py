@@ -21,7 +21,6 @@ from typing import Any, ClassVar
 
 import numpy as np
 import pandas as pd
-from joblib import Parallel, delayed
 
 import loco
 from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray, load_monte_carlo
@@ -29,6 +28,7 @@ from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
 from loco.studies.stages import DataFile, Runtime, Stage, encode
 from loco.studies.surrogate import parity_plot
+from loco.studies.surrogate_fits import Objective, select_objectives
 from loco.studies.surrogate_holdout import assert_disjoint, holdout_scores, r2_interval
 from loco.studies.surrogate_selection import (
     CANDIDATES,
@@ -37,7 +37,6 @@ from loco.studies.surrogate_selection import (
     SPEC_MODEL,
     CandidateScore,
     Selection,
-    select_surrogate,
     selection_settings,
 )
 
@@ -68,28 +67,23 @@ def select_surrogates(
     Sobol' and NSGA-II use) and the SPEC network (``selection.spec_model``); with ``nested``
     the nested cross-validation of the choice too (``selection.nested``).
 
-    The objectives are independent and run in ``n_jobs`` processes (joblib's loky; default one
-    per objective, at most one per core): every fit is seeded and single-threaded, so the
-    result is the same for any ``n_jobs``."""
-    tasks = []
+    Every fit (objective × candidate × fold) is a task of :mod:`loco.studies.surrogate_fits`,
+    run in ``n_jobs`` processes (joblib's loky; default one per core): every fit is seeded and
+    single-threaded, so the result is the same for any ``n_jobs``."""
+    objectives = []
     for j in range(y.shape[1]):
         ok = np.isfinite(y[:, j])
-        tasks.append(
-            delayed(select_surrogate)(
-                x[ok],
-                y[ok, j],
-                bounds_si(),
-                n_splits=n_splits,
-                seed=seed,
-                log_target=log_target,
-                candidates=candidates,
-                nested=nested,
-            )
-        )
-    jobs = min(len(tasks), os.cpu_count() or 1) if n_jobs is None else n_jobs
-    if jobs <= 1:
-        return [function(*args, **kwargs) for function, args, kwargs in tasks]
-    return list(Parallel(n_jobs=jobs, backend="loky")(tasks))
+        objectives.append(Objective(x[ok], y[ok, j]))
+    return select_objectives(
+        objectives,
+        bounds_si(),
+        n_splits=n_splits,
+        seed=seed,
+        log_target=log_target,
+        candidates=candidates,
+        nested=nested,
+        n_jobs=os.cpu_count() or 1 if n_jobs is None else n_jobs,
+    )
 
 
 def spec_scores(
