@@ -335,14 +335,19 @@ impl Damper {
         }
     }
 
-    /// Valve position for dampers with a frequency valve, `None` otherwise.
-    pub fn valve_state(&self, discrete: &DamperDiscreteState) -> Option<ValveState> {
-        let has_valve = match self {
+    /// Whether the damper has a frequency valve: only then does [`Self::advance`] change its
+    /// discrete state, so that the step's end need not form the other dampers' strokes.
+    pub fn has_valve(&self) -> bool {
+        match self {
             Self::Maxwell(_) => false,
             Self::Fsd(_) => true,
             Self::Hydraulic(d) => d.params().frequency_valve.is_some(),
-        };
-        has_valve
+        }
+    }
+
+    /// Valve position for dampers with a frequency valve, `None` otherwise.
+    pub fn valve_state(&self, discrete: &DamperDiscreteState) -> Option<ValveState> {
+        self.has_valve()
             .then(|| FsdDamper::valve_state(discrete.scale_factor, discrete.trigger.high_frequency))
     }
 

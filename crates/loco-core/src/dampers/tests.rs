@@ -510,3 +510,33 @@ mod for_step {
         }
     }
 }
+
+/// The step's end forms strokes only for the dampers with a valve: the others' `advance` must
+/// leave their discrete state as it was, whatever the stroke.
+#[test]
+fn only_dampers_with_a_valve_advance() {
+    let hydraulic =
+        |params: HydraulicParams| Damper::Hydraulic(HydraulicDamper::new(params).unwrap());
+    let dampers = [
+        Damper::yd1(),
+        Damper::yd2(),
+        Damper::fsd(),
+        hydraulic(HydraulicParams::default()),
+        Damper::Hydraulic(HydraulicDamper::fsd_default()),
+    ];
+    for damper in dampers {
+        let mut discrete = damper.initial_discrete();
+        let start = discrete;
+        let states = vec![1e-3; damper.n_states()];
+        for i in 0..2000 {
+            let t = i as f64 * 1e-3;
+            let (x, v) = (0.01 * (40.0 * t).sin(), 0.4 * (40.0 * t).cos());
+            damper.advance(&mut discrete, t, 1e-3, x, v, &states);
+        }
+        assert_eq!(damper.valve_state(&discrete).is_some(), damper.has_valve());
+        if !damper.has_valve() {
+            // As text: the unset frequency estimate is NaN, which `==` never equals.
+            assert_eq!(format!("{discrete:?}"), format!("{start:?}"));
+        }
+    }
+}

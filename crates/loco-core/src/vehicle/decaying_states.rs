@@ -65,6 +65,9 @@ pub struct DecayingStates {
     n_dof: usize,
     /// The states' elongation rows `J` in lanes: each row's sum as the state's own.
     elongations: LaneRows,
+    /// One more than the largest state index (0 without states): the length the state vectors
+    /// must have, checked once per call instead of at each state's accesses.
+    end: usize,
 }
 
 /// Per state, over a time `τ`: `[e^{−rτ}, τ φ1, τ² φ2, τ³ φ3]` at `z = −rτ`.
@@ -77,8 +80,11 @@ impl DecayingStates {
     /// The states `states` (each rate finite and ≥ 0) of a system with `n_dof` coordinates.
     pub fn new(n_dof: usize, states: Vec<DecayingState>) -> Self {
         debug_assert!(states.iter().all(|s| s.rate.is_finite() && s.rate >= 0.0));
+        // The unchecked accesses below rest on every index being past the coordinates.
+        assert!(states.iter().all(|s| s.index >= 2 * n_dof));
         let rows: Vec<Sparse> = states.iter().map(|s| s.elongation.clone()).collect();
         Self {
+            end: states.iter().map(|s| s.index + 1).max().unwrap_or(0),
             elongations: LaneRows::new(&rows),
             states,
             n_dof,
@@ -115,11 +121,18 @@ impl DecayingStates {
     /// be called before anything else changes the coordinate rows of `k` (`q̇` there).
     #[inline]
     pub fn remove_linear(&self, deflections: &[f64], k: &mut [f64]) {
+        let n = self.states.len();
+        assert!(deflections.len() >= n && k.len() >= self.end);
         let (rates, others) = k.split_at_mut(2 * self.n_dof);
         self.elongations.for_each(rates, |i, elongation_rate| {
-            let s = &self.states[i];
-            let o = s.index - 2 * self.n_dof;
-            others[o] = elongation_rate - others[o] + s.rate * deflections[i];
+            // SAFETY: `i` is a row of `elongations`, one per state (`i < n`), and each state's
+            // index is in `2·n_dof..end` (`new`); the lengths were checked above.
+            unsafe {
+                let s = self.states.get_unchecked(i);
+                let o = s.index - 2 * self.n_dof;
+                let r = others.get_unchecked_mut(o);
+                *r = elongation_rate - *r + s.rate * deflections.get_unchecked(i);
+            }
         });
     }
 
@@ -150,17 +163,25 @@ impl DecayingStates {
         out: &mut [f64],
         deflections: &mut [f64],
     ) {
+        let n = self.states.len();
+        assert!(p.coefficients.len() >= n && start.len() >= n && deflections.len() >= n);
+        assert!(out.len() >= self.end && w.iter().all(|wk| wk.len() >= self.end));
         // The coordinates the elongations read, and the states written (after them).
         let (coordinates, others) = out.split_at_mut(2 * self.n_dof);
         self.elongations.for_each(coordinates, |i, sum| {
-            let (s, c) = (&self.states[i], &p.coefficients[i]);
-            let mut d = c[0] * start[i];
-            for (k, wk) in w.iter().enumerate() {
-                d += c[k + 1] * wk[s.index];
+            // SAFETY: `i` is a row of `elongations`, one per state (`i < n`), and each state's
+            // index is in `2·n_dof..end` (`new`); the lengths were checked above.
+            unsafe {
+                let s = self.states.get_unchecked(i);
+                let c = p.coefficients.get_unchecked(i);
+                let mut d = c[0] * start.get_unchecked(i);
+                for (k, wk) in w.iter().enumerate() {
+                    d += c[k + 1] * wk.get_unchecked(s.index);
+                }
+                *deflections.get_unchecked_mut(i) = d;
+                // `DecayingState::elongation_at` of the stage, less `δ`.
+                *others.get_unchecked_mut(s.index - 2 * self.n_dof) = sum + s.offset - d;
             }
-            deflections[i] = d;
-            // `DecayingState::elongation_at` of the stage, less `δ`.
-            others[s.index - 2 * self.n_dof] = sum + s.offset - d;
         });
     }
 }
@@ -232,6 +253,14 @@ mod tests {
         part.deflections(&y, &mut out);
         for (s, o) in states.iter().zip(&out) {
             assert_eq!(o.to_bits(), s.deflection(&y).to_bits());
+        }
+        // `remove_linear` on `k = y`: each state's row against its indexed formula.
+        let mut k = y.clone();
+        part.remove_linear(&out, &mut k);
+        for (s, d) in states.iter().zip(&out) {
+            let rate: f64 = s.elongation.iter().map(|&(j, c)| c * y[j]).sum();
+            let expected = rate - y[s.index] + s.rate * d;
+            assert_eq!(k[s.index].to_bits(), expected.to_bits());
         }
         let p = part.propagator(1e-3);
         let (w0, w1) = (y.iter().map(|v| 2.0 * v).collect::<Vec<_>>(), y.clone());

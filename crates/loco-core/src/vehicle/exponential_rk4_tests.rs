@@ -250,3 +250,46 @@ fn a_fast_lag_solved_exactly_is_stable_and_accurate() {
     let order = (e1 / e2).log2();
     assert!(order > 3.0, "observed order {order} ({e1:e} -> {e2:e})");
 }
+
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_loops_give_the_bits_of_the_plain_ones() {
+    if !std::arch::is_x86_feature_detected!("avx") {
+        return;
+    }
+    // 203 states (not a multiple of the lanes), with zeros of both signs, tiny and huge values.
+    let v = |seed: f64| -> Vec<f64> {
+        (0..203)
+            .map(|i| match i % 17 {
+                0 => 0.0,
+                1 => -0.0,
+                2 => 1e-300,
+                3 => -3e250,
+                _ => (i as f64 * seed).sin() * 10f64.powi(i % 9 - 4),
+            })
+            .collect()
+    };
+    let (y0, a, b, d) = (v(0.37), v(1.1), v(-0.53), v(2.9));
+    let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    let c = [2e-3, 2e-6, 1.3e-9];
+    for w in [&[&a[..]][..], &[&a[..], &b[..], &d[..]][..]] {
+        let (mut plain, mut lanes) = (vec![0.0; 203], vec![0.0; 203]);
+        polynomial(&mut plain, &y0, w, c);
+        // SAFETY: AVX was detected above.
+        unsafe { avx::polynomial(&mut lanes, &y0, w, c) };
+        assert_eq!(bits(&plain), bits(&lanes));
+    }
+    let (mut plain, mut lanes) = (vec![0.0; 203], vec![0.0; 203]);
+    extrapolate(&mut plain, &a, &b);
+    // SAFETY: AVX was detected above.
+    unsafe { avx::extrapolate(&mut lanes, &a, &b) };
+    assert_eq!(bits(&plain), bits(&lanes));
+    let mut plain = (vec![0.0; 203], vec![0.0; 203]);
+    let mut lanes = plain.clone();
+    let k = [&y0[..], &a[..], &b[..], &d[..]];
+    quadratic(&mut plain.0, &mut plain.1, k, 2e-3);
+    // SAFETY: AVX was detected above.
+    unsafe { avx::quadratic(&mut lanes.0, &mut lanes.1, k, 2e-3) };
+    assert_eq!(bits(&plain.0), bits(&lanes.0));
+    assert_eq!(bits(&plain.1), bits(&lanes.1));
+}

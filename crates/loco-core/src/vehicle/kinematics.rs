@@ -25,6 +25,10 @@ pub struct MotionMap {
     /// instead of six vectors (same terms in the same order, so the same sums).
     flat: Vec<(usize, f64)>,
     ends: [usize; 6],
+    /// One more than the largest coordinate index in the rows: the length the coordinates
+    /// must have, checked once per call instead of at every term (the terms' bounds checks
+    /// were a sixth of the body states' and generalized forces' instructions).
+    min_len: usize,
 }
 
 /// A dense 6×N_DOF map used while building (compressed to [`MotionMap`] afterwards).
@@ -110,11 +114,13 @@ impl MotionMap {
             end += row.len();
             *e = end;
         }
+        let min_len = flat.iter().map(|&(j, _)| j + 1).max().unwrap_or(0);
         Self {
             rows,
             free,
             flat,
             ends,
+            min_len,
         }
     }
 
@@ -134,13 +140,30 @@ impl MotionMap {
     #[inline]
     pub fn apply(&self, q: &[f64]) -> [f64; 6] {
         if let Some(f) = self.free {
-            return [q[f], q[f + 1], q[f + 2], q[f + 3], q[f + 4], q[f + 5]];
+            let q = &q[f..f + 6];
+            return [q[0], q[1], q[2], q[3], q[4], q[5]];
         }
+        self.check(q);
         let mut u = [0.0; 6];
         for (k, u) in u.iter_mut().enumerate() {
-            *u = self.row(k).iter().map(|&(j, c)| c * q[j]).sum();
+            // SAFETY: `check`.
+            *u = self
+                .row(k)
+                .iter()
+                .map(|&(j, c)| c * unsafe { at(q, j) })
+                .sum();
         }
         u
+    }
+
+    /// Panics unless `x` holds every coordinate of the rows, which makes the unchecked
+    /// accesses `at(x, j)` to the rows' coordinates `j` sound.
+    #[inline(always)]
+    fn check(&self, x: &[f64]) {
+        assert!(
+            x.len() >= self.min_len,
+            "MotionMap: fewer coordinates than its rows read"
+        );
     }
 
     /// [`Self::apply`] to coordinates `q` and velocities `qd` in one pass over the rows (each
@@ -148,17 +171,23 @@ impl MotionMap {
     #[inline]
     pub fn apply_both(&self, q: &[f64], qd: &[f64]) -> ([f64; 6], [f64; 6]) {
         if let Some(f) = self.free {
+            let (q, qd) = (&q[f..f + 6], &qd[f..f + 6]);
             return (
-                [q[f], q[f + 1], q[f + 2], q[f + 3], q[f + 4], q[f + 5]],
-                [qd[f], qd[f + 1], qd[f + 2], qd[f + 3], qd[f + 4], qd[f + 5]],
+                [q[0], q[1], q[2], q[3], q[4], q[5]],
+                [qd[0], qd[1], qd[2], qd[3], qd[4], qd[5]],
             );
         }
+        self.check(q);
+        self.check(qd);
         let (mut u, mut v) = ([0.0; 6], [0.0; 6]);
         for k in 0..6 {
             let (mut a, mut b) = (-0.0, -0.0);
             for &(j, c) in self.row(k) {
-                a += c * q[j];
-                b += c * qd[j];
+                // SAFETY: `check`.
+                unsafe {
+                    a += c * at(q, j);
+                    b += c * at(qd, j);
+                }
             }
             u[k] = a;
             v[k] = b;
@@ -177,14 +206,28 @@ impl MotionMap {
             }
             return;
         }
+        self.check(gen_force);
         for (k, &w) in wrench.iter().enumerate() {
             if w != 0.0 {
                 for &(j, c) in self.row(k) {
-                    gen_force[j] += c * w;
+                    debug_assert!(j < gen_force.len());
+                    // SAFETY: `check`.
+                    unsafe { *gen_force.get_unchecked_mut(j) += c * w };
                 }
             }
         }
     }
+}
+
+/// `x[j]` without a bounds check.
+///
+/// # Safety
+/// `j < x.len()`, which [`MotionMap::check`] establishes for every coordinate of its rows.
+#[inline(always)]
+unsafe fn at(x: &[f64], j: usize) -> f64 {
+    debug_assert!(j < x.len());
+    // SAFETY: the caller's.
+    unsafe { *x.get_unchecked(j) }
 }
 
 /// Cross product a × b.
@@ -277,6 +320,39 @@ mod tests {
                 assert_eq!(bits(v), bits(map.apply(b)));
             }
         }
+    }
+
+    #[test]
+    fn unchecked_terms_give_the_bits_of_the_indexed_rows() {
+        let parent = DenseMap::free(6);
+        let child = DenseMap::attached(
+            &parent,
+            [0.3, -0.2, 0.1],
+            [0.1, 0.0, 0.0],
+            [true, false, true],
+            &[(4, 40), (1, 41)],
+        )
+        .compress();
+        let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
+        let u = child.apply(&q);
+        let w = [1.0, -2.0, 0.0, 0.3, -0.7, 0.9];
+        let mut g: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.23).cos()).collect();
+        let mut expected = g.clone();
+        child.add_transpose(&w, &mut g);
+        for (k, row) in child.rows().iter().enumerate() {
+            let sum: f64 = row.iter().map(|&(j, c)| c * q[j]).sum();
+            assert_eq!(u[k].to_bits(), sum.to_bits());
+            for &(j, c) in row.iter().filter(|_| w[k] != 0.0) {
+                expected[j] += c * w[k];
+            }
+        }
+        assert_eq!(
+            g.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+            expected.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+        );
+        // Coordinates that stop short of the rows are refused, not read past.
+        let short = std::panic::catch_unwind(|| child.apply(&q[..41]));
+        assert!(short.is_err());
     }
 
     #[test]
