@@ -297,16 +297,7 @@ mod tests {
 
     #[test]
     fn one_pass_over_both_vectors_gives_the_bits_of_two() {
-        let parent = DenseMap::free(6);
-        let child = DenseMap::attached(
-            &parent,
-            [0.3, -0.2, 0.1],
-            [0.1, 0.0, 0.0],
-            [true, false, true],
-            &[(4, 40), (1, 41)],
-        )
-        .compress();
-        for map in [parent.compress(), child] {
+        for map in [DenseMap::free(6).compress(), attached_child()] {
             let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
             let qd: Vec<f64> = (0..N_DOF).map(|i| -(i as f64 * 0.11).cos()).collect();
             // Zeros of both signs: an empty row and a sum of zeros keep their sign.
@@ -322,17 +313,22 @@ mod tests {
         }
     }
 
-    #[test]
-    fn unchecked_terms_give_the_bits_of_the_indexed_rows() {
+    /// A body attached to a free one with two coordinates of its own (40, 41), compressed.
+    fn attached_child() -> MotionMap {
         let parent = DenseMap::free(6);
-        let child = DenseMap::attached(
+        DenseMap::attached(
             &parent,
             [0.3, -0.2, 0.1],
             [0.1, 0.0, 0.0],
             [true, false, true],
             &[(4, 40), (1, 41)],
         )
-        .compress();
+        .compress()
+    }
+
+    #[test]
+    fn unchecked_terms_give_the_bits_of_the_indexed_rows() {
+        let child = attached_child();
         let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
         let u = child.apply(&q);
         let w = [1.0, -2.0, 0.0, 0.3, -0.7, 0.9];
@@ -357,15 +353,7 @@ mod tests {
 
     #[test]
     fn transpose_is_the_adjoint() {
-        let parent = DenseMap::free(6);
-        let child = DenseMap::attached(
-            &parent,
-            [0.3, -0.2, 0.1],
-            [0.1, 0.0, 0.0],
-            [true, false, true],
-            &[(4, 40), (1, 41)],
-        )
-        .compress();
+        let child = attached_child();
         let q: Vec<f64> = (0..N_DOF).map(|i| (i as f64 * 0.37).sin()).collect();
         let w = [1.0, -2.0, 0.5, 0.3, -0.7, 0.9];
         let u = child.apply(&q);
