@@ -233,13 +233,16 @@ def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, st
     runs again and takes every sample from its store (no simulation), so the stages that read
     the table see the same content hash and stay finished."""
     out, _ = run
+    fewer = dataclasses.replace(TINY, n_verify=2)
+    # The output at these sizes first (the test before leaves it so; run alone, this brings it
+    # there), so that what runs below is the damaged stage's doing only.
+    reproduce(fewer, out, threads=2, progress=False, log=lambda _: None)
     table = out / "monte_carlo" / "monte_carlo.csv"
     whole = table.read_bytes()
     parts = sorted((out / "monte_carlo" / "store").rglob("part-*.parquet"))
     assert parts, "the Monte Carlo samples are kept in the stage's store"
     table.write_bytes(whole[: len(whole) // 2])
     lines: list[str] = []
-    fewer = dataclasses.replace(TINY, n_verify=2)  # the sizes of the last run above
     reproduce(fewer, out, threads=2, progress=False, log=lines.append)
     assert "[monte_carlo] output monte_carlo/monte_carlo.csv is changed or truncated since the " \
         "stage finished: running again" in lines  # fmt: skip
