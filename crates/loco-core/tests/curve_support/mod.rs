@@ -14,6 +14,8 @@ use loco_core::vehicle::track_frame::CurvedTrack;
 use loco_core::vehicle::wheel_rail::WheelRail;
 use std::sync::Arc;
 
+pub mod cone;
+
 /// A run on a curve: its recorded output, the system after it (contact, last wheel forces), its
 /// final state (coordinates, velocities, damper states) and that state's derivatives.
 // Each test binary that includes this module reads only some of the fields.
