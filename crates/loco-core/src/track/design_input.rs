@@ -180,6 +180,64 @@ pub fn load_sections_csv(path: &Path) -> Result<Vec<SectionSetting>> {
     parse_sections_csv(&text, &path.display().to_string())
 }
 
+/// The `curve` setting: sections in place, or a CSV file of them. Read by
+/// [`CurveSetting::from_toml`] (also as serde's `Deserialize`), so that a bad section in a study
+/// file is named with its field, not with an untagged enum's "did not match any variant".
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum CurveSetting {
+    File(String),
+    Sections(Vec<SectionSetting>),
+}
+
+impl<'de> Deserialize<'de> for CurveSetting {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let value = toml::Value::deserialize(d)?;
+        Self::from_toml(value).map_err(serde::de::Error::custom)
+    }
+}
+
+impl CurveSetting {
+    /// The setting from its TOML value: a string is the path of a CSV file, an array the
+    /// sections ([`SectionSetting::from_toml`]); anything else is an error naming `curve`.
+    pub fn from_toml(value: toml::Value) -> Result<Self> {
+        match value {
+            toml::Value::String(path) => Ok(Self::File(path)),
+            toml::Value::Array(sections) => sections
+                .into_iter()
+                .enumerate()
+                .map(|(i, s)| SectionSetting::from_toml(i, s))
+                .collect::<Result<Vec<_>>>()
+                .map(Self::Sections),
+            other => Err(LocoError::param(
+                "curve",
+                format!(
+                    "expected the path of a CSV file or a list of sections, got a {}",
+                    other.type_str()
+                ),
+            )),
+        }
+    }
+
+    /// The sections, a file relative to `dir`.
+    pub fn sections(&self, dir: &Path) -> Result<Vec<DesignSection>> {
+        match self {
+            Self::File(file) => {
+                // As the track: a name that is no file is the setting's fault, named by it.
+                let path = dir.join(file);
+                if !path.is_file() {
+                    return Err(LocoError::param(
+                        "curve",
+                        format!("'{file}' is not a curve file (CSV of sections), nor a list of sections"),
+                    ));
+                }
+                resolve_sections(&load_sections_csv(&path)?)
+            }
+            Self::Sections(list) => resolve_sections(list),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
