@@ -30,7 +30,7 @@
 //! full slip gives |F| = μN on any grid. The element geometry in units of (a, b) is precomputed in
 //! [`Fastsim::new`]; [`Fastsim::creep_forces`] allocates nothing.
 
-use super::fastsim_lanes::{integrate_strips, StripInputs, PAIRS};
+use super::fastsim_lanes::{integrate_strips, Element, StripInputs, PAIRS};
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
 use std::f64::consts::PI;
@@ -100,8 +100,8 @@ pub struct Fastsim {
     /// Strips in groups of [`LANES`]: `y_j/b`, `a_j/a` and the strip's p_n shape factor; the
     /// last group is padded with empty strips (a_j = 0), which contribute nothing.
     strips: Vec<StripLanes>,
-    /// Per element k of a strip: `(x_k/a_j, p_n shape factor of the element)`.
-    elements: Vec<(f64, f64)>,
+    /// Per element k of a strip: x_k/a_j and the p_n shape factor of the element.
+    elements: Vec<Element>,
     /// Pressure at shape factor 1 per N/(ab) (–): 1 / Σ shape·dA/(ab), so that the discrete
     /// pressure sums to N exactly.
     pressure_scale: f64,
@@ -152,15 +152,15 @@ impl Fastsim {
                 lanes
             })
             .collect();
-        let elements: Vec<(f64, f64)> = (0..nx)
+        let elements: Vec<Element> = (0..nx)
             .map(|k| {
                 let u = 1.0 - (2 * k + 1) as f64 / nx as f64;
                 let w = 1.0 - u * u;
-                (u, if elliptic { w.sqrt() } else { w })
+                Element::new(u, if elliptic { w.sqrt() } else { w })
             })
             .collect();
         // Discrete ∫∫ shape dA in units of ab: Σ_j Σ_k shape · (2 s_j/nx)(2/ny).
-        let element_sum: f64 = elements.iter().map(|e| e.1).sum();
+        let element_sum: f64 = elements.iter().map(|e| e.shape).sum();
         let discrete: f64 =
             (0..ny).map(|j| strip(j).1 * strip(j).2).sum::<f64>() * element_sum * 4.0
                 / (nx * ny) as f64;

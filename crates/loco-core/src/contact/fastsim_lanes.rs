@@ -6,9 +6,15 @@
 //! serial chain that bounds FASTSIM's cost. Here a value of two strips is one `Lanes<2>`, whose
 //! lane-wise operations the compiler turns into packed ones (`sqrtpd`, `divpd` with SSE2, the
 //! x86_64 baseline); where the processor has AVX (detected at run time) four strips are one
-//! `Lanes<4>` (`vsqrtpd`, `vdivpd` on 256-bit registers). Every lane does the scalar code's IEEE operations in the scalar code's order
-//! (no fused multiply-add, no reordering), so the forces are bit for bit those of one strip at a
-//! time, on any machine.
+//! `Lanes<4>` (`vsqrtpd`, `vdivpd` on 256-bit registers), the ten strips of a pass two of them
+//! and one `Lanes<2>`. Every lane does the scalar code's IEEE operations in the scalar code's
+//! order (no fused multiply-add, no reordering), so the forces are bit for bit those of one strip
+//! at a time, on any machine.
+//!
+//! The root and the division take most of the time where the traction is projected onto the
+//! bound (a cycle profile: the instructions waiting on them held a third of the samples), so the
+//! test that skips them costs one product per element and the chain between them carries no
+//! floor's maximum when no traction is zero.
 
 use std::ops::{Add, Mul, Sub};
 
@@ -71,6 +77,11 @@ impl<const W: usize> Lanes<W> {
     pub(super) fn all_le(self, cap: Self) -> bool {
         self.0.iter().zip(cap.0).all(|(&a, b)| a <= b)
     }
+    /// Whether every lane is above `floor`'s.
+    #[inline(always)]
+    pub(super) fn all_gt(self, floor: Self) -> bool {
+        self.0.iter().zip(floor.0).all(|(&a, b)| a > b)
+    }
     #[inline(always)]
     pub(super) fn clamp(self, lo: f64, hi: f64) -> Self {
         let mut out = self.0;
@@ -91,8 +102,46 @@ pub(super) const INSIDE_BOUND: f64 = 1.0 - 1e-12;
 pub(super) const PAIRS: usize = 5;
 /// Strips of one pass.
 const STRIPS: usize = 2 * PAIRS;
-/// Groups of four lanes of the AVX pass: the ten strips padded to twelve with empty strips.
-const QUADS: usize = STRIPS.div_ceil(4);
+
+/// An element of the strips' march, from the leading edge.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Element {
+    /// x_k / a_j (–).
+    pub u: f64,
+    /// The p_n shape factor of the element (–).
+    pub shape: f64,
+    /// shape²·[`INSIDE_BOUND`]: with a strip's bound² it gives the test of the projection's skip
+    /// in one product instead of three (see [`inside_test`]).
+    pub inside: f64,
+}
+
+impl Element {
+    pub(super) fn new(u: f64, shape: f64) -> Self {
+        Self {
+            u,
+            shape,
+            inside: shape * shape * INSIDE_BOUND,
+        }
+    }
+}
+
+/// A strip's part of the skip test, bound_j² (Pa²): |p|² ≤ bound_j²·`inside` of an element keeps
+/// |p| within the bound bound_j·shape by more than rounding (the three roundings of the test's
+/// products, 4.4e-16 relative, against INSIDE_BOUND's 1e-12), so the scale is exactly 1, as
+/// with the test on (bound_j·shape)² that it replaces. Outside 1e-145 ≤ bound_j ≤ 1e150, where
+/// the products could leave the normal range (or reach the root's floor), the test never passes
+/// (NaN) and the projection always runs, except for an empty strip (bound_j = 0), whose zero
+/// traction is inside a zero bound and its scale is not needed.
+#[inline(always)]
+fn inside_test(bound_j: f64) -> f64 {
+    if (1e-145..=1e150).contains(&bound_j) {
+        bound_j * bound_j
+    } else if bound_j == 0.0 {
+        0.0
+    } else {
+        f64::NAN
+    }
+}
 
 /// The per-strip inputs of one lockstep pass, `2·PAIRS` strips (SI units as in `fastsim`).
 #[derive(Debug, Clone, Copy)]
@@ -113,14 +162,14 @@ pub(super) struct StripSums {
     pub sxpy: [f64; 2 * PAIRS],
 }
 
-/// Integrates the strips of `inputs` over `elements` (`(x_k/a_j, p_n shape factor)` from the
-/// leading edge); p_y's slope is `eta_l2 + φ·x·inv_l3` with `eta_l2 = η/L2` (Pa/m), spin φ
-/// (1/m) and `inv_l3 = 1/L3` (Pa/m). On a processor with AVX four strips share a register
-/// (checked once at run time, then a cached flag); the bits are the same either way.
+/// Integrates the strips of `inputs` over `elements` (from the leading edge); p_y's slope is
+/// `eta_l2 + φ·x·inv_l3` with `eta_l2 = η/L2` (Pa/m), spin φ (1/m) and `inv_l3 = 1/L3` (Pa/m).
+/// On a processor with AVX four strips share a register (checked once at run time, then a
+/// cached flag); the bits are the same either way.
 #[inline(always)]
 pub(super) fn integrate_strips(
     inputs: &StripInputs,
-    elements: &[(f64, f64)],
+    elements: &[Element],
     eta_l2: f64,
     phi: f64,
     inv_l3: f64,
@@ -138,197 +187,150 @@ pub(super) fn integrate_strips(
 #[inline(always)]
 fn integrate_strips_sse2(
     inputs: &StripInputs,
-    elements: &[(f64, f64)],
+    elements: &[Element],
     eta_l2: f64,
     phi: f64,
     inv_l3: f64,
 ) -> StripSums {
-    let (sx, sy, sxpy) = integrate::<2, PAIRS, STRIPS>(
-        &inputs.a_j,
-        &inputs.slope_x,
-        &inputs.bound,
-        elements,
-        (eta_l2, phi, inv_l3),
-    );
-    StripSums { sx, sy, sxpy }
+    integrate::<2, PAIRS, 0>(inputs, elements, (eta_l2, phi, inv_l3))
 }
 
-/// [`integrate_strips`] four strips per register; the two padding strips are empty (a_j = 0,
-/// bound 0: their tractions stay 0) and dropped.
+/// [`integrate_strips`] with eight strips in two AVX registers and the last two (the innermost,
+/// see `fastsim`) in a 128-bit one. Why not three AVX registers with two empty lanes: the
+/// divider takes a 256-bit root or division in twice the time of a 128-bit one, and the inner
+/// strips project too.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
 unsafe fn integrate_strips_avx(
     inputs: &StripInputs,
-    elements: &[(f64, f64)],
+    elements: &[Element],
     eta_l2: f64,
     phi: f64,
     inv_l3: f64,
 ) -> StripSums {
-    let pad = |a: &[f64; STRIPS]| -> [f64; 4 * QUADS] {
-        std::array::from_fn(|l| if l < STRIPS { a[l] } else { 0.0 })
-    };
-    let sums = integrate::<4, QUADS, { 4 * QUADS }>(
-        &pad(&inputs.a_j),
-        &pad(&inputs.slope_x),
-        &pad(&inputs.bound),
-        elements,
-        (eta_l2, phi, inv_l3),
-    );
-    let cut = |a: [f64; 4 * QUADS]| -> [f64; STRIPS] { std::array::from_fn(|l| a[l]) };
-    StripSums {
-        sx: cut(sums.0),
-        sy: cut(sums.1),
-        sxpy: cut(sums.2),
+    integrate::<4, 2, 2>(inputs, elements, (eta_l2, phi, inv_l3))
+}
+
+/// One register of `W` strips through the march: their inputs, tractions and sums.
+#[derive(Clone, Copy)]
+struct Group<const W: usize> {
+    a_j: Lanes<W>,
+    slope_x: Lanes<W>,
+    bound_j: Lanes<W>,
+    /// [`inside_test`] of each strip.
+    inside_j: Lanes<W>,
+    x_prev: Lanes<W>,
+    px: Lanes<W>,
+    py: Lanes<W>,
+    sx: Lanes<W>,
+    sy: Lanes<W>,
+    sxpy: Lanes<W>,
+}
+
+impl<const W: usize> Group<W> {
+    /// The strips `first..first + W` of `inputs`.
+    #[inline(always)]
+    fn new(inputs: &StripInputs, first: usize) -> Self {
+        let take = |a: &[f64; STRIPS]| {
+            let mut lanes = [0.0; W];
+            lanes.copy_from_slice(&a[first..first + W]);
+            Lanes(lanes)
+        };
+        let bound_j = take(&inputs.bound);
+        // Loops, not `array::map` or `from_fn`: in the AVX compilation their closures were called
+        // per lane.
+        let mut inside_j = bound_j;
+        for v in &mut inside_j.0 {
+            *v = inside_test(*v);
+        }
+        let zero = Lanes::splat(0.0);
+        Self {
+            a_j: take(&inputs.a_j),
+            slope_x: take(&inputs.slope_x),
+            bound_j,
+            inside_j,
+            x_prev: take(&inputs.a_j),
+            px: zero,
+            py: zero,
+            sx: zero,
+            sy: zero,
+            sxpy: zero,
+        }
+    }
+
+    /// One element step; `c` is `(eta_l2, phi, inv_l3)`. Every lane does the scalar code's IEEE
+    /// operations in its order.
+    #[inline(always)]
+    fn step(&mut self, e: &Element, c: (f64, f64, f64)) {
+        let (eta_l2, phi, inv_l3) = (Lanes::splat(c.0), Lanes::splat(c.1), Lanes::splat(c.2));
+        let x = Lanes::splat(e.u) * self.a_j;
+        let h = self.x_prev - x;
+        let x_mid = Lanes::splat(0.5) * (self.x_prev + x);
+        self.px = self.px - h * self.slope_x;
+        self.py = self.py - h * (eta_l2 + phi * x_mid * inv_l3);
+        // Projection onto the bound: scale = min(1, bound/max(|p|, tiny floor)). Where every
+        // lane is inside the bound by more than rounding can move |p|, the scale is exactly 1
+        // and the root and division are skipped: the same bits for a fraction of the cost in
+        // the adhesion zone, most of a tread contact.
+        let norm2 = self.px * self.px + self.py * self.py;
+        if !norm2.all_le(self.inside_j * Lanes::splat(e.inside)) {
+            let bound = self.bound_j * Lanes::splat(e.shape);
+            let root = norm2.sqrt();
+            // A positive |p|² has a root of at least 1e-162, above the floor: the floor's
+            // maximum, on the chain of the root and the division, is then skipped.
+            let q = if norm2.all_gt(Lanes::splat(0.0)) {
+                bound.div(root)
+            } else {
+                bound.div(root.max(Lanes::splat(f64::MIN_POSITIVE)))
+            };
+            let scale = q.min(Lanes::splat(1.0));
+            self.px = self.px * scale;
+            self.py = self.py * scale;
+        }
+        self.sx = self.sx + self.px;
+        self.sy = self.sy + self.py;
+        self.sxpy = self.sxpy + x * self.py;
+        self.x_prev = x;
+    }
+
+    /// Writes the sums into lanes `first..first + W` of `out`.
+    #[inline(always)]
+    fn store(&self, out: &mut StripSums, first: usize) {
+        out.sx[first..first + W].copy_from_slice(&self.sx.0);
+        out.sy[first..first + W].copy_from_slice(&self.sy.0);
+        out.sxpy[first..first + W].copy_from_slice(&self.sxpy.0);
     }
 }
 
-/// Per-strip sums (Σ p_x, Σ p_y, Σ x·p_y) of `N = W·G` strips.
-type Sums<const N: usize> = ([f64; N], [f64; N], [f64; N]);
-
-/// The lockstep integration of `N = W·G` strips in `G` groups of `W` lanes; `c` is
-/// `(eta_l2, phi, inv_l3)`. Every lane does the scalar code's IEEE operations in its order.
+/// The lockstep integration of the strips in `G` groups of `W` lanes and the last `T` in one
+/// group of `T` (`W·G + T` = the pass's strips); `c` is `(eta_l2, phi, inv_l3)`.
 #[inline(always)]
-fn integrate<const W: usize, const G: usize, const N: usize>(
-    a_j: &[f64; N],
-    slope_x: &[f64; N],
-    bound_j: &[f64; N],
-    elements: &[(f64, f64)],
+fn integrate<const W: usize, const G: usize, const T: usize>(
+    inputs: &StripInputs,
+    elements: &[Element],
     c: (f64, f64, f64),
-) -> Sums<N> {
-    let lanes = |a: &[f64; N]| -> [Lanes<W>; G] {
-        std::array::from_fn(|p| Lanes(std::array::from_fn(|l| a[W * p + l])))
-    };
-    let a_j = lanes(a_j);
-    let slope_x = lanes(slope_x);
-    let bound_j = lanes(bound_j);
-    let (eta_l2, half) = (Lanes::splat(c.0), Lanes::splat(0.5));
-    let (phi, inv_l3) = (Lanes::splat(c.1), Lanes::splat(c.2));
-    let (one, floor) = (Lanes::splat(1.0), Lanes::splat(f64::MIN_POSITIVE));
-    let inside = Lanes::splat(INSIDE_BOUND);
-    let zero = Lanes::splat(0.0);
-    let mut px = [zero; G];
-    let mut py = [zero; G];
-    let mut sx = [zero; G];
-    let mut sy = [zero; G];
-    let mut sxpy = [zero; G];
-    let mut x_prev = a_j;
-    for &(u_k, shape_k) in elements {
-        let (u_k, shape_k) = (Lanes::splat(u_k), Lanes::splat(shape_k));
-        for p in 0..G {
-            let x = u_k * a_j[p];
-            let h = x_prev[p] - x;
-            let x_mid = half * (x_prev[p] + x);
-            px[p] = px[p] - h * slope_x[p];
-            py[p] = py[p] - h * (eta_l2 + phi * x_mid * inv_l3);
-            let bound = bound_j[p] * shape_k;
-            // Projection onto the bound: scale = min(1, bound/|p|) (|p| = 0 gives 1 through the
-            // tiny floor). Where every lane is inside the bound by more than rounding can move
-            // |p|, the scale is exactly 1 and the root and division are skipped: the same bits
-            // for a fraction of the cost in the adhesion zone, most of a tread contact.
-            let norm2 = px[p] * px[p] + py[p] * py[p];
-            if !norm2.all_le(bound * bound * inside) {
-                let scale = bound.div(norm2.sqrt().max(floor)).min(one);
-                px[p] = px[p] * scale;
-                py[p] = py[p] * scale;
-            }
-            sx[p] = sx[p] + px[p];
-            sy[p] = sy[p] + py[p];
-            sxpy[p] = sxpy[p] + x * py[p];
-            x_prev[p] = x;
-        }
+) -> StripSums {
+    const { assert!(W * G + T == STRIPS) };
+    // A loop, not `from_fn`, whose closure the AVX compilation called per group.
+    let mut groups = [Group::<W>::new(inputs, 0); G];
+    for (g, group) in groups.iter_mut().enumerate().skip(1) {
+        *group = Group::new(inputs, W * g);
     }
-    let unpack = |v: [Lanes<W>; G]| -> [f64; N] { std::array::from_fn(|l| v[l / W].0[l % W]) };
-    (unpack(sx), unpack(sy), unpack(sxpy))
+    let mut tail: Group<T> = Group::new(inputs, W * G);
+    for e in elements {
+        for group in &mut groups {
+            group.step(e, c);
+        }
+        tail.step(e, c);
+    }
+    let mut out = StripSums::default();
+    for (g, group) in groups.iter().enumerate() {
+        group.store(&mut out, W * g);
+    }
+    tail.store(&mut out, W * G);
+    out
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// One strip at a time, the plain scalar loop (FASTSIM's integration before the lanes).
-    fn one_strip(
-        a_j: f64,
-        slope_x: f64,
-        bound_j: f64,
-        e: &[(f64, f64)],
-        c: (f64, f64, f64),
-    ) -> [f64; 3] {
-        let (eta_l2, phi, inv_l3) = c;
-        let (mut px, mut py, mut sx, mut sy, mut sxpy) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        let mut x_prev = a_j;
-        for &(u_k, shape_k) in e {
-            let x = u_k * a_j;
-            let h = x_prev - x;
-            let x_mid = 0.5 * (x_prev + x);
-            px -= h * slope_x;
-            py -= h * (eta_l2 + phi * x_mid * inv_l3);
-            let norm = (px * px + py * py).sqrt().max(f64::MIN_POSITIVE);
-            let scale = (bound_j * shape_k / norm).min(1.0);
-            px *= scale;
-            py *= scale;
-            sx += px;
-            sy += py;
-            sxpy += x * py;
-            x_prev = x;
-        }
-        [sx, sy, sxpy]
-    }
-
-    #[test]
-    fn lanes_give_the_bits_of_one_strip_at_a_time() {
-        // A small deterministic generator: strips from adhesion to full slip, with spin, and
-        // empty padding strips (a_j = 0, bound 0).
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let elements: Vec<(f64, f64)> = (0..10)
-            .map(|k| {
-                let u = 1.0 - (2 * k + 1) as f64 / 10.0;
-                (u, 1.0 - u * u)
-            })
-            .collect();
-        for case in 0..200 {
-            let c = (
-                (next() - 0.5) * 1e9,
-                (next() - 0.5) * 1e12 * f64::from(case % 3 != 0),
-                1e10 * (1.0 + next()),
-            );
-            let inputs = StripInputs {
-                a_j: std::array::from_fn(|l| if l == 5 { 0.0 } else { 1e-2 * next() }),
-                slope_x: std::array::from_fn(|_| (next() - 0.5) * 1e9),
-                bound: std::array::from_fn(|l| if l == 5 { 0.0 } else { 1e9 * next().powi(4) }),
-            };
-            let mut paths = vec![(
-                "sse2",
-                integrate_strips_sse2(&inputs, &elements, c.0, c.1, c.2),
-            )];
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx") {
-                // SAFETY: AVX was just detected.
-                let avx = unsafe { integrate_strips_avx(&inputs, &elements, c.0, c.1, c.2) };
-                paths.push(("avx", avx));
-            }
-            for (path, sums) in paths {
-                for l in 0..2 * PAIRS {
-                    let want = one_strip(
-                        inputs.a_j[l],
-                        inputs.slope_x[l],
-                        inputs.bound[l],
-                        &elements,
-                        c,
-                    );
-                    let got = [sums.sx[l], sums.sy[l], sums.sxpy[l]];
-                    assert_eq!(
-                        got.map(f64::to_bits),
-                        want.map(f64::to_bits),
-                        "{path} case {case} lane {l}"
-                    );
-                }
-            }
-        }
-    }
-}
+#[path = "fastsim_lanes_tests.rs"]
+mod tests;

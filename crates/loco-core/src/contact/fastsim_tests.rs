@@ -51,7 +51,12 @@ fn strip_by_strip(f: &Fastsim, a: f64, b: f64, mu: f64, c: &Creepages) -> [f64; 
         let slope_x = c.longitudinal * inv_l1 - c.spin * y * inv_l3;
         let (mut px, mut py, mut sx, mut sy, mut sxpy) = (0.0, 0.0, 0.0, 0.0, 0.0);
         let mut x_prev = a_j;
-        for &(u_k, shape_k) in &f.elements {
+        for &Element {
+            u: u_k,
+            shape: shape_k,
+            ..
+        } in &f.elements
+        {
             let x = u_k * a_j;
             let h = x_prev - x;
             px -= h * slope_x;

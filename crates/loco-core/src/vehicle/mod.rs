@@ -52,6 +52,7 @@ pub mod mass;
 pub mod modes;
 pub mod parameter_schema;
 pub mod parameters;
+mod pending_contact;
 pub mod presets;
 pub mod rail_plane;
 mod rail_planes;

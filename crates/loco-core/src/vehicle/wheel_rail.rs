@@ -25,8 +25,9 @@
 //! not a slip, so the rail surface's velocity (the plane's vertical and roll rates) is
 //! subtracted. FASTSIM gives the tangential forces in the contact plane.
 
-use super::elements::{add_force_at, BodyStates, Wrenches};
+use super::elements::{BodyStates, Wrenches};
 use super::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
+use super::pending_contact::{add_forces, Creep, Pending};
 use super::rail_plane::RailPlane;
 use crate::contact::creepage::{
     contact_lead_sin_cos, creepages_of_slip, dot, slip_velocity, BodyVelocity, ContactFrame, Side,
@@ -108,7 +109,14 @@ pub enum CreepSolver {
 
 impl CreepSolver {
     #[inline]
-    fn creep_forces(&self, a: f64, b: f64, n: f64, mu: f64, creep: &Creepages) -> CreepForces {
+    pub(super) fn creep_forces(
+        &self,
+        a: f64,
+        b: f64,
+        n: f64,
+        mu: f64,
+        creep: &Creepages,
+    ) -> CreepForces {
         match self {
             CreepSolver::Direct(f) => f.creep_forces(a, b, n, mu, creep),
             CreepSolver::Tabulated(t) => t.creep_forces(a, b, n, mu, creep),
@@ -260,14 +268,19 @@ impl WheelRail {
         let pose_in_plane = plane.pose(u[1], u[2], u[ROLL], h0);
         let (s_theta, c_theta) = plane.roll_sin_cos();
         let yaw_sin_cos = u[YAW].sin_cos();
-        for (side_index, side) in SIDES.iter().enumerate() {
+        // Both wheels' points before any creep force (why: `pending_contact`).
+        let mut pending = [Pending::default(); 4];
+        let mut n_pending = 0;
+        let mut sides_done = 0;
+        let mut found = Ok(());
+        'sides: for (side_index, side) in SIDES.iter().enumerate() {
             let s = side.sign();
             let y_rel = plane.table_position(pose_in_plane.lateral, side_index);
             let (lo, hi) = self.table.y_range();
             if !(lo..=hi).contains(&y_rel) {
                 // A runaway state (numerical divergence) is told apart from this by
                 // `VehicleSystem::finish_step`, which checks the state before reporting this error.
-                return Err(LocoError::Derailed {
+                found = Err(LocoError::Derailed {
                     time: t,
                     location: format!("wheelset{} {}", w + 1, side_name(*side)),
                     reason: format!(
@@ -275,11 +288,11 @@ impl WheelRail {
                          table ({lo:.4} … {hi:.4} m): the flange has climbed or the state diverged"
                     ),
                 });
+                break 'sides;
             }
             let wheel = self
                 .table
                 .lookup_wheel(y_rel, side_index, pose_in_plane.roll);
-            let mut forces = WheelForces::default();
             for point in wheel.contact.points.iter().flatten() {
                 let l = point.lateral;
                 let interference = wheel.rise + wheel.roll * l + plane.rail_height(side_index)
@@ -304,7 +317,7 @@ impl WheelRail {
                 let rail_surface = plane.surface_velocity(u[1], u[2], h0, &offset);
                 let slip = slip_velocity(&velocity, &offset, &rail_surface);
                 let approach_rate = -dot(&slip, &frame.normal);
-                let hertz = self.hertz.coefficients(
+                let hertz = match self.hertz.coefficients(
                     // Rolling-direction curvature of the wheel at a point whose normal is tilted
                     // by the contact angle from the radius (Meusnier): cos γ / r.
                     0.5 * cg / point.rolling_radius,
@@ -312,14 +325,20 @@ impl WheelRail {
                     // curvature near zero; a floor of 1/(20 m) keeps the ellipse finite there.
                     (0.5 * (point.wheel_curvature + point.rail_curvature)).max(0.025),
                     self.settings.contact_modulus,
-                )?;
+                ) {
+                    Ok(hertz) => hertz,
+                    Err(e) => {
+                        found = Err(e);
+                        break 'sides;
+                    }
+                };
                 let normal = (hertz.load_from_approach(approach)
                     + self.settings.normal_damping * approach_rate)
                     .max(0.0);
                 if normal == 0.0 {
                     continue;
                 }
-                let (tangential, wear_number) = if let ContactMode::Held {
+                let creep = if let ContactMode::Held {
                     tangential_stiffness: static_stiffness,
                 } = mode
                 {
@@ -329,50 +348,40 @@ impl WheelRail {
                     let dx = u[0] - point.rolling_radius * u[PITCH] - l * u[YAW];
                     let dy = pose_in_plane.lateral
                         + point.rolling_radius * (pose_in_plane.roll - wheel.roll);
-                    let held = CreepForces {
+                    Creep::Held(CreepForces {
                         fx: -static_stiffness * dx,
                         fy: -static_stiffness * dy * cg,
                         mz: 0.0,
-                    };
-                    (held, 0.0)
+                    })
                 } else {
-                    let creep = creepages_of_slip(&slip, &angular, &frame, speed);
                     let (a, b) = hertz.semi_axes(normal);
-                    let t = self
-                        .creep
-                        .creep_forces(a, b, normal, self.settings.friction, &creep);
-                    (
-                        t,
-                        -(t.fx * creep.longitudinal + t.fy * creep.lateral + t.mz * creep.spin),
-                    )
+                    Creep::Rolling(creepages_of_slip(&slip, &angular, &frame, speed), a, b)
                 };
-                let f: [f64; 3] = std::array::from_fn(|k| {
-                    normal * frame.normal[k]
-                        + tangential.fx * frame.longitudinal[k]
-                        + tangential.fy * frame.lateral[k]
-                });
-                // `offset` is the contact point from the wheelset centre in track axes at the
-                // wheelset's pose (the table's roll, the yaw's −ψ·l): the lever arm as it is,
-                // not one to be turned by the wheelset's rotation again. Turning it again moved
-                // every load by r0·φ across the rail head (0.7 mm at 1.2 mrad of roll).
-                add_force_at(wrenches, body, offset, f);
-                for k in 0..3 {
-                    wrenches[body][3 + k] += tangential.mz * frame.normal[k];
-                }
-                forces.vertical += f[2];
-                forces.lateral += f[1];
-                forces.longitudinal += f[0];
-                forces.wear_number += wear_number;
-                forces.contact_angle = if forces.points_in_contact == 0 {
-                    point.contact_angle
-                } else {
-                    forces.contact_angle.max(point.contact_angle)
+                pending[n_pending] = Pending {
+                    side: side_index,
+                    offset,
+                    frame,
+                    normal,
+                    contact_angle: point.contact_angle,
+                    creep,
                 };
-                forces.points_in_contact += 1;
+                n_pending += 1;
             }
-            out[side_index] = forces;
+            sides_done += 1;
         }
-        Ok(())
+        let mut forces = [WheelForces::default(); 2];
+        let friction = self.settings.friction;
+        add_forces(
+            &pending[..n_pending],
+            &self.creep,
+            friction,
+            body,
+            wrenches,
+            &mut forces,
+        );
+        // A wheel's forces are reported once all its points are in (before an error or not).
+        out[..sides_done].copy_from_slice(&forces[..sides_done]);
+        found
     }
 }
 
