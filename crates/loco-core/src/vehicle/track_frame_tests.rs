@@ -1,5 +1,6 @@
 use super::*;
 use crate::track::{CurveDirection, DesignSection};
+use crate::vehicle::layout::YAW;
 use crate::vehicle::parameters::ParameterSet;
 
 #[test]

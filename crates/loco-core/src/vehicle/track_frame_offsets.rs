@@ -1,0 +1,98 @@
+//! Each body's track frame at one vehicle position and speed (`super`'s module documentation):
+//! the design at every station, each body's frame offset from the reference frame and the frame
+//! terms that do not depend on the state. Computed twice per step (the frame slots keep them for
+//! the RK stages sharing a time), so its cost is a curved run's main extra besides the contact.
+
+use super::super::kinematics::{add, cross};
+use super::{free_bodies, CurvedTrack, FrameLoad, FrameWork};
+
+impl CurvedTrack {
+    /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
+    /// each body's frame offset from the reference frame.
+    pub(super) fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
+        let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
+        let stations = stations.zip(&mut work.station_roll_bits);
+        for (((point, roll), bits), x) in stations.zip(&self.stations) {
+            *point = self.design.at(s_r + x);
+            if *bits != Some(point.roll.to_bits()) {
+                *roll = point.roll.sin_cos();
+                *bits = Some(point.roll.to_bits());
+            }
+        }
+        let slot = &mut work.slots[work.active];
+        for (i, &k) in self.station_of.iter().enumerate() {
+            slot.points[i] = work.station_points[k];
+            slot.roll_sin_cos[i] = work.station_roll[k];
+        }
+        let r = work.station_points[0];
+        let (st, ct) = work.station_roll[0];
+        let roll_rate_r = speed * r.roll_rate;
+        for (_, body) in free_bodies() {
+            let p = &slot.points[body];
+            let x = self.bodies[body].position;
+            let d_psi = p.heading - r.heading;
+            let lateral = p.heading_integral - r.heading_integral - r.heading * x[0];
+            let rot = [p.roll - r.roll, d_psi * st, d_psi * ct];
+            let d_psi_rate = speed * (p.curvature - r.curvature);
+            let lateral_rate = speed * (d_psi - r.curvature * x[0]);
+            let rot_rate = [
+                speed * p.roll_rate - roll_rate_r,
+                d_psi_rate * st + d_psi * ct * roll_rate_r,
+                d_psi_rate * ct - d_psi * st * roll_rate_r,
+            ];
+            let arm = [0.0, x[1], x[2]];
+            let trans = add([0.0, lateral * ct, -lateral * st], cross(rot, arm));
+            let trans_rate = add(
+                [
+                    0.0,
+                    lateral_rate * ct - lateral * st * roll_rate_r,
+                    -lateral_rate * st - lateral * ct * roll_rate_r,
+                ],
+                cross(rot_rate, arm),
+            );
+            // A free body's map is the identity on its coordinates: the offset is its state.
+            slot.offset_states.position[body] =
+                [trans[0], trans[1], trans[2], rot[0], rot[1], rot[2]];
+            slot.offset_states.velocity[body] = [
+                trans_rate[0],
+                trans_rate[1],
+                trans_rate[2],
+                rot_rate[0],
+                rot_rate[1],
+                rot_rate[2],
+            ];
+        }
+        // The attached bodies (hollow shafts, traction rods, rotary arms with their wheelset's
+        // pitch) take their parent's rigid motion: their maps applied to the offsets' coordinates
+        // give u = u_parent + θ_parent × (x_body − x_parent), evaluated here directly (the maps'
+        // sparse rows cost five times as much; tests compare both).
+        for &(body, parent, arm) in &self.attached {
+            for states in [
+                &mut slot.offset_states.position,
+                &mut slot.offset_states.velocity,
+            ] {
+                let u = states[parent];
+                let t = add([u[0], u[1], u[2]], cross([u[3], u[4], u[5]], arm));
+                states[body] = [t[0], t[1], t[2], u[3], u[4], u[5]];
+            }
+        }
+        let v2 = speed * speed;
+        let g = self.gravity;
+        for (i, body) in self.bodies.iter().enumerate() {
+            let o = &slot.offset_states.position[i];
+            let rot = [o[3], o[4], o[5]];
+            let p = &slot.points[i];
+            let (s, c) = slot.roll_sin_cos[i];
+            let a = v2 * p.curvature;
+            let mg = body.mass * g;
+            slot.loads[i] = FrameLoad {
+                gravity: [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c],
+                centripetal: [-body.mass * a * c, body.mass * a * s],
+                yaw_acceleration: body.yaw_inertia * v2 * p.curvature_rate,
+                yaw_rate: speed * p.curvature * c,
+                roll_rate: speed * p.roll_rate,
+                spin: body.spin * speed,
+            };
+        }
+    }
+}
