@@ -75,6 +75,8 @@ pub struct CurvedTrack {
     station_of: Vec<usize>,
     /// The bodies attached to a free one: (body, parent, nominal x_body − x_parent in m).
     attached: Vec<(usize, usize, [f64; 3])>,
+    /// The bodies with spinning parts (spin momentum not 0), in order.
+    spinning: Vec<usize>,
 }
 
 /// What the frames are at one vehicle position and speed: none of it depends on the state, so
@@ -91,20 +93,17 @@ struct FrameSlot {
     points: [DesignPoint; N_BODIES],
     /// sin θ and cos θ of each body's track roll.
     roll_sin_cos: [(f64, f64); N_BODIES],
-    /// The frame terms of each body that do not depend on the state.
+    /// The frame terms of each body that do not depend on the state: those added to every
+    /// wrench four bodies to a lane group, the spinning parts' in `loads`.
+    lanes: [forces::ForceLanes; forces::GROUPS],
     loads: [FrameLoad; N_BODIES],
 }
 
-/// A body's frame terms at one (distance, speed), each formed as `add_frame_forces` used to
-/// form it inside every evaluation (same operations, same bits): gravity in the own frame less
-/// the reference vertical turned into it, the centripetal force (N), the moment of the frame's
-/// yaw acceleration I_z V² dκ/ds (N·m), the frame's yaw and roll rates V κ cos θ and V dθ/ds
-/// (rad/s) and the spin momentum H = spin·V (N·m·s).
+/// A body's gyroscopic frame terms at one (distance, speed), each formed as `add_frame_forces`
+/// used to form it inside every evaluation (same operations, same bits): the frame's yaw and
+/// roll rates V κ cos θ and V dθ/ds (rad/s) and the spin momentum H = spin·V (N·m·s).
 #[derive(Debug, Clone, Copy, Default)]
 struct FrameLoad {
-    gravity: [f64; 3],
-    centripetal: [f64; 2],
-    yaw_acceleration: f64,
     yaw_rate: f64,
     roll_rate: f64,
     spin: f64,
@@ -117,6 +116,7 @@ impl Default for FrameSlot {
             offset_states: BodyStates::default(),
             points: [DesignPoint::default(); N_BODIES],
             roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            lanes: [forces::ForceLanes::default(); forces::GROUPS],
             loads: [FrameLoad::default(); N_BODIES],
         }
     }
@@ -212,9 +212,13 @@ impl CurvedTrack {
                 (body, parent, [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]])
             })
             .collect();
+        let spinning = (0..bodies.len())
+            .filter(|&i| bodies[i].spin != 0.0)
+            .collect();
         Self {
             design,
             bodies,
+            spinning,
             gravity: structure.gravity,
             stations,
             station_of,

@@ -4,6 +4,7 @@
 //! the RK stages sharing a time), so its cost is a curved run's main extra besides the contact.
 
 use super::super::kinematics::{add, cross};
+use super::forces::W;
 use super::{free_bodies, CurvedTrack, FrameLoad, FrameWork};
 
 impl CurvedTrack {
@@ -85,10 +86,17 @@ impl CurvedTrack {
             let (s, c) = slot.roll_sin_cos[i];
             let a = v2 * p.curvature;
             let mg = body.mass * g;
+            let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];
+            let centripetal = [-body.mass * a * c, body.mass * a * s];
+            let (q, l) = (&mut slot.lanes[i / W], i % W);
+            for k in 0..3 {
+                q.rot[k][l] = rot[k];
+                q.gravity[k][l] = gravity[k];
+            }
+            q.centripetal[0][l] = centripetal[0];
+            q.centripetal[1][l] = centripetal[1];
+            q.yaw_acceleration[l] = body.yaw_inertia * v2 * p.curvature_rate;
             slot.loads[i] = FrameLoad {
-                gravity: [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c],
-                centripetal: [-body.mass * a * c, body.mass * a * s],
-                yaw_acceleration: body.yaw_inertia * v2 * p.curvature_rate,
                 yaw_rate: speed * p.curvature * c,
                 roll_rate: speed * p.roll_rate,
                 spin: body.spin * speed,

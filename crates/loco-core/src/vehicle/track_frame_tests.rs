@@ -101,3 +101,102 @@ fn attached_bodies_offsets_are_their_motion_maps_of_the_offsets() {
         }
     }
 }
+
+/// `add_frame_forces` as it was before the lanes: every term formed per body from the slot's
+/// points and offsets (the formulas `compute_frames` keeps), one body after another.
+fn frame_forces_reference(
+    curve: &CurvedTrack,
+    speed: f64,
+    work: &FrameWork,
+    relative: &BodyStates,
+    wrenches: &mut [[f64; 6]; N_BODIES],
+) {
+    use super::super::kinematics::{cross, sub};
+    let slot = work.slot();
+    let (v2, g) = (speed * speed, curve.gravity);
+    for (i, body) in curve.bodies.iter().enumerate() {
+        let o = &slot.offset_states.position[i];
+        let rot = [o[3], o[4], o[5]];
+        let p = &slot.points[i];
+        let (s, c) = slot.roll_sin_cos[i];
+        let a = v2 * p.curvature;
+        let mg = body.mass * g;
+        let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];
+        let centripetal = [-body.mass * a * c, body.mass * a * s];
+        let yaw_acceleration = body.yaw_inertia * v2 * p.curvature_rate;
+        let w = &mut wrenches[i];
+        let f = sub([w[0], w[1], w[2]], cross(rot, [w[0], w[1], w[2]]));
+        let m = sub([w[3], w[4], w[5]], cross(rot, [w[3], w[4], w[5]]));
+        w[0] = f[0] + gravity[0];
+        w[1] = f[1] + gravity[1] + centripetal[0];
+        w[2] = f[2] + gravity[2] + centripetal[1];
+        w[3] = m[0];
+        w[4] = m[1];
+        w[5] = m[2] - yaw_acceleration;
+        if body.spin != 0.0 {
+            let h = body.spin * speed;
+            let common = &work.states.velocity[i];
+            let own = &relative.velocity[i];
+            let yaw = own[YAW] + speed * p.curvature * c;
+            let roll = own[3] + speed * p.roll_rate;
+            w[3] += h * (yaw - common[YAW]);
+            w[5] -= h * (roll - common[3]);
+        }
+    }
+}
+
+#[test]
+fn frame_forces_are_the_per_body_formulas_bit_for_bit() {
+    // In a transition with cant every term is nonzero; the states and wrenches are arbitrary.
+    let structure = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+    let design = TrackDesign::new(
+        &[
+            DesignSection::Straight { length: 20.0 },
+            DesignSection::Transition {
+                length: 80.0,
+                cant_run_off: Some(60.0),
+            },
+            DesignSection::Curve {
+                length: 500.0,
+                radius: 900.0,
+                cant: 0.12,
+                direction: CurveDirection::Right,
+            },
+        ],
+        0.7465,
+        100.0,
+    )
+    .unwrap();
+    let curve = CurvedTrack::new(Arc::new(design), &structure);
+    let mut x = 0.61_f64;
+    let mut next = || {
+        x = (x * 613.0 + 0.217).fract();
+        (x - 0.5) * 10f64.powi((x * 10.0) as i32 - 4)
+    };
+    let mut relative = BodyStates::default();
+    for body in 0..N_BODIES {
+        for k in 0..6 {
+            relative.position[body][k] = 1e-3 * next();
+            relative.velocity[body][k] = 1e-2 * next();
+        }
+    }
+    assert!(!curve.spinning.is_empty());
+    for (s_r, speed) in [(45.0, 50.0), (61.5, 38.0), (150.0, 69.0), (5.0, 20.0)] {
+        let mut work = FrameWork::default();
+        curve.prepare(&structure, s_r, speed, &relative, &mut work);
+        let mut wrenches = [[0.0; 6]; N_BODIES];
+        for w in wrenches.iter_mut() {
+            w.iter_mut().for_each(|c| *c = 1e3 * next());
+        }
+        let mut expected = wrenches;
+        frame_forces_reference(&curve, speed, &work, &relative, &mut expected);
+        curve.add_frame_forces(&work, &relative, &mut wrenches);
+        for body in 0..N_BODIES {
+            assert_eq!(
+                wrenches[body].map(f64::to_bits),
+                expected[body].map(f64::to_bits),
+                "s {s_r} body {body}"
+            );
+        }
+    }
+}
