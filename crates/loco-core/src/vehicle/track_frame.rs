@@ -89,10 +89,14 @@ struct FrameSlot {
     key: Option<(usize, u64, u64)>,
     /// Each body's frame offset (its rotation part, rad) from the reference frame.
     offset_states: BodyStates,
-    /// The design at each body's distance.
-    points: [DesignPoint; N_BODIES],
-    /// sin θ and cos θ of each body's track roll.
-    roll_sin_cos: [(f64, f64); N_BODIES],
+    /// The design at each station (`CurvedTrack::stations`: at most one per body and the
+    /// origin; body i's is `station_of[i]`) and sin θ, cos θ of its roll, read through the
+    /// station index rather than copied per body.
+    station_points: [DesignPoint; N_BODIES + 1],
+    station_roll: [(f64, f64); N_BODIES + 1],
+    /// The bits of the roll each station's sin and cos were taken of (constant cant keeps it,
+    /// and the same bits give the same sin and cos).
+    station_roll_bits: [Option<u64>; N_BODIES + 1],
     /// The frame terms of each body that do not depend on the state: those added to every
     /// wrench four bodies to a lane group, the spinning parts' in `loads`.
     lanes: [forces::ForceLanes; forces::GROUPS],
@@ -114,8 +118,9 @@ impl Default for FrameSlot {
         Self {
             key: None,
             offset_states: BodyStates::default(),
-            points: [DesignPoint::default(); N_BODIES],
-            roll_sin_cos: [(0.0, 1.0); N_BODIES],
+            station_points: [DesignPoint::default(); N_BODIES + 1],
+            station_roll: [(0.0, 1.0); N_BODIES + 1],
+            station_roll_bits: [None; N_BODIES + 1],
             lanes: [forces::ForceLanes::default(); forces::GROUPS],
             loads: [FrameLoad::default(); N_BODIES],
         }
@@ -130,13 +135,9 @@ pub struct FrameWork {
     /// The frames at the last two (distance, speed) pairs; `active` is the last evaluation's.
     slots: [FrameSlot; 2],
     active: usize,
-    /// The design at each station (`CurvedTrack::stations`; at most one per body and the
-    /// origin) and sin θ, cos θ of its roll.
-    station_points: [DesignPoint; N_BODIES + 1],
-    station_roll: [(f64, f64); N_BODIES + 1],
-    /// The bits of the roll each station's sin and cos were last taken of (constant cant keeps
-    /// it, and the same bits give the same sin and cos).
-    station_roll_bits: [Option<u64>; N_BODIES + 1],
+    /// Each station's piece of the design in the last look-up, where the next one starts
+    /// (`TrackDesign::at_from`: the vehicle moves on a little at a time).
+    piece_hints: [usize; N_BODIES + 1],
 }
 
 impl Default for FrameWork {
@@ -145,9 +146,7 @@ impl Default for FrameWork {
             states: BodyStates::default(),
             slots: [FrameSlot::default(), FrameSlot::default()],
             active: 0,
-            station_points: [DesignPoint::default(); N_BODIES + 1],
-            station_roll: [(0.0, 1.0); N_BODIES + 1],
-            station_roll_bits: [None; N_BODIES + 1],
+            piece_hints: [0; N_BODIES + 1],
         }
     }
 }
@@ -156,11 +155,6 @@ impl FrameWork {
     /// The frames of the last [`CurvedTrack::prepare`].
     fn slot(&self) -> &FrameSlot {
         &self.slots[self.active]
-    }
-
-    /// The design at each body's distance in the last [`CurvedTrack::prepare`].
-    pub fn points(&self) -> &[DesignPoint; N_BODIES] {
-        &self.slot().points
     }
 }
 
@@ -277,7 +271,8 @@ impl CurvedTrack {
     #[inline]
     pub fn wheelset_frame_yaw_rate(&self, speed: f64, work: &FrameWork, w: usize) -> f64 {
         let slot = work.slot();
-        speed * slot.points[body_wheelset(w)].curvature * slot.roll_sin_cos[body_wheelset(w)].1
+        let k = self.station_of[body_wheelset(w)];
+        speed * slot.station_points[k].curvature * slot.station_roll[k].1
     }
 }
 

@@ -11,25 +11,22 @@ impl CurvedTrack {
     /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
     /// each body's frame offset from the reference frame.
     pub(super) fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
-        let stations = work.station_points.iter_mut().zip(&mut work.station_roll);
-        let stations = stations.zip(&mut work.station_roll_bits);
-        for (((point, roll), bits), x) in stations.zip(&self.stations) {
-            *point = self.design.at(s_r + x);
+        let slot = &mut work.slots[work.active];
+        let stations = slot.station_points.iter_mut().zip(&mut slot.station_roll);
+        let stations = stations.zip(&mut slot.station_roll_bits);
+        let stations = stations.zip(&mut work.piece_hints);
+        for ((((point, roll), bits), hint), x) in stations.zip(&self.stations) {
+            *point = self.design.at_from(s_r + x, hint);
             if *bits != Some(point.roll.to_bits()) {
                 *roll = point.roll.sin_cos();
                 *bits = Some(point.roll.to_bits());
             }
         }
-        let slot = &mut work.slots[work.active];
-        for (i, &k) in self.station_of.iter().enumerate() {
-            slot.points[i] = work.station_points[k];
-            slot.roll_sin_cos[i] = work.station_roll[k];
-        }
-        let r = work.station_points[0];
-        let (st, ct) = work.station_roll[0];
+        let r = slot.station_points[0];
+        let (st, ct) = slot.station_roll[0];
         let roll_rate_r = speed * r.roll_rate;
         for (_, body) in free_bodies() {
-            let p = &slot.points[body];
+            let p = &slot.station_points[self.station_of[body]];
             let x = self.bodies[body].position;
             let d_psi = p.heading - r.heading;
             let lateral = p.heading_integral - r.heading_integral - r.heading * x[0];
@@ -82,8 +79,9 @@ impl CurvedTrack {
         for (i, body) in self.bodies.iter().enumerate() {
             let o = &slot.offset_states.position[i];
             let rot = [o[3], o[4], o[5]];
-            let p = &slot.points[i];
-            let (s, c) = slot.roll_sin_cos[i];
+            let k = self.station_of[i];
+            let p = &slot.station_points[k];
+            let (s, c) = slot.station_roll[k];
             let a = v2 * p.curvature;
             let mg = body.mass * g;
             let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];

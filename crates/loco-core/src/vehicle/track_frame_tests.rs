@@ -102,10 +102,12 @@ fn attached_bodies_offsets_are_their_motion_maps_of_the_offsets() {
     }
 }
 
-/// `add_frame_forces` as it was before the lanes: every term formed per body from the slot's
-/// points and offsets (the formulas `compute_frames` keeps), one body after another.
+/// `add_frame_forces` as it was before the lanes: every term formed per body from the design
+/// at the body (looked up afresh) and the slot's offsets (the formulas `compute_frames` keeps),
+/// one body after another.
 fn frame_forces_reference(
     curve: &CurvedTrack,
+    s_r: f64,
     speed: f64,
     work: &FrameWork,
     relative: &BodyStates,
@@ -117,8 +119,8 @@ fn frame_forces_reference(
     for (i, body) in curve.bodies.iter().enumerate() {
         let o = &slot.offset_states.position[i];
         let rot = [o[3], o[4], o[5]];
-        let p = &slot.points[i];
-        let (s, c) = slot.roll_sin_cos[i];
+        let p = &curve.design.at(s_r + body.position[0]);
+        let (s, c) = p.roll.sin_cos();
         let a = v2 * p.curvature;
         let mg = body.mass * g;
         let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];
@@ -189,7 +191,7 @@ fn frame_forces_are_the_per_body_formulas_bit_for_bit() {
             w.iter_mut().for_each(|c| *c = 1e3 * next());
         }
         let mut expected = wrenches;
-        frame_forces_reference(&curve, speed, &work, &relative, &mut expected);
+        frame_forces_reference(&curve, s_r, speed, &work, &relative, &mut expected);
         curve.add_frame_forces(&work, &relative, &mut wrenches);
         for body in 0..N_BODIES {
             assert_eq!(
