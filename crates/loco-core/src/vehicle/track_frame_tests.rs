@@ -202,3 +202,40 @@ fn frame_forces_are_the_per_body_formulas_bit_for_bit() {
         }
     }
 }
+
+#[test]
+fn the_states_are_summed_as_one_addition_each() {
+    // Signed zeros, infinities and NaN included: each sum is its own IEEE addition.
+    let specials = [
+        0.0,
+        -0.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        1e-310,
+        -3.5,
+    ];
+    let (mut own, mut offset) = (BodyStates::default(), BodyStates::default());
+    let mut x = 0.29_f64;
+    for body in 0..N_BODIES {
+        for k in 0..6 {
+            x = (x * 719.0 + 0.311).fract();
+            let n = (body * 6 + k) % 11;
+            let pick = |m: usize, v: f64| specials.get(m).copied().unwrap_or(v);
+            own.position[body][k] = pick(n, x - 0.5);
+            offset.position[body][k] = pick((n + 3) % 11, 1e-3 * x);
+            own.velocity[body][k] = pick((n + 5) % 11, 7.0 * x);
+            offset.velocity[body][k] = pick((n + 1) % 11, -x);
+        }
+    }
+    let mut sum = BodyStates::default();
+    add_states(&mut sum, &own, &offset);
+    for body in 0..N_BODIES {
+        for k in 0..6 {
+            let p = own.position[body][k] + offset.position[body][k];
+            let v = own.velocity[body][k] + offset.velocity[body][k];
+            assert_eq!(sum.position[body][k].to_bits(), p.to_bits(), "{body} {k}");
+            assert_eq!(sum.velocity[body][k].to_bits(), v.to_bits(), "{body} {k}");
+        }
+    }
+}
