@@ -101,6 +101,12 @@ struct FrameSlot {
     /// wrench four bodies to a lane group, the spinning parts' in `loads`.
     lanes: [forces::ForceLanes; forces::GROUPS],
     loads: [FrameLoad; N_BODIES],
+    /// −m g sin θ of each body (N), the lateral gravity less its state-dependent part.
+    cant_gravity: [f64; N_BODIES],
+    /// The track (address) and the speed's bits the terms were formed for: a station whose
+    /// curvature, its rate, roll and roll rate keep their bits keeps its bodies' terms but for
+    /// those of the offsets' rotation (in a steady curve, nearly all).
+    terms_of: Option<(usize, u64)>,
 }
 
 /// A body's gyroscopic frame terms at one (distance, speed), each formed as `add_frame_forces`
@@ -123,6 +129,8 @@ impl Default for FrameSlot {
             station_roll_bits: [None; N_BODIES + 1],
             lanes: [forces::ForceLanes::default(); forces::GROUPS],
             loads: [FrameLoad::default(); N_BODIES],
+            cant_gravity: [0.0; N_BODIES],
+            terms_of: None,
         }
     }
 }

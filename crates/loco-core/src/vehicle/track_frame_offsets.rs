@@ -4,8 +4,10 @@
 //! the RK stages sharing a time), so its cost is a curved run's main extra besides the contact.
 
 use super::super::kinematics::{add, cross};
+use super::super::layout::N_BODIES;
 use super::forces::W;
 use super::{free_bodies, CurvedTrack, FrameLoad, FrameWork};
+use crate::track::DesignPoint;
 
 impl CurvedTrack {
     /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
@@ -15,8 +17,15 @@ impl CurvedTrack {
         let stations = slot.station_points.iter_mut().zip(&mut slot.station_roll);
         let stations = stations.zip(&mut slot.station_roll_bits);
         let stations = stations.zip(&mut work.piece_hints);
-        for ((((point, roll), bits), hint), x) in stations.zip(&self.stations) {
-            *point = self.design.at_from(s_r + x, hint);
+        let terms_of = Some((self as *const Self as usize, speed.to_bits()));
+        let same_terms = slot.terms_of == terms_of;
+        slot.terms_of = terms_of;
+        let mut kept = [false; N_BODIES + 1];
+        let stations = stations.zip(&mut kept);
+        for (((((point, roll), bits), hint), keep), x) in stations.zip(&self.stations) {
+            let fresh = self.design.at_from(s_r + x, hint);
+            *keep = same_terms && same_terms_bits(point, &fresh);
+            *point = fresh;
             if *bits != Some(point.roll.to_bits()) {
                 *roll = point.roll.sin_cos();
                 *bits = Some(point.roll.to_bits());
@@ -80,11 +89,26 @@ impl CurvedTrack {
             let o = &slot.offset_states.position[i];
             let rot = [o[3], o[4], o[5]];
             let k = self.station_of[i];
+            let mg = body.mass * g;
+            if kept[k] {
+                // The same operations on the same bits as below, the others kept.
+                let (q, l) = (&mut slot.lanes[i / W], i % W);
+                for (lane, v) in q.rot.iter_mut().zip(rot) {
+                    lane[l] = v;
+                }
+                q.gravity[0][l] = -mg * rot[1];
+                q.gravity[1][l] = slot.cant_gravity[i] + mg * rot[0];
+                continue;
+            }
             let p = &slot.station_points[k];
             let (s, c) = slot.station_roll[k];
             let a = v2 * p.curvature;
-            let mg = body.mass * g;
-            let gravity = [-mg * rot[1], -mg * s + mg * rot[0], mg - mg * c];
+            slot.cant_gravity[i] = -mg * s;
+            let gravity = [
+                -mg * rot[1],
+                slot.cant_gravity[i] + mg * rot[0],
+                mg - mg * c,
+            ];
             let centripetal = [-body.mass * a * c, body.mass * a * s];
             let (q, l) = (&mut slot.lanes[i / W], i % W);
             for k in 0..3 {
@@ -101,4 +125,13 @@ impl CurvedTrack {
             };
         }
     }
+}
+
+/// Whether the state-independent frame terms of `a` and `b` are the same bits: curvature, its
+/// rate, roll and roll rate (the heading and its integral enter only the offsets).
+#[inline]
+fn same_terms_bits(a: &DesignPoint, b: &DesignPoint) -> bool {
+    let bits =
+        |p: &DesignPoint| [p.curvature, p.curvature_rate, p.roll, p.roll_rate].map(f64::to_bits);
+    bits(a) == bits(b)
 }

@@ -239,3 +239,57 @@ fn the_states_are_summed_as_one_addition_each() {
         }
     }
 }
+
+#[test]
+fn kept_frame_terms_are_the_ones_computed_afresh() {
+    // A run through a transition into a steady curve (stations keep their terms there), a
+    // speed change, another track of the same design in the same workspace: each slot must
+    // hold the bits a fresh workspace computes.
+    let structure = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+    let design = Arc::new(
+        TrackDesign::new(
+            &DesignSection::study_curve(CurveDirection::Right),
+            0.7465,
+            100.0,
+        )
+        .unwrap(),
+    );
+    let curve = CurvedTrack::new(design.clone(), &structure);
+    let other = CurvedTrack::new(design, &structure);
+    let mut work = FrameWork::default();
+    let relative = BodyStates::default();
+    let mut asks: Vec<(&CurvedTrack, f64, f64)> =
+        (0..400).map(|k| (&curve, 0.37 * k as f64, 55.0)).collect();
+    asks.extend([
+        (&curve, 148.0, 54.0),
+        (&curve, 148.37, 54.0),
+        (&other, 148.74, 54.0),
+    ]);
+    asks.extend([
+        (&curve, 149.11, 54.0),
+        (&curve, 149.48, 54.0),
+        (&other, 149.85, 54.0),
+    ]);
+    let bits = |slot: &FrameSlot| {
+        let mut out: Vec<u64> = Vec::new();
+        for q in &slot.lanes {
+            out.extend(q.rot.as_flattened().iter().map(|v| v.to_bits()));
+            out.extend(q.gravity.as_flattened().iter().map(|v| v.to_bits()));
+            out.extend(q.centripetal.as_flattened().iter().map(|v| v.to_bits()));
+            out.extend(q.yaw_acceleration.iter().map(|v| v.to_bits()));
+        }
+        for l in &slot.loads {
+            out.extend([l.yaw_rate, l.roll_rate, l.spin].map(f64::to_bits));
+        }
+        for states in [&slot.offset_states.position, &slot.offset_states.velocity] {
+            out.extend(states.as_flattened().iter().map(|v| v.to_bits()));
+        }
+        out
+    };
+    for (n, &(track, s_r, speed)) in asks.iter().enumerate() {
+        track.prepare(&structure, s_r, speed, &relative, &mut work);
+        let mut fresh = FrameWork::default();
+        track.prepare(&structure, s_r, speed, &relative, &mut fresh);
+        assert!(bits(work.slot()) == bits(fresh.slot()), "ask {n}: s {s_r}");
+    }
+}
