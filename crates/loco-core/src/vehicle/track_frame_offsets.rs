@@ -13,6 +13,27 @@ impl CurvedTrack {
     /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
     /// each body's frame offset from the reference frame.
     pub(super) fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx") {
+            // SAFETY: the processor has just been found to support AVX, the only feature the
+            // function enables.
+            unsafe { self.compute_frames_avx(s_r, speed, work) };
+            return;
+        }
+        self.compute_frames_plain(s_r, speed, work);
+    }
+
+    /// [`Self::compute_frames`] compiled for AVX: the same operations in the same order (AVX
+    /// has no fused multiply-add), in the three-operand forms that spare the copies the
+    /// two-operand ones need, and some pairs of the offsets' rows four wide.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn compute_frames_avx(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
+        self.compute_frames_plain(s_r, speed, work);
+    }
+
+    #[inline(always)]
+    pub(super) fn compute_frames_plain(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
         let slot = &mut work.slots[work.active];
         let stations = slot.station_points.iter_mut().zip(&mut slot.station_roll);
         let stations = stations.zip(&mut slot.station_roll_bits);

@@ -270,26 +270,76 @@ fn kept_frame_terms_are_the_ones_computed_afresh() {
         (&curve, 149.48, 54.0),
         (&other, 149.85, 54.0),
     ]);
-    let bits = |slot: &FrameSlot| {
-        let mut out: Vec<u64> = Vec::new();
-        for q in &slot.lanes {
-            out.extend(q.rot.as_flattened().iter().map(|v| v.to_bits()));
-            out.extend(q.gravity.as_flattened().iter().map(|v| v.to_bits()));
-            out.extend(q.centripetal.as_flattened().iter().map(|v| v.to_bits()));
-            out.extend(q.yaw_acceleration.iter().map(|v| v.to_bits()));
-        }
-        for l in &slot.loads {
-            out.extend([l.yaw_rate, l.roll_rate, l.spin].map(f64::to_bits));
-        }
-        for states in [&slot.offset_states.position, &slot.offset_states.velocity] {
-            out.extend(states.as_flattened().iter().map(|v| v.to_bits()));
-        }
-        out
-    };
+    let bits = slot_bits;
     for (n, &(track, s_r, speed)) in asks.iter().enumerate() {
         track.prepare(&structure, s_r, speed, &relative, &mut work);
         let mut fresh = FrameWork::default();
         track.prepare(&structure, s_r, speed, &relative, &mut fresh);
         assert!(bits(work.slot()) == bits(fresh.slot()), "ask {n}: s {s_r}");
+    }
+}
+
+/// The bits of everything a slot holds for the evaluations.
+fn slot_bits(slot: &FrameSlot) -> Vec<u64> {
+    let mut out: Vec<u64> = Vec::new();
+    for q in &slot.lanes {
+        out.extend(q.rot.as_flattened().iter().map(|v| v.to_bits()));
+        out.extend(q.gravity.as_flattened().iter().map(|v| v.to_bits()));
+        out.extend(q.centripetal.as_flattened().iter().map(|v| v.to_bits()));
+        out.extend(q.yaw_acceleration.iter().map(|v| v.to_bits()));
+    }
+    for l in &slot.loads {
+        out.extend([l.yaw_rate, l.roll_rate, l.spin].map(f64::to_bits));
+    }
+    out.extend(slot.cant_gravity.map(f64::to_bits));
+    for states in [&slot.offset_states.position, &slot.offset_states.velocity] {
+        out.extend(states.as_flattened().iter().map(|v| v.to_bits()));
+    }
+    for (p, (s, c)) in slot.station_points.iter().zip(&slot.station_roll) {
+        let values = [
+            p.curvature,
+            p.curvature_rate,
+            p.roll,
+            p.roll_rate,
+            p.heading,
+        ];
+        out.extend(values.map(f64::to_bits));
+        out.extend([p.heading_integral, *s, *c].map(f64::to_bits));
+    }
+    out
+}
+
+#[test]
+fn frames_compiled_for_avx_are_the_plain_ones() {
+    // The dispatching `prepare` (AVX where the processor has it) against the plain
+    // computation in the same slots, through a transition with cant into a curve.
+    let structure = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+    let design = TrackDesign::new(
+        &DesignSection::entry_curve(700.0, 0.13, CurveDirection::Left),
+        0.7465,
+        100.0,
+    )
+    .unwrap();
+    let curve = CurvedTrack::new(Arc::new(design), &structure);
+    let relative = BodyStates::default();
+    let (mut work, mut plain) = (FrameWork::default(), FrameWork::default());
+    for k in 0..600 {
+        let (s_r, speed) = (-15.0 + 0.29 * k as f64, 40.0 + 0.01 * (k / 100) as f64);
+        curve.prepare(&structure, s_r, speed, &relative, &mut work);
+        // `prepare`'s choice of slot, with the plain computation.
+        let key = Some((
+            &curve as *const CurvedTrack as usize,
+            s_r.to_bits(),
+            speed.to_bits(),
+        ));
+        if let Some(k) = plain.slots.iter().position(|slot| slot.key == key) {
+            plain.active = k;
+        } else {
+            plain.active = 1 - plain.active;
+            curve.compute_frames_plain(s_r, speed, &mut plain);
+            plain.slots[plain.active].key = key;
+        }
+        assert_eq!(work.active, plain.active);
+        assert!(slot_bits(work.slot()) == slot_bits(plain.slot()), "s {s_r}");
     }
 }
