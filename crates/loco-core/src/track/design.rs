@@ -331,45 +331,6 @@ impl TrackDesign {
             .iter()
             .all(|p| p.kappa == 0.0 && p.kappa_slope == 0.0 && p.cant == 0.0 && p.cant_slope == 0.0)
     }
-
-    /// The design at distance `s` (m).
-    pub fn at(&self, s: f64) -> DesignPoint {
-        let i = self.pieces.partition_point(|p| p.start <= s).max(1) - 1;
-        let p = &self.pieces[i];
-        // Beyond the design's ends the end values continue: no gradients there.
-        let (sigma, gradients) = if s < 0.0 {
-            (0.0, false)
-        } else if s > self.end {
-            (self.end - p.start, false)
-        } else {
-            (s - p.start, true)
-        };
-        let (heading0, integral0) = p.heading_at(sigma);
-        // Heading and its integral continue with the end curvature beyond the ends.
-        let extra = s - p.start - sigma;
-        let kappa_end = p.kappa + p.kappa_slope * sigma;
-        let heading = heading0 + kappa_end * extra;
-        let heading_integral = integral0 + heading0 * extra + 0.5 * kappa_end * extra * extra;
-        let (c0, c1) = p.run_off;
-        let along = (p.start + sigma).clamp(c0, c1) - c0;
-        let in_run_off = gradients && (c0..c1).contains(&s);
-        let (roll, cos2) = match p.fixed_roll {
-            Some(fixed) => fixed,
-            None => roll_of(p.cant + p.cant_slope * along, self.half_distance),
-        };
-        DesignPoint {
-            curvature: kappa_end,
-            curvature_rate: if gradients { p.kappa_slope } else { 0.0 },
-            roll,
-            roll_rate: if in_run_off {
-                p.cant_slope / (2.0 * self.half_distance) * cos2
-            } else {
-                0.0
-            },
-            heading,
-            heading_integral,
-        }
-    }
 }
 
 impl Piece {
@@ -392,6 +353,9 @@ impl Piece {
 pub fn min_radius_of(max_radius_difference: f64, r0: f64, b: f64) -> f64 {
     2.0 * b * r0 / max_radius_difference
 }
+
+#[path = "design_at.rs"]
+mod at;
 
 #[cfg(test)]
 #[path = "design_tests.rs"]

@@ -149,6 +149,10 @@ pub(in crate::vehicle) unsafe fn gather6(
     ]
 }
 
+/// [`pair_motion`]'s callers.
+pub(in crate::vehicle) const BUSHINGS: u8 = 0;
+pub(in crate::vehicle) const DAMPERS: u8 = 1;
+
 /// Two bodies' attachment points in relative motion, four pairs per register
 /// (`Attachment::motion_and_arms`; the bushings' and the dampers' lanes share it).
 pub(in crate::vehicle) struct PairMotion {
@@ -164,9 +168,14 @@ pub(in crate::vehicle) struct PairMotion {
 
 /// The motion of the points `point_a` on bodies `a` and `point_b` on bodies `b` (lane `l` one
 /// pair), in the scalar code's operations and order.
+///
+/// `USER` gives each caller its own copy ([`BUSHINGS`], [`DAMPERS`]): the dampers' single call
+/// is then inlined whichever codegen unit the callers land in. One shared copy was left out of
+/// line when a change elsewhere put the bushings' and the dampers' callers in one unit (6.6e6
+/// more instructions per run); `#[inline(always)]` is not allowed with `#[target_feature]`.
 #[target_feature(enable = "avx")]
 #[inline]
-pub(in crate::vehicle) unsafe fn pair_motion(
+pub(in crate::vehicle) unsafe fn pair_motion<const USER: u8>(
     a: &[usize; W],
     b: &[usize; W],
     point_a: &[[f64; W]; 3],
@@ -224,7 +233,7 @@ pub(in crate::vehicle) unsafe fn store(x: V3, out: &mut [[f64; W]; 3]) {
 #[target_feature(enable = "avx")]
 #[inline]
 unsafe fn quad_forces<const ON_LOAD_PATH: bool>(q: &Quad, s: &BodyStates, out: &mut QuadForces) {
-    let m = pair_motion(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
+    let m = pair_motion::<BUSHINGS>(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
     let ([rot_a, rot_b], [rate_a, rate_b], [arm_a, arm_b]) = (m.rot, m.rate, m.arm);
     let (d, v) = (m.d, m.v);
     let (neg_k, c) = (v3(&q.neg_stiffness), v3(&q.damping));

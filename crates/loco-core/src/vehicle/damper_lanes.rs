@@ -138,7 +138,7 @@ fn scalar_motions(placements: &[DamperPlacement], states: &BodyStates, motions: 
 
 #[cfg(target_arch = "x86_64")]
 mod avx {
-    use super::super::bushing_lanes::avx::{mul, pair_motion, store, sum, v3, V3};
+    use super::super::bushing_lanes::avx::{mul, pair_motion, store, sum, v3, DAMPERS, V3};
     use super::super::elements::BodyStates;
     use super::{DamperQuad, QuadMotion};
     use std::arch::x86_64::{__m256d, _mm256_storeu_pd};
@@ -155,7 +155,7 @@ mod avx {
     pub(super) unsafe fn motions(quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
         for (q, out) in quads.iter().zip(out) {
             // `Attachment::relative_motion` (through `point_motion`) and `apply_pair`'s arms.
-            let m = pair_motion(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
+            let m = pair_motion::<DAMPERS>(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
             let n = v3(&q.direction);
             // Four contiguous f64 each, which the references hold.
             _mm256_storeu_pd(out.along.as_mut_ptr(), dot(m.d, n));
