@@ -1,0 +1,75 @@
+//! CPU time of one simulation without its set-up: the contact table and the track are built
+//! once, then the same 500 m run at 200 km/h is simulated `repeats` times in this process and
+//! each run's thread CPU time is printed with the minimum and the median. What a batch sample
+//! costs (its metrics' channels only, `Recorded::Metrics`), without the table build that a
+//! whole `run_fingerprint` or `loco-batch` process also times.
+//!
+//! `cargo run --release -p loco-core --example sim_time -- [fastsim|fastrip|table]
+//! [S_high|S_low] [straight|curve|study_curve] [repeats]`
+//!
+//! To compare two versions of the code on a shared machine, build this example in both and run
+//! them alternately several times (the minimum is the least disturbed run); the machine's speed
+//! drifts by ±10 % within an hour, so only such pairs resolve a few per cent.
+
+use loco_core::track::{CurveDirection, DesignSection};
+use loco_core::vehicle::creep_model::CreepModel;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::run::Recorded;
+use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
+use loco_core::vehicle::structure::VehicleStructure;
+use std::sync::Arc;
+
+/// This thread's CPU time, s (the run is single-threaded, so wall time would add other
+/// processes' share of the core).
+fn thread_cpu_seconds() -> f64 {
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `clock_gettime` writes one timespec into the valid, exclusively borrowed `t`.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) };
+    t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let creep = CreepModel::from_name(args.get(1).map_or("fastsim", String::as_str)).unwrap();
+    let name = args.get(2).map_or("S_high", String::as_str);
+    let mut scenario = Scenario {
+        creep,
+        ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
+    };
+    match args.get(3).map(String::as_str) {
+        Some("curve") => scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
+        Some("study_curve") => scenario.curve = DesignSection::study_curve(CurveDirection::Left),
+        Some("straight") | None => {}
+        Some(other) => panic!("unknown track `{other}`: straight, curve or study_curve"),
+    }
+    let repeats: usize = args.get(4).map_or(9, |r| r.parse().expect("repeats"));
+    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
+    let track = Arc::new(build_track(&scenario, &structure).unwrap());
+    let mut times = Vec::with_capacity(repeats);
+    for _ in 0..repeats {
+        let start = thread_cpu_seconds();
+        let result = simulate_prepared(
+            structure.clone(),
+            wheel_rail.clone(),
+            track.clone(),
+            &scenario,
+            Recorded::Metrics,
+            None,
+        )
+        .unwrap();
+        times.push(thread_cpu_seconds() - start);
+        std::hint::black_box(result);
+    }
+    let ms: Vec<String> = times.iter().map(|t| format!("{:.1}", t * 1e3)).collect();
+    times.sort_by(f64::total_cmp);
+    println!(
+        "runs (ms) {}; min {:.1} ms, median {:.1} ms",
+        ms.join(" "),
+        times[0] * 1e3,
+        times[times.len() / 2] * 1e3
+    );
+}
