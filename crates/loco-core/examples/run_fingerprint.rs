@@ -13,17 +13,15 @@
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
 //! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution.
 
-use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::creep_model::CreepModel;
-use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::scenario::simulate_prepared;
 use loco_core::vehicle::wheel_channels::{
     wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
 };
 use std::collections::HashSet;
-use std::sync::Arc;
+
+#[path = "support/study_case.rs"]
+mod study_case;
 
 /// FNV-1a over the bits of every sample of `channels`.
 fn fnv<'a>(channels: impl Iterator<Item = &'a Vec<f64>>) -> u64 {
@@ -40,20 +38,14 @@ fn fnv<'a>(channels: impl Iterator<Item = &'a Vec<f64>>) -> u64 {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let creep = CreepModel::from_name(args.get(1).map_or("fastsim", String::as_str)).unwrap();
+    let track_kind = args.get(3).map(String::as_str);
     let name = args.get(2).map_or("S_high", String::as_str);
-    let mut scenario = Scenario {
-        creep,
-        ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
-    };
-    match args.get(3).map(String::as_str) {
-        Some("curve") => scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
-        Some("study_curve") => scenario.curve = DesignSection::study_curve(CurveDirection::Left),
-        _ => {}
-    }
-    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
-    let track = Arc::new(build_track(&scenario, &structure).unwrap());
+    let scenario = study_case::scenario(
+        args.get(1).map_or("fastsim", String::as_str),
+        name,
+        track_kind,
+    );
+    let (structure, wheel_rail, track) = study_case::prepared(&scenario);
     if args.get(3).is_some_and(|a| a == "prepare") {
         return;
     }
@@ -85,7 +77,7 @@ fn main() {
         .map(|i| &out.channels[i]));
     let curving_hash = fnv(all.filter(is_curving).map(|i| &out.channels[i]));
     let m = &result.metrics;
-    println!("creep {} scenario {name}", creep.name());
+    println!("creep {} scenario {name}", scenario.creep.name());
     println!("wy_max {:.17e}", m.wy_max);
     println!("ayb_peak_lp {:.17e}", m.ayb_peak_lp);
     println!("ayc_psd_peak {:.17e}", m.ayc_psd_peak);

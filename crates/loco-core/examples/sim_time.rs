@@ -11,13 +11,11 @@
 //! them alternately several times (the minimum is the least disturbed run); the machine's speed
 //! drifts by ±10 % within an hour, so only such pairs resolve a few per cent.
 
-use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::creep_model::CreepModel;
-use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
-use loco_core::vehicle::structure::VehicleStructure;
-use std::sync::Arc;
+use loco_core::vehicle::scenario::simulate_prepared;
+
+#[path = "support/study_case.rs"]
+mod study_case;
 
 /// This thread's CPU time, s (the run is single-threaded, so wall time would add other
 /// processes' share of the core).
@@ -33,22 +31,17 @@ fn thread_cpu_seconds() -> f64 {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let creep = CreepModel::from_name(args.get(1).map_or("fastsim", String::as_str)).unwrap();
-    let name = args.get(2).map_or("S_high", String::as_str);
-    let mut scenario = Scenario {
-        creep,
-        ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
-    };
-    match args.get(3).map(String::as_str) {
-        Some("curve") => scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
-        Some("study_curve") => scenario.curve = DesignSection::study_curve(CurveDirection::Left),
-        Some("straight") | None => {}
-        Some(other) => panic!("unknown track `{other}`: straight, curve or study_curve"),
+    let track_kind = args.get(3).map(String::as_str);
+    if let Some(other) = track_kind.filter(|k| !["straight", "curve", "study_curve"].contains(k)) {
+        panic!("unknown track `{other}`: straight, curve or study_curve");
     }
+    let scenario = study_case::scenario(
+        args.get(1).map_or("fastsim", String::as_str),
+        args.get(2).map_or("S_high", String::as_str),
+        track_kind,
+    );
     let repeats: usize = args.get(4).map_or(9, |r| r.parse().expect("repeats"));
-    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &scenario).unwrap());
-    let track = Arc::new(build_track(&scenario, &structure).unwrap());
+    let (structure, wheel_rail, track) = study_case::prepared(&scenario);
     let mut times = Vec::with_capacity(repeats);
     for _ in 0..repeats {
         let start = thread_cpu_seconds();

@@ -1,0 +1,42 @@
+//! The case the speed examples share (`run_fingerprint`, `sim_time`): the `vehicle` bench's 500 m
+//! run at 200 km/h on a study scenario, with a creep model and a track chosen by name, built up
+//! to what `simulate_prepared` takes.
+
+use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
+use loco_core::vehicle::creep_model::CreepModel;
+use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::scenario::{build_track, build_wheel_rail, Scenario};
+use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::wheel_rail::WheelRail;
+use std::sync::Arc;
+
+/// Scenario `name` (`S_high`, `S_low`, ...) at 200 km/h over 500 m, track seed 1, with the creep
+/// model `creep` (`fastsim`, `fastrip`, `table`) on the track `track`: `curve` (a 60 m transition
+/// into R = 1200 m with 100 mm cant, about 290 mm of cant deficiency), `study_curve` (R = 3000 m
+/// with 60 mm cant, about 97 mm, a case of the curving study) or anything else for straight track.
+pub fn scenario(creep: &str, name: &str, track: Option<&str>) -> Scenario {
+    let mut scenario = Scenario {
+        creep: CreepModel::from_name(creep).unwrap(),
+        ..Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap()
+    };
+    match track {
+        Some("curve") => scenario.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
+        Some("study_curve") => scenario.curve = DesignSection::study_curve(CurveDirection::Left),
+        _ => {}
+    }
+    scenario
+}
+
+/// The default vehicle, its contact and `scenario`'s track, built once.
+pub fn prepared(
+    scenario: &Scenario,
+) -> (
+    Arc<VehicleStructure>,
+    Arc<WheelRail>,
+    Arc<TrackIrregularity>,
+) {
+    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
+    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario).unwrap());
+    let track = Arc::new(build_track(scenario, &structure).unwrap());
+    (structure, wheel_rail, track)
+}
