@@ -23,17 +23,15 @@ use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::channel_set::ChannelSet;
 use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::linearise::linearise;
-use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::{Recorded, RunOutput, RunSettings, REFERENCE_STEP};
 use loco_core::vehicle::run_metrics::run_metrics;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
-};
+use loco_core::vehicle::scenario::{simulate_prepared, start_distance, Scenario};
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::structure::VehicleStructure;
 use nalgebra::{DMatrix, DVector};
-use std::sync::Arc;
+
+#[path = "support/study_case.rs"]
+mod study_case;
 
 /// `e^{hA}`, `h φ1(hA)`, `h φ2(hA)`, `h φ3(hA)` of the n×n matrix `a`.
 fn phi(a: &DMatrix<f64>, h: f64) -> [DMatrix<f64>; 4] {
@@ -133,16 +131,10 @@ fn run_full_linear(
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let name = args.get(1).map_or("S_high", String::as_str);
-    let mut parameters = ParameterSet::default_vehicle();
-    for kv in args.iter().skip(2) {
-        let (k, v) = kv.split_once('=').expect("key=value");
-        parameters.set(k, v.parse().unwrap()).unwrap();
-    }
+    let parameters = study_case::parameters(args.iter().skip(2));
     let rate: f64 = std::env::var("RATE").map_or(250.0, |r| r.parse().unwrap());
     let base = Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap();
-    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &base).unwrap());
-    let track = Arc::new(build_track(&base, &structure).unwrap());
+    let (structure, wheel_rail, track) = study_case::prepared(parameters, &base);
     let pick = |m: &RunMetrics| [m.wy_max, m.ayb_peak_lp, m.ayc_psd_peak];
     let product = |integrator, step| {
         let scenario = Scenario {

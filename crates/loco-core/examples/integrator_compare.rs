@@ -5,20 +5,16 @@
 
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::integrator::Integrator;
-use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::{Recorded, RunSettings};
-use loco_core::vehicle::scenario::{build_track, build_wheel_rail, simulate_prepared, Scenario};
-use loco_core::vehicle::structure::VehicleStructure;
-use std::sync::Arc;
+use loco_core::vehicle::scenario::{simulate_prepared, Scenario};
+
+#[path = "support/study_case.rs"]
+mod study_case;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let name = args.get(1).map_or("S_high", String::as_str);
-    let mut parameters = ParameterSet::default_vehicle();
-    for kv in args.iter().skip(2) {
-        let (k, v) = kv.split_once('=').expect("key=value");
-        parameters.set(k, v.parse().unwrap()).unwrap();
-    }
+    let parameters = study_case::parameters(args.iter().skip(2));
     let distance: f64 = std::env::var("DISTANCE").map_or(500.0, |d| d.parse().unwrap());
     let mut base = Scenario::study(name, 200.0 / 3.6, distance, 1).unwrap();
     match std::env::var("CURVE").as_deref() {
@@ -26,9 +22,7 @@ fn main() {
         Ok("reference") => base.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
         _ => {}
     }
-    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
-    let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, &base).unwrap());
-    let track = Arc::new(build_track(&base, &structure).unwrap());
+    let (structure, wheel_rail, track) = study_case::prepared(parameters, &base);
     let cases = [
         (Integrator::Rk4, 0.25e-3),
         (Integrator::Rk4, 1e-3),

@@ -13,6 +13,7 @@
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
 //! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution.
 
+use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
 use loco_core::vehicle::scenario::simulate_prepared;
 use loco_core::vehicle::wheel_channels::{
@@ -45,7 +46,8 @@ fn main() {
         name,
         track_kind,
     );
-    let (structure, wheel_rail, track) = study_case::prepared(&scenario);
+    let (structure, wheel_rail, track) =
+        study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     if args.get(3).is_some_and(|a| a == "prepare") {
         return;
     }

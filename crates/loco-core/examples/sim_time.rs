@@ -11,6 +11,7 @@
 //! them alternately several times (the minimum is the least disturbed run); the machine's speed
 //! drifts by ±10 % within an hour, so only such pairs resolve a few per cent.
 
+use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
 use loco_core::vehicle::scenario::simulate_prepared;
 
@@ -41,7 +42,8 @@ fn main() {
         track_kind,
     );
     let repeats: usize = args.get(4).map_or(9, |r| r.parse().expect("repeats"));
-    let (structure, wheel_rail, track) = study_case::prepared(&scenario);
+    let (structure, wheel_rail, track) =
+        study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     let mut times = Vec::with_capacity(repeats);
     for _ in 0..repeats {
         let start = thread_cpu_seconds();

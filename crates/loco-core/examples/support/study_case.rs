@@ -1,6 +1,9 @@
-//! The case the speed examples share (`run_fingerprint`, `sim_time`): the `vehicle` bench's 500 m
-//! run at 200 km/h on a study scenario, with a creep model and a track chosen by name, built up
-//! to what `simulate_prepared` takes.
+//! The case the examples share (`run_fingerprint`, `sim_time`, `integrator_compare`,
+//! `full_linear_etd`): the `vehicle` bench's 500 m run at 200 km/h on a study scenario, with a
+//! creep model and a track chosen by name and parameters from `key=value` arguments, built up to
+//! what `simulate_prepared` takes.
+// Each example uses part of it.
+#![allow(dead_code)]
 
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
 use loco_core::vehicle::creep_model::CreepModel;
@@ -27,15 +30,26 @@ pub fn scenario(creep: &str, name: &str, track: Option<&str>) -> Scenario {
     scenario
 }
 
-/// The default vehicle, its contact and `scenario`'s track, built once.
+/// The default vehicle with each `key=value` of `overrides` set (SI values).
+pub fn parameters<'a>(overrides: impl IntoIterator<Item = &'a String>) -> ParameterSet {
+    let mut parameters = ParameterSet::default_vehicle();
+    for kv in overrides {
+        let (k, v) = kv.split_once('=').expect("key=value");
+        parameters.set(k, v.parse().unwrap()).unwrap();
+    }
+    parameters
+}
+
+/// The vehicle of `parameters`, its contact and `scenario`'s track, built once.
 pub fn prepared(
+    parameters: ParameterSet,
     scenario: &Scenario,
 ) -> (
     Arc<VehicleStructure>,
     Arc<WheelRail>,
     Arc<TrackIrregularity>,
 ) {
-    let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());
+    let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario).unwrap());
     let track = Arc::new(build_track(scenario, &structure).unwrap());
     (structure, wheel_rail, track)
