@@ -33,13 +33,11 @@
 //! At vanishing creepage the only error left is the strip (y) quadrature; p0 is taken from the
 //! same strip sum (→ 3N/(2πab)), so full slip gives |F| = μN on any grid. The Kalker coefficient
 //! factor k multiplies G in the flexibilities and in the scaled creepages. Every per-strip step
-//! (the strip theory, the march, the bound check, the zones' forces) runs [`LANES`] strips at a
-//! time in SIMD lanes (`fastrip_lanes`), and the slip-zone sums start at a group's first slipping
-//! element. [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
+//! (the strip theory, the march, the bound check, the zones' forces) runs in passes of [`LANES`]
+//! strips in SIMD registers (`fastrip_lanes`; with AVX 4 + 4 + 2, as FASTSIM's strips), and each
+//! register's slip-zone sums start at its own first slipping element. [`Fastrip::new`] precomputes the grid; [`Fastrip::creep_forces`] allocates nothing.
 
-use super::fastrip_lanes::{
-    add_strip_forces, exceeds_bound, march, strip_lanes, Element, LaneState, LANES,
-};
+use super::fastrip_lanes::{pass, Element, LANES};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::Result;
@@ -160,16 +158,7 @@ impl Fastrip {
             .collect();
         let centre = |k: usize| 1.0 - (2 * k + 1) as f64 / nx as f64;
         let elements: Vec<Element> = (0..nx)
-            .map(|k| {
-                let (u, previous) = (centre(k), if k == 0 { 1.0 } else { centre(k - 1) });
-                Element {
-                    u,
-                    shape: (1.0 - u * u).sqrt(),
-                    e: 0.5 * u * nx as f64,
-                    du: previous - u,
-                    u_mid: 0.5 * (previous + u),
-                }
-            })
+            .map(|k| Element::new(centre(k), if k == 0 { 1.0 } else { centre(k - 1) }, nx))
             .collect();
         // p_n = scale · N/(ab) · s_j · √(1 − u²): Σ_j Σ_k s_j² √(1 − u_k²) · 4/(nx ny) = 1/scale.
         let element_sum: f64 = elements.iter().map(|e| e.shape).sum();
@@ -264,9 +253,9 @@ impl Fastrip {
         Some(call)
     }
 
-    /// [`Self::integrate_lanes`]; on a processor with AVX compiled for it, so that the march's
-    /// four strips share one register instead of two (checked once at run time, then a cached
-    /// flag). The same IEEE operations either way (no fused multiply-add), so the same bits.
+    /// [`Self::integrate_lanes`]; on a processor with AVX compiled for it, so that four strips
+    /// share a register instead of two (checked once at run time, then a cached flag). The same
+    /// IEEE operations either way (no fused multiply-add), so the same bits.
     #[inline(always)]
     fn integrate<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
         #[cfg(target_arch = "x86_64")]
@@ -275,46 +264,26 @@ impl Fastrip {
             // function enables.
             return unsafe { self.integrate_avx::<FALLBACK>(k) };
         }
-        self.integrate_lanes::<FALLBACK, 2, { LANES / 2 }>(k)
+        self.integrate_lanes::<FALLBACK, 2, { LANES / 2 }, 0>(k)
     }
 
-    /// [`Self::integrate_lanes`] compiled for AVX.
+    /// [`Self::integrate_lanes`] compiled for AVX: eight strips in two 256-bit registers, the
+    /// last two in a 128-bit one.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
     unsafe fn integrate_avx<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
-        self.integrate_lanes::<FALLBACK, 4, { LANES / 4 }>(k)
+        self.integrate_lanes::<FALLBACK, 4, 2, 2>(k)
     }
 
-    // The lane index runs over several per-lane arrays in lockstep.
-    #[allow(clippy::needless_range_loop)]
+    /// Every pass of [`LANES`] strips, `G` registers of `W` lanes and a tail of `T`.
     #[inline(always)]
-    fn integrate_lanes<const FALLBACK: bool, const W: usize, const G: usize>(
+    fn integrate_lanes<const FALLBACK: bool, const W: usize, const G: usize, const T: usize>(
         &self,
         k: &Call,
     ) -> CreepForces {
-        let nx = self.params.nx as f64;
         let mut f = [0.0; 3];
-        for group in &self.strips {
-            let (lanes, sol) = strip_lanes::<W, G>(group, k, nx);
-            let mut first_slip = self.elements.len();
-            for l in 0..LANES {
-                if group.half_length[l] > 0.0 {
-                    // Elements before the first with a slip fraction (u_k·nx/2 < c) need none.
-                    // (`as` truncates: the floor of a non-negative number.)
-                    let before = (0.5 * nx - 1.5 - lanes.slip_offset[l]).max(0.0);
-                    first_slip = first_slip.min(before as usize);
-                }
-            }
-            let mut state = LaneState::default();
-            let (ahead, behind) = self.elements.split_at(first_slip.min(self.elements.len()));
-            march::<false, FALLBACK, W, G>(ahead, &lanes, &mut state);
-            march::<true, FALLBACK, W, G>(behind, &lanes, &mut state);
-            let exceeds = if FALLBACK {
-                exceeds_bound::<W, G>(&self.elements, k.a, &lanes.a_j, &sol, k.phi_s)
-            } else {
-                [false; LANES]
-            };
-            add_strip_forces::<FALLBACK, W, G>(&lanes, &sol, &state, &exceeds, k, nx, &mut f);
+        for strips in &self.strips {
+            pass::<FALLBACK, W, G, T>(strips, &self.elements, k, &mut f);
         }
         let [fx, fy, mz] = f;
         CreepForces { fx, fy, mz }
@@ -337,3 +306,7 @@ pub fn fastrip(
 #[cfg(test)]
 #[path = "fastrip_tests.rs"]
 mod tests;
+
+#[cfg(test)]
+#[path = "fastrip_reference.rs"]
+mod reference;

@@ -260,12 +260,13 @@ fn avx_and_baseline_paths_give_the_same_bits() {
                 };
                 // SAFETY: AVX was detected above.
                 let (plain, avx) = if call.phi_s.abs() > 1.0 {
-                    (f.integrate_lanes::<true, 2, { LANES / 2 }>(&call), unsafe {
-                        f.integrate_avx::<true>(&call)
-                    })
+                    (
+                        f.integrate_lanes::<true, 2, { LANES / 2 }, 0>(&call),
+                        unsafe { f.integrate_avx::<true>(&call) },
+                    )
                 } else {
                     (
-                        f.integrate_lanes::<false, 2, { LANES / 2 }>(&call),
+                        f.integrate_lanes::<false, 2, { LANES / 2 }, 0>(&call),
                         unsafe { f.integrate_avx::<false>(&call) },
                     )
                 };
@@ -274,4 +275,77 @@ fn avx_and_baseline_paths_give_the_same_bits() {
         }
         assert!(fallbacks[0] > 0 && fallbacks[1] > 0, "{fallbacks:?}");
     }
+}
+
+/// The strips in passes of ten (two AVX registers and a 128-bit one, each register's slip-zone
+/// sums from its own first slipping element) give the bits of the twelve-strip passes they
+/// replaced, on grids whose strips fill a pass, leave padding or fill several, from adhesion to
+/// full slip and beyond |φ'| = 1, on both builds.
+#[test]
+fn passes_of_ten_give_the_bits_of_the_old_passes_of_twelve() {
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut uniform = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let same = |x: CreepForces, y: CreepForces| {
+        [x.fx, x.fy, x.mz].map(f64::to_bits) == [y.fx, y.fy, y.mz].map(f64::to_bits)
+    };
+    let mut seen = [0_usize; 2];
+    for (nx, ny) in [
+        (10, 10),
+        (20, 20),
+        (7, 13),
+        (13, 5),
+        (3, 25),
+        (1, 1),
+        (10, 12),
+    ] {
+        let f = solver(nx, ny);
+        for _ in 0..300 {
+            let (a, b) = axes(0.2 + 4.0 * uniform());
+            let size = 10f64.powf(-6.0 + 4.5 * uniform());
+            // Each of the three with either sign: uniform on (−size, size).
+            let mut signed = |scale: f64| size * scale * (2.0 * uniform() - 1.0);
+            let c = creep(signed(1.0), signed(1.0), signed(2e3));
+            let call = f
+                .prepare(a, b, 2e4 + 1e5 * uniform(), 0.1 + 0.4 * uniform(), &c)
+                .unwrap();
+            let fallback = call.phi_s.abs() > 1.0;
+            seen[usize::from(fallback)] += 1;
+            let (old, plain) = if fallback {
+                (
+                    reference::creep_forces::<true>(&f, &call),
+                    f.integrate_lanes::<true, 2, { LANES / 2 }, 0>(&call),
+                )
+            } else {
+                (
+                    reference::creep_forces::<false>(&f, &call),
+                    f.integrate_lanes::<false, 2, { LANES / 2 }, 0>(&call),
+                )
+            };
+            assert!(
+                same(old, plain),
+                "{nx}x{ny} {c:?}: {old:?} against {plain:?}"
+            );
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx") {
+                // SAFETY: AVX was detected just above.
+                let avx = unsafe {
+                    if fallback {
+                        f.integrate_avx::<true>(&call)
+                    } else {
+                        f.integrate_avx::<false>(&call)
+                    }
+                };
+                assert!(
+                    same(old, avx),
+                    "{nx}x{ny} {c:?}: {old:?} against AVX {avx:?}"
+                );
+            }
+        }
+    }
+    assert!(seen[0] > 100 && seen[1] > 100, "{seen:?}");
 }

@@ -133,7 +133,7 @@ impl Element {
 /// (NaN) and the projection always runs, except for an empty strip (bound_j = 0), whose zero
 /// traction is inside a zero bound and its scale is not needed.
 #[inline(always)]
-fn inside_test(bound_j: f64) -> f64 {
+pub(super) fn inside_test(bound_j: f64) -> f64 {
     if (1e-145..=1e150).contains(&bound_j) {
         bound_j * bound_j
     } else if bound_j == 0.0 {
