@@ -15,9 +15,12 @@ cargo fmt --all --check
 
 step "clippy"
 cargo clippy --workspace --all-targets --release -- -D warnings
+# The contact recorder and its replay example exist only with their feature.
+cargo clippy -p loco-core --all-targets --release --features record-contacts -- -D warnings
 
 step "cargo test"
 cargo test --workspace --release
+cargo test -p loco-core --release --features record-contacts --lib contact_recording
 
 step "loco-batch binary (compared with loco.run_batch by pytest)"
 cargo build --release -p loco-batch

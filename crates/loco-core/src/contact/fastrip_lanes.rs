@@ -145,9 +145,11 @@ impl<const W: usize> Register<W> {
         let mut first_slip = elements;
         for l in 0..W {
             if half_length.0[l] > 0.0 {
-                // Elements before the first with a slip fraction (u_k·nx/2 < c) need none.
-                // (`as` truncates: the floor of a non-negative number.)
-                let before = (0.5 * nx - 1.5 - slip_offset.0[l]).max(0.0);
+                // Element k's slip fraction is clamp(c − u_k·nx/2, 0, 1) with u_k·nx/2 =
+                // nx/2 − k − 1/2, so k − X with X = nx/2 − 1/2 − c. Every k ≤ ⌊X⌋ − 1 is at
+                // least 1 below X and has none whatever the rounding; k = ⌊X⌋ may round to a
+                // sliver and is summed. (`as` truncates: the floor of a non-negative number.)
+                let before = (0.5 * nx - 0.5 - slip_offset.0[l]).max(0.0);
                 first_slip = first_slip.min(before as usize);
             }
         }

@@ -34,6 +34,8 @@
 pub mod bodies;
 mod bushing_lanes;
 pub mod channel_set;
+#[cfg(feature = "record-contacts")]
+pub mod contact_recording;
 pub mod creep_decay;
 pub mod creep_model;
 pub mod critical_speed;

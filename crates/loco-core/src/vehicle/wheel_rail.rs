@@ -117,6 +117,8 @@ impl CreepSolver {
         mu: f64,
         creep: &Creepages,
     ) -> CreepForces {
+        #[cfg(feature = "record-contacts")]
+        super::contact_recording::record(a, b, n, mu, creep);
         match self {
             CreepSolver::Direct(f) => f.creep_forces(a, b, n, mu, creep),
             CreepSolver::Tabulated(t) => t.creep_forces(a, b, n, mu, creep),
