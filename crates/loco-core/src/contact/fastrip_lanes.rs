@@ -257,7 +257,7 @@ impl<const W: usize> Register<W> {
     /// segment ahead of x_i minus the adhesion semi-ellipse, radius a_j − d, centre d), the slip
     /// zone (FASTSIM's directions, the exact magnitude ∫ μ p_n over the zone) and, with
     /// `FALLBACK`, FASTSIM's own sums, which a strip whose strip solution `exceeds` the bound
-    /// adds instead. All but the arc cosine of the segment's angle runs in the lanes.
+    /// adds instead. The segment's arc cosine too runs in lanes ([`acos`]).
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     pub(super) fn forces<const FALLBACK: bool>(
@@ -274,11 +274,12 @@ impl<const W: usize> Register<W> {
         let sin_t = (one - cos_t * cos_t).sqrt();
         let moment = (a_j * a_j * a_j * sin_t * sin_t * sin_t).div(three);
         let adhesion: [bool; W] = std::array::from_fn(|l| d.0[l] < a_j.0[l]);
+        let theta = acos(cos_t);
         let (mut c0, mut c1) = (s(0.0), s(0.0));
         for l in 0..W {
             if adhesion[l] {
                 let a = a_j.0[l];
-                c0.0[l] = 0.5 * a * a * (cos_t.0[l].acos() - sin_t.0[l] * cos_t.0[l]);
+                c0.0[l] = 0.5 * a * a * (theta.0[l] - sin_t.0[l] * cos_t.0[l]);
                 c1.0[l] = moment.0[l];
             }
         }
@@ -321,6 +322,22 @@ impl<const W: usize> Register<W> {
             zones,
         }
     }
+}
+
+/// The arc cosine of every lane (`x` in [−1, 1]), two at a time by `wide`'s vectorised `acos`
+/// (Agner Fog's vector class library: a rational approximation, within a few ulp of the libm
+/// function), so that both builds and every register width give the same bits.
+#[inline(always)]
+pub(super) fn acos<const W: usize>(x: Simd<W>) -> Simd<W> {
+    let mut out = x;
+    for pair in out.0.chunks_mut(2) {
+        let mut two = [0.0; 2];
+        two[..pair.len()].copy_from_slice(pair);
+        let theta = wide::f64x2::from(two).acos().to_array();
+        let n = pair.len();
+        pair.copy_from_slice(&theta[..n]);
+    }
+    out
 }
 
 impl<const W: usize> RegisterForces<W> {

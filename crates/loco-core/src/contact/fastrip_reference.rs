@@ -1,8 +1,10 @@
 //! FaStrip's strips as they ran until stop 33 (twelve strips per pass in three registers, the
 //! slip-zone sums from the pass's first slipping element), kept as the bit-for-bit reference of
-//! [`super::super::fastrip_lanes`], which must give the same forces for any grid and input.
+//! [`super::super::fastrip_lanes`], which must give the same forces for any grid and input. One
+//! change: the segment's arc cosine is the lanes' vectorised one (stop 34), not libm's.
 
 use super::super::fastrip::{Call, Fastrip};
+use super::super::fastrip_lanes::acos;
 use super::super::kalker::CreepForces;
 use crate::contact::fastsim_lanes::{Lanes as Simd, INSIDE_BOUND};
 use std::f64::consts::PI;
@@ -332,7 +334,7 @@ fn add_strip_forces<const FALLBACK: bool, const W: usize, const G: usize>(
     for l in 0..LANES {
         if adhesion[l] {
             let a = lanes.a_j[l];
-            c0[l] = 0.5 * a * a * (cos_t[l].acos() - sin_t[l] * cos_t[l]);
+            c0[l] = 0.5 * a * a * (acos(Simd([cos_t[l]])).0[0] - sin_t[l] * cos_t[l]);
             c1[l] = moment[l];
         }
     }
