@@ -334,8 +334,7 @@ pub(super) fn acos<const W: usize>(x: Simd<W>) -> Simd<W> {
         let mut two = [0.0; 2];
         two[..pair.len()].copy_from_slice(pair);
         let theta = wide::f64x2::from(two).acos().to_array();
-        let n = pair.len();
-        pair.copy_from_slice(&theta[..n]);
+        pair.copy_from_slice(&theta[..pair.len()]);
     }
     out
 }
