@@ -339,6 +339,23 @@ pub(super) fn acos<const W: usize>(x: Simd<W>) -> Simd<W> {
     out
 }
 
+impl<const W: usize> Register<W> {
+    /// Adds the register's strips' forces to `f` = (F_x, F_y, M_z), lane after lane, after the
+    /// march over `elements`.
+    #[inline(always)]
+    fn add_forces<const FALLBACK: bool>(&self, elements: &[Element], k: &Call, f: &mut [f64; 3]) {
+        let exceeds = if FALLBACK {
+            self.exceeds_bound(elements, k.a, k.phi_s)
+        } else {
+            [false; W]
+        };
+        let forces = self.forces::<FALLBACK>(k, elements.len() as f64, &exceeds);
+        for l in 0..W {
+            forces.add_lane(l, f);
+        }
+    }
+}
+
 impl<const W: usize> RegisterForces<W> {
     /// Adds lane `l`'s zones to `f` = (F_x, F_y, M_z).
     #[inline(always)]
@@ -376,25 +393,8 @@ pub(super) fn pass<const FALLBACK: bool, const W: usize, const G: usize, const T
         }
         tail.step::<FALLBACK>(e, index >= tail.first_slip);
     }
-    let nx = n as f64;
     for reg in &regs {
-        let exceeds = if FALLBACK {
-            reg.exceeds_bound(elements, k.a, k.phi_s)
-        } else {
-            [false; W]
-        };
-        let forces = reg.forces::<FALLBACK>(k, nx, &exceeds);
-        for l in 0..W {
-            forces.add_lane(l, f);
-        }
+        reg.add_forces::<FALLBACK>(elements, k, f);
     }
-    let exceeds = if FALLBACK {
-        tail.exceeds_bound(elements, k.a, k.phi_s)
-    } else {
-        [false; T]
-    };
-    let forces = tail.forces::<FALLBACK>(k, nx, &exceeds);
-    for l in 0..T {
-        forces.add_lane(l, f);
-    }
+    tail.add_forces::<FALLBACK>(elements, k, f);
 }

@@ -283,13 +283,9 @@ fn avx_and_baseline_paths_give_the_same_bits() {
 /// full slip and beyond |φ'| = 1, on both builds.
 #[test]
 fn passes_of_ten_give_the_bits_of_the_old_passes_of_twelve() {
-    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-    let mut uniform = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand_chacha::ChaCha20Rng::seed_from_u64(34);
+    let mut uniform = move || rng.random::<f64>();
     let same = |x: CreepForces, y: CreepForces| {
         [x.fx, x.fy, x.mz].map(f64::to_bits) == [y.fx, y.fy, y.mz].map(f64::to_bits)
     };
