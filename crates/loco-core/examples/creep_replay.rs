@@ -1,7 +1,7 @@
 //! FaStrip's cost per contact against FASTSIM's on the contacts of a vehicle run: the study case
 //! (`examples/support/study_case.rs`, 500 m at 200 km/h) is simulated once with FASTSIM, every
 //! creep-force call's inputs are recorded (feature `record-contacts`), and the recorded calls are
-//! replayed through both models on the default 10 × 10 grid in alternating rounds, so that both
+//! replayed through both models on the run's grid (the default 10 × 10) and material in alternating rounds, so that both
 //! see the same machine load. Prints the median time per call of each over the rounds and the
 //! median of the per-round ratios (issue 16's target: FaStrip at most 1.5× FASTSIM).
 //!
@@ -56,8 +56,21 @@ fn main() {
     )
     .expect("the study case runs");
     let calls = contact_recording::take();
-    let fastsim = Fastsim::new(FastsimParams::default()).expect("default grid");
-    let fastrip = Fastrip::new(FastripParams::default()).expect("default grid");
+    // The run's material (G derived from E and ν, as the vehicle's contact does) and grid.
+    let parameters = ParameterSet::default_vehicle();
+    let poisson_ratio = parameters
+        .get("track.poisson_ratio")
+        .expect("a vehicle key");
+    let young_modulus = parameters
+        .get("track.young_modulus")
+        .expect("a vehicle key");
+    let material = FastsimParams {
+        poisson_ratio,
+        shear_modulus: young_modulus / (2.0 * (1.0 + poisson_ratio)),
+        ..scenario.fastsim
+    };
+    let fastsim = Fastsim::new(material).expect("the run's grid");
+    let fastrip = Fastrip::new(FastripParams::from(material)).expect("the run's grid");
     let (mut t_sim, mut t_rip, mut ratio) = (vec![], vec![], vec![]);
     for _ in 0..rounds {
         let s = time_calls(&calls, |c| {
