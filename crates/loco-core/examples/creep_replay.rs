@@ -14,7 +14,6 @@ use loco_core::contact::kalker::CreepForces;
 use loco_core::vehicle::contact_recording::{self, ContactCall};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::simulate_prepared;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -43,18 +42,11 @@ fn main() {
     let name = args.get(1).map_or("S_high", String::as_str);
     let rounds: usize = args.get(2).map_or(15, |r| r.parse().expect("rounds"));
     let scenario = study_case::scenario("fastsim", name, None);
-    let (structure, wheel_rail, track) =
-        study_case::prepared(ParameterSet::default_vehicle(), &scenario);
+    let prepared = study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     let _ = contact_recording::take();
-    simulate_prepared(
-        structure,
-        wheel_rail,
-        track,
-        &scenario,
-        Recorded::Metrics,
-        None,
-    )
-    .expect("the study case runs");
+    prepared
+        .run(&scenario, Recorded::Metrics)
+        .expect("the study case runs");
     let calls = contact_recording::take();
     // The run's material (G derived from E and ν, as the vehicle's contact does) and grid.
     let parameters = ParameterSet::default_vehicle();

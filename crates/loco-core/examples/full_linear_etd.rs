@@ -25,7 +25,7 @@ use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::linearise::linearise;
 use loco_core::vehicle::run::{Recorded, RunOutput, RunSettings, REFERENCE_STEP};
 use loco_core::vehicle::run_metrics::run_metrics;
-use loco_core::vehicle::scenario::{simulate_prepared, start_distance, Scenario};
+use loco_core::vehicle::scenario::{start_distance, Scenario};
 use loco_core::vehicle::simulation::VehicleSystem;
 use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
 use nalgebra::{DMatrix, DVector};
@@ -134,7 +134,7 @@ fn main() {
     let parameters = study_case::parameters(args.iter().skip(2));
     let rate: f64 = std::env::var("RATE").map_or(250.0, |r| r.parse().unwrap());
     let base = Scenario::study(name, 200.0 / 3.6, 500.0, 1).unwrap();
-    let (structure, wheel_rail, track) = study_case::prepared(parameters, &base);
+    let prepared = study_case::prepared(parameters, &base);
     let pick = |m: &RunMetrics| [m.wy_max, m.ayb_peak_lp, m.ayc_psd_peak];
     let product = |integrator, step| {
         let scenario = Scenario {
@@ -146,15 +146,7 @@ fn main() {
             },
             ..base.clone()
         };
-        let r = simulate_prepared(
-            structure.clone(),
-            wheel_rail.clone(),
-            track.clone(),
-            &scenario,
-            Recorded::Metrics,
-            None,
-        )
-        .unwrap();
+        let r = prepared.run(&scenario, Recorded::Metrics).unwrap();
         (pick(&r.metrics), r.statistics.rhs_evaluations as usize)
     };
     let (reference, _) = product(Integrator::Rk4, 0.25e-3);
@@ -177,11 +169,11 @@ fn main() {
     );
     // The system as the product's 2 ms scheme builds it: the reference step's damper laws.
     let mut system = VehicleSystem::new(
-        structure.clone(),
-        wheel_rail.clone(),
-        track.clone(),
+        prepared.structure.clone(),
+        prepared.wheel_rail.clone(),
+        prepared.track.clone(),
         base.speed,
-        start_distance(&structure),
+        start_distance(&prepared.structure),
         base.yaw_damper.as_ref(),
         REFERENCE_STEP,
     )

@@ -6,7 +6,7 @@
 use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::integrator::Integrator;
 use loco_core::vehicle::run::{Recorded, RunSettings};
-use loco_core::vehicle::scenario::{simulate_prepared, Scenario};
+use loco_core::vehicle::scenario::Scenario;
 
 #[path = "support/study_case.rs"]
 mod study_case;
@@ -22,7 +22,7 @@ fn main() {
         Ok("reference") => base.curve = DesignSection::reference_curve(0.1, CurveDirection::Left),
         _ => {}
     }
-    let (structure, wheel_rail, track) = study_case::prepared(parameters, &base);
+    let prepared = study_case::prepared(parameters, &base);
     let cases = [
         (Integrator::Rk4, 0.25e-3),
         (Integrator::Rk4, 1e-3),
@@ -40,14 +40,7 @@ fn main() {
             ..base.clone()
         };
         let t = std::time::Instant::now();
-        let result = simulate_prepared(
-            structure.clone(),
-            wheel_rail.clone(),
-            track.clone(),
-            &scenario,
-            Recorded::Metrics,
-            None,
-        );
+        let result = prepared.run(&scenario, Recorded::Metrics);
         let wall = t.elapsed().as_secs_f64();
         match result {
             Ok(r) => {

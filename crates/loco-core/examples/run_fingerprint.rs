@@ -15,7 +15,6 @@
 
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::simulate_prepared;
 use loco_core::vehicle::wheel_channels::{
     wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
 };
@@ -46,20 +45,11 @@ fn main() {
         name,
         track_kind,
     );
-    let (structure, wheel_rail, track) =
-        study_case::prepared(ParameterSet::default_vehicle(), &scenario);
+    let prepared = study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     if args.get(3).is_some_and(|a| a == "prepare") {
         return;
     }
-    let result = simulate_prepared(
-        structure,
-        wheel_rail,
-        track,
-        &scenario,
-        Recorded::Every,
-        None,
-    )
-    .unwrap();
+    let result = prepared.run(&scenario, Recorded::Every).unwrap();
     let mut curving: HashSet<String> = (0..4)
         .map(|w| wheelset_channel(w, WheelsetQuantity::GuidingForce))
         .collect();

@@ -13,7 +13,6 @@
 
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::simulate_prepared;
 
 #[path = "support/study_case.rs"]
 mod study_case;
@@ -42,20 +41,11 @@ fn main() {
         track_kind,
     );
     let repeats: usize = args.get(4).map_or(9, |r| r.parse().expect("repeats"));
-    let (structure, wheel_rail, track) =
-        study_case::prepared(ParameterSet::default_vehicle(), &scenario);
+    let prepared = study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     let mut times = Vec::with_capacity(repeats);
     for _ in 0..repeats {
         let start = thread_cpu_seconds();
-        let result = simulate_prepared(
-            structure.clone(),
-            wheel_rail.clone(),
-            track.clone(),
-            &scenario,
-            Recorded::Metrics,
-            None,
-        )
-        .unwrap();
+        let result = prepared.run(&scenario, Recorded::Metrics).unwrap();
         times.push(thread_cpu_seconds() - start);
         std::hint::black_box(result);
     }

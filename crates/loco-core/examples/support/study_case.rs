@@ -1,14 +1,18 @@
 //! The case the examples share (`run_fingerprint`, `sim_time`, `integrator_compare`,
 //! `full_linear_etd`): the `vehicle` bench's 500 m run at 200 km/h on a study scenario, with a
 //! creep model and a track chosen by name and parameters from `key=value` arguments, built up to
-//! what `simulate_prepared` takes.
+//! what `simulate_prepared` takes, and run.
 // Each example uses part of it.
 #![allow(dead_code)]
 
+use loco_core::error::Result;
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
 use loco_core::vehicle::creep_model::CreepModel;
 use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{build_track, build_wheel_rail, Scenario};
+use loco_core::vehicle::run::Recorded;
+use loco_core::vehicle::scenario::{
+    build_track, build_wheel_rail, simulate_prepared, Scenario, SimulationResult,
+};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::vehicle::wheel_rail::WheelRail;
 use std::sync::Arc;
@@ -40,17 +44,36 @@ pub fn parameters<'a>(overrides: impl IntoIterator<Item = &'a String>) -> Parame
     parameters
 }
 
+/// The vehicle of a parameter set, its contact and a scenario's track, built once: what
+/// `simulate_prepared` takes.
+pub struct Prepared {
+    pub structure: Arc<VehicleStructure>,
+    pub wheel_rail: Arc<WheelRail>,
+    pub track: Arc<TrackIrregularity>,
+}
+
+impl Prepared {
+    /// One run of `scenario` on the prepared vehicle, contact and track, recording `recorded`.
+    pub fn run(&self, scenario: &Scenario, recorded: Recorded) -> Result<SimulationResult> {
+        simulate_prepared(
+            self.structure.clone(),
+            self.wheel_rail.clone(),
+            self.track.clone(),
+            scenario,
+            recorded,
+            None,
+        )
+    }
+}
+
 /// The vehicle of `parameters`, its contact and `scenario`'s track, built once.
-pub fn prepared(
-    parameters: ParameterSet,
-    scenario: &Scenario,
-) -> (
-    Arc<VehicleStructure>,
-    Arc<WheelRail>,
-    Arc<TrackIrregularity>,
-) {
+pub fn prepared(parameters: ParameterSet, scenario: &Scenario) -> Prepared {
     let structure = Arc::new(VehicleStructure::new(parameters).unwrap());
     let wheel_rail = Arc::new(build_wheel_rail(&structure.parameters, scenario).unwrap());
     let track = Arc::new(build_track(scenario, &structure).unwrap());
-    (structure, wheel_rail, track)
+    Prepared {
+        structure,
+        wheel_rail,
+        track,
+    }
 }

@@ -4,7 +4,7 @@
 //! change: the segment's arc cosine is the lanes' vectorised one (stop 34), not libm's.
 
 use super::super::fastrip::{Call, Fastrip};
-use super::super::fastrip_lanes::acos;
+use super::super::fastrip_lanes::{acos, Element, LANES as NEW_LANES};
 use super::super::kalker::CreepForces;
 use crate::contact::fastsim_lanes::{Lanes as Simd, INSIDE_BOUND};
 use std::f64::consts::PI;
@@ -22,38 +22,26 @@ pub(in crate::contact) fn creep_forces<const FALLBACK: bool>(
     solver: &Fastrip,
     k: &Call,
 ) -> CreepForces {
-    let (nx, ny) = (solver.params().nx, solver.params().ny);
-    let strip = |j: usize| {
-        let eta = -1.0 + (2 * j + 1) as f64 / ny as f64;
-        (eta, (1.0 - eta * eta).sqrt())
-    };
+    // The solver's own strips and elements, the strips regrouped twelve to a pass.
+    let ny = solver.params().ny;
+    let strip = |j: usize| &solver.strips[j / NEW_LANES];
     let strips: Vec<StripLanes> = (0..ny.div_ceil(LANES))
         .map(|group| {
             let mut lanes = StripLanes::default();
             for lane in 0..LANES {
                 let j = group * LANES + lane;
                 if j < ny {
-                    (lanes.eta[lane], lanes.half_length[lane]) = strip(j);
-                    lanes.inv_half_length[lane] = 1.0 / lanes.half_length[lane];
+                    let (from, l) = (strip(j), j % NEW_LANES);
+                    lanes.eta[lane] = from.eta[l];
+                    lanes.half_length[lane] = from.half_length[l];
+                    lanes.inv_half_length[lane] = from.inv_half_length[l];
                 }
             }
             lanes
         })
         .collect();
-    let centre = |k: usize| 1.0 - (2 * k + 1) as f64 / nx as f64;
-    let elements: Vec<Element> = (0..nx)
-        .map(|k| {
-            let (u, previous) = (centre(k), if k == 0 { 1.0 } else { centre(k - 1) });
-            Element {
-                u,
-                shape: (1.0 - u * u).sqrt(),
-                e: 0.5 * u * nx as f64,
-                du: previous - u,
-                u_mid: 0.5 * (previous + u),
-            }
-        })
-        .collect();
-    let nx = nx as f64;
+    let elements = &solver.elements;
+    let nx = elements.len() as f64;
     let mut f = [0.0; 3];
     for group in &strips {
         let (lanes, sol) = strip_lanes::<2, 6>(group, k, nx);
@@ -69,7 +57,7 @@ pub(in crate::contact) fn creep_forces<const FALLBACK: bool>(
         march::<false, FALLBACK, 2, 6>(ahead, &lanes, &mut state);
         march::<true, FALLBACK, 2, 6>(behind, &lanes, &mut state);
         let exceeds = if FALLBACK {
-            exceeds_bound::<2, 6>(&elements, k.a, &lanes.a_j, &sol, k.phi_s)
+            exceeds_bound::<2, 6>(elements, k.a, &lanes.a_j, &sol, k.phi_s)
         } else {
             [false; LANES]
         };
@@ -105,15 +93,6 @@ struct LaneState {
     sx: [f64; LANES],
     sy: [f64; LANES],
     syu: [f64; LANES],
-}
-
-#[derive(Debug, Clone, Copy)]
-struct Element {
-    u: f64,
-    shape: f64,
-    e: f64,
-    du: f64,
-    u_mid: f64,
 }
 
 #[inline(always)]

@@ -101,17 +101,7 @@ fn form_follows_the_step_and_the_law() {
     assert_eq!(Damper::yd2().for_step(1e-3).unwrap(), Damper::yd2());
     // Stiff only above the knee: no rigid form, a typed error naming the step (the vehicle adds
     // the damper's name: `vehicle::damper_elements`).
-    let blow_off = Damper::Maxwell(
-        MaxwellDamper::new(MaxwellParams {
-            damping_nspm: 800e3,
-            series_stiffness_npm: 22.5e6,
-            blow_off: Some(BlowOff {
-                knee_velocity_mps: 0.02,
-                blow_off_damping_nspm: 4e3,
-            }),
-        })
-        .unwrap(),
-    );
+    let blow_off = stiff_above_the_knee();
     let err = blow_off.for_step(1e-3).unwrap_err();
     let text = err.to_string();
     assert!(

@@ -361,5 +361,22 @@ impl Damper {
     }
 }
 
+/// A Maxwell damper that is stiff only above its knee (800 kN·s/m, 22.5 MN/m series spring,
+/// blow-off at 0.02 m/s to 4 kN·s/m): a law with no rigid form, for the tests of too long a step.
+#[cfg(test)]
+pub(crate) fn stiff_above_the_knee() -> Damper {
+    Damper::Maxwell(
+        MaxwellDamper::new(MaxwellParams {
+            damping_nspm: 800e3,
+            series_stiffness_npm: 22.5e6,
+            blow_off: Some(BlowOff {
+                knee_velocity_mps: 0.02,
+                blow_off_damping_nspm: 4e3,
+            }),
+        })
+        .unwrap(),
+    )
+}
+
 #[cfg(test)]
 mod tests;

@@ -2,7 +2,7 @@
 //! reduced laws themselves are tested with the damper module).
 
 use super::*;
-use crate::dampers::{BlowOff, MaxwellDamper, MaxwellParams};
+
 use crate::vehicle::elements::Attachment;
 
 fn yaw_placement(name: &str) -> DamperPlacement {
@@ -25,17 +25,7 @@ fn yaw_placement(name: &str) -> DamperPlacement {
 #[test]
 fn a_step_too_long_for_a_law_names_the_step_and_the_damper() {
     // Stiff only above the knee: no rigid form, a typed error naming the step and the damper.
-    let blow_off = Damper::Maxwell(
-        MaxwellDamper::new(MaxwellParams {
-            damping_nspm: 800e3,
-            series_stiffness_npm: 22.5e6,
-            blow_off: Some(BlowOff {
-                knee_velocity_mps: 0.02,
-                blow_off_damping_nspm: 4e3,
-            }),
-        })
-        .unwrap(),
-    );
+    let blow_off = crate::dampers::stiff_above_the_knee();
     let err = law_for_step(&yaw_placement("yaw_damper_x"), Some(&blow_off), 1e-3).unwrap_err();
     let text = err.to_string();
     assert!(
