@@ -76,6 +76,17 @@ def test_short_run_on_perfect_track_returns_channels() -> None:
         result.channel("nothing")
 
 
+def test_an_output_rate_between_whole_steps_shortens_the_step() -> None:
+    # 400 Hz at the default 2 ms is 1.25 steps per sample: two steps of 1.25 ms, not one of
+    # 2.5 ms beyond the step the stability check passed.
+    scenario = loco.Scenario(
+        name="S_norm", speed=50.0, distance=40.0, track="perfect", output_rate=400.0
+    )
+    result = loco.simulate(loco.Locomotive.default(), scenario)
+    assert result.time[1] - result.time[0] == pytest.approx(1 / 400)
+    assert result.statistics["steps"] == 2 * (result.time.size - 1)
+
+
 def test_full_run_gives_metrics_and_fsd_valve_state() -> None:
     scenario = loco.Scenario(
         name="S_high", speed=200 / 3.6, distance=300.0, seed=3, yaw_damper=loco.dampers.FSD

@@ -88,3 +88,35 @@ fn run_statistics_follow_the_rk4_schedule() {
         (s.rhs_evaluations, s.steps)
     );
 }
+
+#[test]
+fn an_output_rate_between_whole_steps_shortens_the_step_never_lengthens_it() {
+    // 400 Hz at the default 2 ms: 1.25 steps per sample. Rounding took one 2.5 ms step, longer
+    // than the step the stability check passed; two 1.25 ms steps are what was asked.
+    let mut scenario = perfect(50.0, 5.0);
+    scenario.run.output_rate = 400.0;
+    let requested = scenario.run.step;
+    let r = simulate(ParameterSet::default_vehicle(), &scenario).unwrap();
+    let duration = scenario.distance / scenario.speed;
+    let taken = duration / r.statistics.steps as f64;
+    assert!(
+        taken <= requested * (1.0 + 1e-9),
+        "{taken} s steps for {requested} s"
+    );
+    assert_eq!(r.statistics.steps, (duration * 800.0).round() as u64);
+    assert_eq!(r.output.sampling_rate, 400.0);
+    // Whole ratios keep their count: 500 Hz takes one 2 ms step, two 1 ms steps, three of 2/3 ms.
+    use loco_core::vehicle::run::steps_per_sample;
+    for (rate, step, n) in [
+        (500.0, 2e-3, 1),
+        (500.0, 1e-3, 2),
+        (500.0, 2e-3 / 3.0, 3),
+        (500.0, 0.25e-3, 8),
+        (400.0, 2e-3, 2),
+        (300.0, 2e-3, 2),
+        (450.0, 2e-3, 2),
+        (1000.0, 2e-3, 1),
+    ] {
+        assert_eq!(steps_per_sample(rate, step), n, "{rate} Hz at {step} s");
+    }
+}

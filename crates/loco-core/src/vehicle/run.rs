@@ -35,7 +35,8 @@ pub struct RunSettings {
     pub step: f64,
     /// The scheme that takes the steps.
     pub integrator: Integrator,
-    /// Output sampling rate, Hz (a whole number of steps per sample).
+    /// Output sampling rate, Hz (a whole number of steps per sample: the step is shortened to
+    /// fit, [`steps_per_sample`]).
     pub output_rate: f64,
     /// Simulated time recorded, s.
     pub duration: f64,
@@ -98,6 +99,14 @@ pub fn channel_names(structure: &VehicleStructure) -> Result<Vec<String>> {
     Ok(ChannelSet::new(structure)?.names())
 }
 
+/// Whole steps per output sample at `output_rate` (Hz) for a step of at most `step` (s): the
+/// step is shortened to fit, never lengthened, since `step` is the one the stability check
+/// ([`super::stiffest_mode::stable_step`]) and the dampers' laws were made for. The tolerance
+/// keeps exact ratios (500 Hz at 2 ms) from rounding up to one step more.
+pub fn steps_per_sample(output_rate: f64, step: f64) -> usize {
+    ((1.0 / (output_rate * step)) - 1e-9).ceil().max(1.0) as usize
+}
+
 /// Integrates `system` from the initial state `y` for `settings.duration` and records the
 /// `recorded` channels. `cancel`, when set from another thread, stops the run with `Interrupted`.
 pub fn run(
@@ -111,9 +120,7 @@ pub fn run(
     check_positive("output_rate", settings.output_rate)?;
     check_positive("duration", settings.duration)?;
     check_non_negative("settle", settings.settle)?;
-    let steps_per_sample = (1.0 / (settings.output_rate * settings.step))
-        .round()
-        .max(1.0) as usize;
+    let steps_per_sample = steps_per_sample(settings.output_rate, settings.step);
     let dt = 1.0 / (settings.output_rate * steps_per_sample as f64);
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let channel_set = match recorded {
