@@ -16,9 +16,10 @@ import numpy as np
 import numpy.typing as npt
 from sklearn.exceptions import ConvergenceWarning
 from sklearn.gaussian_process import GaussianProcessRegressor
-from sklearn.gaussian_process.kernels import RBF, ConstantKernel, Matern, WhiteKernel
+from sklearn.gaussian_process.kernels import RBF, Matern
 from sklearn.model_selection import KFold
 
+from loco.studies.gp_kernel import scaled_kernel_with_noise
 from loco.studies.surrogate import r2_score
 
 __all__ = ["GaussianProcessSurrogate", "gaussian_process_r2"]
@@ -59,7 +60,7 @@ class GaussianProcessSurrogate:
         shape = (
             RBF(length, (1e-2, 1e3)) if self.kernel == "se" else Matern(length, (1e-2, 1e3), nu=2.5)
         )
-        kernel = ConstantKernel(1.0) * shape + WhiteKernel(1e-2, (1e-8, 1e1))
+        kernel = scaled_kernel_with_noise(shape, constant=1.0, noise=1e-2, noise_bounds=(1e-8, 1e1))
         self.model_ = GaussianProcessRegressor(kernel, normalize_y=True, random_state=self.seed)
         with warnings.catch_warnings():
             # A length scale at its upper bound means that parameter does not matter: expected.
