@@ -23,7 +23,7 @@ def plain(shape: Kernel, constant: float, noise: float) -> Kernel:
     return ConstantKernel(constant) * shape + WhiteKernel(noise, (1e-8, 1e1))
 
 
-@pytest.mark.parametrize(("n", "p"), [(1, 2), (2, 6), (37, 6), (120, 6), (64, 3)])
+@pytest.mark.parametrize(("n", "p"), [(1, 2), (2, 6), (37, 6), (120, 6), (64, 3), (30, 9)])
 def test_the_fused_kernel_and_gradient_are_scikit_learns_bit_for_bit(n: int, p: int) -> None:
     rng = np.random.default_rng(n * 10 + p)
     x = rng.random((n, p))
@@ -75,3 +75,15 @@ def test_a_fitted_process_is_the_same_with_either_kernel() -> None:
         assert isinstance(fits[1].kernel_, ScaledKernelWithNoise)
         assert np.array_equal(fits[0].kernel_.theta, fits[1].kernel_.theta)
         assert np.array_equal(fits[0].predict(test), fits[1].predict(test))
+
+
+def test_the_inputs_are_summed_in_numpys_order_or_by_numpy() -> None:
+    # Up to 7 inputs this numpy adds a pair's terms in order (the fast sum); from 8 on it sums
+    # pairwise, and numpy's own sum is taken. Either way the bits of `sum(-1)`.
+    from loco.studies.gp_kernel import _sum_over_inputs
+
+    rng = np.random.default_rng(5)
+    for p in (2, 6, 8, 11):
+        d = rng.random((p, 17, 17)) * np.exp(8 * rng.normal(size=(p, 17, 17)))
+        expected = np.ascontiguousarray(d.transpose(1, 2, 0)).sum(-1)
+        assert np.array_equal(_sum_over_inputs(d), expected), p
