@@ -9,6 +9,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import loco
@@ -170,6 +171,26 @@ def test_damper_bench_command(tmp_path: Path) -> None:
         two_tone = list(csv.DictReader(f))
     assert {r["trigger"] for r in two_tone} == set(dampers.TRIGGERS)
     assert (tmp_path / "valve_cutoff_vs_amplitude.png").stat().st_size > 10_000
+
+
+def test_the_valve_bench_gives_the_same_tables_on_any_number_of_threads(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # A smaller grid than the stage's: 2 triggers x 2 dither frequencies x 3 ratios, 4 amplitudes.
+    from loco.studies import valve_bench
+
+    monkeypatch.setattr(valve_bench, "DITHER_HZ", (5.0, 12.0))
+    monkeypatch.setattr(valve_bench, "DITHER_RATIOS", (0.0, 0.1, 1.0))
+    monkeypatch.setattr(valve_bench, "AMPLITUDES_M", (1e-5, 1e-4, 2.6e-4, 3e-3))
+    one = valve_bench.run_valve_bench(threads=1)
+    two = valve_bench.run_valve_bench(threads=2)
+    for a, b in ((one.dither, two.dither), (one.band, two.band), (one.histories, two.histories)):
+        pd.testing.assert_frame_equal(a, b, check_exact=True)
+    assert list(one.dither["dither_ratio"]) == [0.0, 0.1, 1.0] * 4
+    # The band is each amplitude's own: NaN where the valve opens nowhere, in order.
+    lower, upper = dampers.valve_opening_band(dampers.FSD_HYDRAULIC, [2.6e-4])
+    assert one.band["cutoff_hz"].iloc[2] == upper[0]
+    assert one.band["lower_hz"].iloc[2] == lower[0]
 
 
 def test_fsd_trigger_selection_and_valve_errors() -> None:

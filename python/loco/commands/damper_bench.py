@@ -97,12 +97,16 @@ class DamperBenchStage(Stage):
 
     def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
         """:func:`bench_study` into ``out_dir`` (a bench, no vehicle simulation)."""
-        return bench_study(out_dir, self.amplitude)
+        return bench_study(out_dir, self.amplitude, threads=runtime.threads)
 
 
-def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecord:
+def bench_study(
+    out_dir: str | Path, amplitude: float = AMPLITUDE, *, threads: int | None = None
+) -> StudyRecord:
     """Bench YD1, YD2 and FSD at :data:`FREQUENCIES_HZ` with a sine of ``amplitude`` (m); write
-    the figure, tables and parameters into ``out_dir`` and return the report record."""
+    the figure, tables and parameters into ``out_dir`` and return the report record. The valve
+    bench's runs share ``threads`` threads (None: one per core); the results do not depend on
+    it."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     fig, axes = pyplot().subplots(2, len(FREQUENCIES_HZ), figsize=(11, 8), squeeze=False)
@@ -176,7 +180,7 @@ def bench_study(out_dir: str | Path, amplitude: float = AMPLITUDE) -> StudyRecor
         "dampers": {name: dampers.describe(d) for name, d in BENCHED.items()},
         "valve_reference_stroke_m": dampers.REFERENCE_STROKE_AMPLITUDE,
     }
-    valve = run_valve_bench(dampers.REFERENCE_STROKE_AMPLITUDE)
+    valve = run_valve_bench(dampers.REFERENCE_STROKE_AMPLITUDE, threads=threads)
     valve_figures, valve_tables = save_valve_bench(valve, out)
     limits = largest_opening_dither(valve)
     limit_text = "; ".join(

@@ -14,6 +14,8 @@ Three pieces, written next to the damper bench (SPEC §6.5) by ``loco damper-ben
 
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -76,8 +78,13 @@ class ValveBench:
     dither: pd.DataFrame
 
 
-def run_valve_bench(stroke: float = dampers.REFERENCE_STROKE_AMPLITUDE) -> ValveBench:
-    """Runs the three benches at the stroke amplitude ``stroke`` (m)."""
+def run_valve_bench(
+    stroke: float = dampers.REFERENCE_STROKE_AMPLITUDE, *, threads: int | None = None
+) -> ValveBench:
+    """Runs the three benches at the stroke amplitude ``stroke`` (m). The two-tone runs, each
+    its own bench, share ``threads`` threads (None: one per core; the native bench releases the
+    GIL), and the opening band's amplitudes the native side's threads: the results do not
+    depend on either."""
     histories = []
     for name, damper in VALVES.items():
         for f in (1.0, 4.0):
@@ -99,21 +106,29 @@ def run_valve_bench(stroke: float = dampers.REFERENCE_STROKE_AMPLITUDE) -> Valve
             )
     lower, upper = dampers.valve_opening_band(dampers.FSD_HYDRAULIC, AMPLITUDES_M)
     band = pd.DataFrame({"amplitude_m": AMPLITUDES_M, "lower_hz": lower, "cutoff_hz": upper})
-    rows = []
-    for name, damper in VALVES.items():
-        for fd in DITHER_HZ:
-            for ratio in DITHER_RATIOS:
-                t, x = two_tone(stroke, fd, ratio)
-                r = dampers.bench_recorded(damper, t, x)
-                rows.append(
-                    {
-                        "trigger": name,
-                        "dither_hz": fd,
-                        "dither_ratio": ratio,
-                        "dither_velocity_ratio": ratio * fd / SWAY_HZ,
-                        "open_fraction": open_fraction(r),
-                    }
-                )
+    cases = [
+        (name, damper, fd, ratio)
+        for name, damper in VALVES.items()
+        for fd in DITHER_HZ
+        for ratio in DITHER_RATIOS
+    ]
+
+    def fraction(case: tuple[str, dampers.Damper, float, float]) -> float:
+        _, damper, fd, ratio = case
+        return open_fraction(dampers.bench_recorded(damper, *two_tone(stroke, fd, ratio)))
+
+    with ThreadPoolExecutor(max_workers=threads or os.cpu_count() or 1) as pool:
+        fractions = list(pool.map(fraction, cases))
+    rows = [
+        {
+            "trigger": name,
+            "dither_hz": fd,
+            "dither_ratio": ratio,
+            "dither_velocity_ratio": ratio * fd / SWAY_HZ,
+            "open_fraction": f,
+        }
+        for (name, _, fd, ratio), f in zip(cases, fractions, strict=True)
+    ]
     return ValveBench(stroke, pd.concat(histories, ignore_index=True), band, pd.DataFrame(rows))
 
 

@@ -77,6 +77,7 @@
 
 use crate::error::{check_positive, Result};
 use crate::LocoError;
+use rayon::prelude::*;
 use std::f64::consts::{PI, TAU};
 
 /// `∫₀^π √(sin θ) dθ` (the turbulent half-cycle filling integral).
@@ -421,6 +422,19 @@ impl HydraulicValve {
             edge(grid[last], grid[last + 1])
         };
         Some((lower, upper))
+    }
+
+    /// [`Self::opening_band_hz`] for each amplitude of `amplitudes` (m), in order, the amplitudes
+    /// on rayon's threads (each band is its own search, so the bands do not depend on them).
+    pub fn opening_bands_hz(
+        &self,
+        closed: &ClosedModule,
+        amplitudes: &[f64],
+    ) -> Vec<Option<(f64, f64)>> {
+        amplitudes
+            .par_iter()
+            .map(|&x| self.opening_band_hz(closed, x))
+            .collect()
     }
 }
 

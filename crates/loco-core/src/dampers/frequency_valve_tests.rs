@@ -81,6 +81,19 @@ fn derived_cutoff_at_the_reference_amplitude_is_f_p() {
     );
 }
 
+#[test]
+fn the_bands_of_several_amplitudes_are_each_amplitudes_band_in_order() {
+    let (valve, closed) = (spec_valve(), spec_closed());
+    // From 0.02 mm, where the valve opens nowhere, to 8 mm.
+    let amplitudes: Vec<f64> = (0..9).map(|i| 2e-5 * 2f64.powi(i)).collect();
+    let bands = valve.opening_bands_hz(&closed, &amplitudes);
+    assert_eq!(bands.len(), amplitudes.len());
+    for (x, band) in amplitudes.iter().zip(&bands) {
+        assert_eq!(*band, valve.opening_band_hz(&closed, *x), "{x} m");
+    }
+    assert!(bands.iter().any(Option::is_some) && bands.iter().any(Option::is_none));
+}
+
 /// Fraction of the last `tail` seconds with the valve open (scale factor 0).
 fn open_fraction(damper: &Damper, motion: &BenchMotion, tail: f64) -> f64 {
     let opts = BenchOptions {
