@@ -156,9 +156,9 @@ FULL = Sizes(
     n_tracks=8,
     curving_sizes=curving.FULL_SIZES,
 )
-#: The README's main job: 7 min 12 s on the idle 2-core machine (stop 23) for the ~2 260 runs of
-#: 500 m that ``QUICK.runs()`` counts (the surrogate's 300 extra and 200 fresh samples included).
-#: It keeps SPEC's
+#: The README's main job: 4 min 24 s on the idle 2-core machine (stop 35; 7 min 12 s at stop 23,
+#: before the exponential integrator) for the ~2 260 runs of 500 m that ``QUICK.runs()`` counts
+#: (the surrogate's 300 extra and 200 fresh samples included). It keeps SPEC's
 #: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
 #: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
 #: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
