@@ -23,6 +23,12 @@ def plain(shape: Kernel, constant: float, noise: float) -> Kernel:
     return ConstantKernel(constant) * shape + WhiteKernel(noise, (1e-8, 1e1))
 
 
+def fused_kernel(
+    shape: Kernel, constant: float = 1.0, noise: float = 1e-2
+) -> ScaledKernelWithNoise:
+    return scaled_kernel_with_noise(shape, constant=constant, noise=noise, noise_bounds=(1e-8, 1e1))
+
+
 @pytest.mark.parametrize(("n", "p"), [(1, 2), (2, 6), (37, 6), (120, 6), (64, 3), (30, 9)])
 def test_the_fused_kernel_and_gradient_are_scikit_learns_bit_for_bit(n: int, p: int) -> None:
     rng = np.random.default_rng(n * 10 + p)
@@ -30,7 +36,7 @@ def test_the_fused_kernel_and_gradient_are_scikit_learns_bit_for_bit(n: int, p: 
     length = np.exp(rng.normal(size=p))
     constant, noise = 3 * rng.random(), 0.1 * rng.random()
     for reference, shape in zip(shapes(length), shapes(length), strict=True):
-        fused = scaled_kernel_with_noise(shape, constant=constant, noise=noise)
+        fused = fused_kernel(shape, constant, noise)
         k0, g0 = plain(reference, constant, noise)(x, eval_gradient=True)
         k1, g1 = fused(x, eval_gradient=True)
         assert g1.shape == g0.shape == (n, n, p + 2)
@@ -51,7 +57,7 @@ def test_other_compositions_and_fixed_hyperparameters_take_scikit_learns_path() 
         RBF(length, "fixed"),
     ]
     for shape in cases:
-        fused = scaled_kernel_with_noise(shape)
+        fused = fused_kernel(shape)
         assert fused._fused_shape(x, None, True) is None
         k0, g0 = plain(shape, 1.0, 1e-2)(x, eval_gradient=True)
         k1, g1 = fused(x, eval_gradient=True)
@@ -66,7 +72,7 @@ def test_a_fitted_process_is_the_same_with_either_kernel() -> None:
     test = qmc.LatinHypercube(d=6, seed=4).random(40)
     for reference, shape in zip(shapes(np.full(6, 0.5)), shapes(np.full(6, 0.5)), strict=True):
         fits = []
-        for kernel in (plain(reference, 1.0, 1e-2), scaled_kernel_with_noise(shape)):
+        for kernel in (plain(reference, 1.0, 1e-2), fused_kernel(shape)):
             gp = GaussianProcessRegressor(kernel, normalize_y=True, random_state=0)
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ConvergenceWarning)

@@ -37,7 +37,7 @@ use loco_core::vehicle::channel_set::ChannelSet;
 use loco_core::vehicle::integrator::{Integrator, OdeSystem};
 use loco_core::vehicle::layout::{wheelset, N_DOF, N_WHEELSETS, PITCH, X, Y, YAW};
 use loco_core::vehicle::linearise::linearise;
-use loco_core::vehicle::run::{Recorded, RunOutput, RunSettings, REFERENCE_STEP};
+use loco_core::vehicle::run::{steps_per_sample, Recorded, RunOutput, RunSettings, REFERENCE_STEP};
 use loco_core::vehicle::run_metrics::run_metrics;
 use loco_core::vehicle::scenario::{start_distance, Scenario};
 use loco_core::vehicle::simulation::VehicleSystem;
@@ -74,6 +74,12 @@ enum Scheme {
     Three,
 }
 
+/// Whether a step of `h` (s) divides the output period at `rate` (Hz): the scheme here takes
+/// the step as given, so it must.
+fn whole_steps(rate: f64, h: f64) -> bool {
+    (steps_per_sample(rate, h) as f64 * rate * h - 1.0).abs() <= 1e-9
+}
+
 fn run_full_linear(
     mut system: VehicleSystem,
     y0: Vec<f64>,
@@ -99,7 +105,7 @@ fn run_full_linear(
         .ok()?
         .only(&loco_core::vehicle::run_metrics::METRIC_CHANNELS)
         .ok()?;
-    let steps_per_sample = (1.0 / (settings.output_rate * h)).round() as usize;
+    let steps_per_sample = steps_per_sample(settings.output_rate, h);
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
     let settle_steps = (settings.settle / h).round() as usize;
     let total = settle_steps + (n_samples - 1) * steps_per_sample;
@@ -222,7 +228,7 @@ fn main() {
         ..base.run
     };
     for h in [1e-3, 2e-3, 4e-3, 5e-3] {
-        if ((1.0 / (rate * h)).round() * rate * h - 1.0).abs() > 1e-9 {
+        if !whole_steps(rate, h) {
             continue;
         }
         let result = run_full_linear(
@@ -249,7 +255,7 @@ fn main() {
         }
     }
     for h in [2e-3, 2.5e-3, 3e-3, 4e-3] {
-        if ((1.0 / (rate * h)).round() * rate * h - 1.0).abs() > 1e-9 {
+        if !whole_steps(rate, h) {
             continue;
         }
         for (label, scheme) in [("ETDRK4", Scheme::Four), ("ETD3RK", Scheme::Three)] {

@@ -309,11 +309,8 @@ fn fsd_valve_opening_band<'py>(
         };
         let valve = fsd.hydraulic_valve().expect("checked");
         let closed = fsd.params().closed_module();
-        for &x in &amplitudes {
-            loco_core::error::check_positive("amplitudes", x)?;
-        }
         let mut out = (Vec::new(), Vec::new());
-        for band in valve.opening_bands_hz(&closed, &amplitudes) {
+        for band in valve.opening_bands_hz(&closed, &amplitudes)? {
             let (lo, hi) = band.unwrap_or((f64::NAN, f64::NAN));
             out.0.push(lo);
             out.1.push(hi);

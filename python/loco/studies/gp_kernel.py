@@ -120,12 +120,16 @@ def _sum_over_inputs(d: FloatArray) -> FloatArray:
     layout that scikit-learn sums. That sum adds a pair's few inputs in order; added here one
     input's (n, n) array at a time, it is several times faster. Whether this numpy adds them in
     order is checked once per p on random numbers; if not, its own sum is taken."""
-    p = d.shape[0]
-    if not _sums_in_order(p):
+    if not _sums_in_order(d.shape[0]):
         return np.asarray(np.ascontiguousarray(d.transpose(1, 2, 0)).sum(-1), dtype=np.float64)
+    return _add_in_order(d)
+
+
+def _add_in_order(d: FloatArray) -> FloatArray:
+    """((d[0] + d[1]) + d[2]) + … along the first axis."""
     total = d[0].copy()
-    for k in range(1, p):
-        total += d[k]
+    for term in d[1:]:
+        total += term
     return total
 
 
@@ -134,14 +138,11 @@ def _sums_in_order(p: int) -> bool:
     """Whether numpy's ``sum(-1)`` over a last axis of length p adds its terms in order."""
     rng = np.random.default_rng(p)
     sample = rng.random((64, 64, p)) * np.exp(rng.normal(size=(64, 64, p)) * 8)
-    in_order = sample[..., 0].copy()
-    for k in range(1, p):
-        in_order += sample[..., k]
-    return bool(np.array_equal(sample.sum(-1), in_order))
+    return bool(np.array_equal(sample.sum(-1), _add_in_order(sample.transpose(2, 0, 1))))
 
 
 def scaled_kernel_with_noise(
-    shape: Kernel, *, constant: float = 1.0, noise: float = 1e-2, noise_bounds: Any = (1e-8, 1e1)
+    shape: Kernel, *, constant: float, noise: float, noise_bounds: Any
 ) -> ScaledKernelWithNoise:
     """``ConstantKernel(constant) * shape + WhiteKernel(noise, noise_bounds)`` as a
     :class:`ScaledKernelWithNoise`."""

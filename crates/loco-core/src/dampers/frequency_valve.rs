@@ -424,17 +424,21 @@ impl HydraulicValve {
         Some((lower, upper))
     }
 
-    /// [`Self::opening_band_hz`] for each amplitude of `amplitudes` (m), in order, the amplitudes
-    /// on rayon's threads (each band is its own search, so the bands do not depend on them).
+    /// [`Self::opening_band_hz`] for each amplitude of `amplitudes` (m, each > 0; an error names
+    /// `amplitudes` otherwise), in order, the amplitudes on rayon's threads (each band is its own
+    /// search, so the bands do not depend on them).
     pub fn opening_bands_hz(
         &self,
         closed: &ClosedModule,
         amplitudes: &[f64],
-    ) -> Vec<Option<(f64, f64)>> {
-        amplitudes
+    ) -> Result<Vec<Option<(f64, f64)>>> {
+        for &x in amplitudes {
+            check_positive("amplitudes", x)?;
+        }
+        Ok(amplitudes
             .par_iter()
             .map(|&x| self.opening_band_hz(closed, x))
-            .collect()
+            .collect())
     }
 }
 

@@ -86,12 +86,14 @@ fn the_bands_of_several_amplitudes_are_each_amplitudes_band_in_order() {
     let (valve, closed) = (spec_valve(), spec_closed());
     // From 0.02 mm, where the valve opens nowhere, to 8 mm.
     let amplitudes: Vec<f64> = (0..9).map(|i| 2e-5 * 2f64.powi(i)).collect();
-    let bands = valve.opening_bands_hz(&closed, &amplitudes);
+    let bands = valve.opening_bands_hz(&closed, &amplitudes).unwrap();
     assert_eq!(bands.len(), amplitudes.len());
     for (x, band) in amplitudes.iter().zip(&bands) {
         assert_eq!(*band, valve.opening_band_hz(&closed, *x), "{x} m");
     }
     assert!(bands.iter().any(Option::is_some) && bands.iter().any(Option::is_none));
+    let err = valve.opening_bands_hz(&closed, &[1e-3, -1e-3]).unwrap_err();
+    assert!(err.to_string().contains("amplitudes"), "{err}");
 }
 
 /// Fraction of the last `tail` seconds with the valve open (scale factor 0).
