@@ -46,6 +46,7 @@ class InternalError(LocoError): ...
 # --- contact (contact.rs) -----------------------------------------------------------------------
 
 __all__ += [
+    "LINEAR_PARAMETERS_AMPLITUDE",
     "Profile",
     "WheelsetContact",
     "builtin_profile_named",
@@ -83,6 +84,8 @@ def jm3_tread_profile(
 ) -> Profile: ...
 def contact_setup_defaults() -> list[tuple[str, float]]: ...
 
+LINEAR_PARAMETERS_AMPLITUDE: float
+
 @final
 class WheelsetContact:
     def __new__(
@@ -102,6 +105,7 @@ class WheelsetContact:
     ) -> WheelsetContact: ...
     def solve(self, ys: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]: ...
     def rolling_radius_difference(self, ys: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def linear_parameters(self, amplitude: float = ...) -> list[tuple[str, float]]: ...
 
 # --- conicity (conicity.rs) ---------------------------------------------------------------------
 
