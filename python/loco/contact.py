@@ -29,6 +29,7 @@ from loco import _loco
 from loco._loco import Profile
 
 __all__ = [
+    "LINEAR_PARAMETERS_AMPLITUDE",
     "SETUP_DEFAULTS",
     "ContactGeometry",
     "LinearContactParameters",
@@ -189,6 +190,10 @@ def rolling_radius_difference(
     return wheelset.rolling_radius_difference(ys)
 
 
+#: Default half step of the linear parameters' central differences, m (from the core).
+LINEAR_PARAMETERS_AMPLITUDE: float = _loco.LINEAR_PARAMETERS_AMPLITUDE
+
+
 @dataclass(frozen=True)
 class LinearContactParameters:
     """The linear contact parameters of a wheelset on its rails, in Wickens' notation
@@ -231,7 +236,7 @@ def linear_parameters(
     wheel: Profile,
     rail: Profile,
     *,
-    amplitude: float = _loco.LINEAR_PARAMETERS_AMPLITUDE,
+    amplitude: float = LINEAR_PARAMETERS_AMPLITUDE,
     axle_load: float | None = None,
     right_wheel: Profile | None = None,
     right_rail: Profile | None = None,
