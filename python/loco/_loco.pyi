@@ -497,6 +497,22 @@ class RunScenario:
     @property
     def output_rate(self) -> float: ...
 
+# --- mode rules (mode_rules.rs) -----------------------------------------------------------------
+
+__all__ += ["mode_rules", "select_mode"]
+
+def mode_rules() -> list[
+    tuple[str, tuple[float, float], tuple[float, float], float, float, float]
+]: ...
+def select_mode(
+    rule: str,
+    kinds: list[str],
+    frequencies: NDArray[np.float64],
+    damping_ratios: NDArray[np.float64],
+    shares: NDArray[np.float64],
+    motions: NDArray[np.float64],
+) -> int | None: ...
+
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
