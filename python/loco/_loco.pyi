@@ -46,6 +46,7 @@ class InternalError(LocoError): ...
 # --- contact (contact.rs) -----------------------------------------------------------------------
 
 __all__ += [
+    "LINEAR_PARAMETERS_AMPLITUDE",
     "Profile",
     "WheelsetContact",
     "builtin_profile_named",
@@ -83,6 +84,8 @@ def jm3_tread_profile(
 ) -> Profile: ...
 def contact_setup_defaults() -> list[tuple[str, float]]: ...
 
+LINEAR_PARAMETERS_AMPLITUDE: float
+
 @final
 class WheelsetContact:
     def __new__(
@@ -102,6 +105,7 @@ class WheelsetContact:
     ) -> WheelsetContact: ...
     def solve(self, ys: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]: ...
     def rolling_radius_difference(self, ys: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def linear_parameters(self, amplitude: float = ...) -> list[tuple[str, float]]: ...
 
 # --- conicity (conicity.rs) ---------------------------------------------------------------------
 
@@ -492,6 +496,22 @@ class RunScenario:
     def distance(self) -> float: ...
     @property
     def output_rate(self) -> float: ...
+
+# --- mode rules (mode_rules.rs) -----------------------------------------------------------------
+
+__all__ += ["mode_rules", "select_mode"]
+
+def mode_rules() -> list[
+    tuple[str, tuple[float, float], tuple[float, float], float, float, float]
+]: ...
+def select_mode(
+    rule: str,
+    kinds: list[str],
+    frequencies: NDArray[np.float64],
+    damping_ratios: NDArray[np.float64],
+    shares: NDArray[np.float64],
+    motions: NDArray[np.float64],
+) -> int | None: ...
 
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 

@@ -2,6 +2,7 @@
 //! geometry of a wheelset on a track.
 
 use crate::errors::run_detached;
+use loco_core::contact::linear_parameters::{linear_parameters, DEFAULT_AMPLITUDE};
 use loco_core::contact::{
     builtin_names, builtin_profile, load_profile, rolling_radius_difference, ContactGeometry,
     ContactPoint, ContactSearchParams, ContactWorkspace, Profile, ProfileKind, TrackSetup,
@@ -292,6 +293,33 @@ impl PyWheelsetContact {
         let dr = run_detached(py, move || rolling_radius_difference(g, &ys))?;
         Ok(dr.into_pyarray(py))
     }
+
+    /// The linear contact parameters (`loco_core::contact::linear_parameters`) by central
+    /// differences at ±`amplitude` (m): a dict of `amplitude`, `half_contact_spacing` (m),
+    /// `rolling_radius` (m), `contact_angle` (rad), `conicity`, `contact_angle_parameter`,
+    /// `roll_parameter` (–) and `gravitational_stiffness_per_load` (1/m).
+    #[pyo3(signature = (amplitude=DEFAULT_AMPLITUDE))]
+    fn linear_parameters(
+        &self,
+        py: Python<'_>,
+        amplitude: f64,
+    ) -> PyResult<Vec<(&'static str, f64)>> {
+        let g = &self.geometry;
+        let p = run_detached(py, move || linear_parameters(g, amplitude))?;
+        Ok(vec![
+            ("amplitude", p.amplitude),
+            ("half_contact_spacing", p.half_contact_spacing),
+            ("rolling_radius", p.rolling_radius),
+            ("contact_angle", p.contact_angle),
+            ("conicity", p.conicity),
+            ("contact_angle_parameter", p.contact_angle_parameter),
+            ("roll_parameter", p.roll_parameter),
+            (
+                "gravitational_stiffness_per_load",
+                p.gravitational_stiffness_per_load,
+            ),
+        ])
+    }
 }
 
 /// Names of the per-point quantities, in the order of [`point_values`].
@@ -350,5 +378,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(conical_profiles, m)?)?;
     m.add_function(wrap_pyfunction!(jm3_tread_profile, m)?)?;
     m.add_class::<PyWheelsetContact>()?;
+    // The default half step (m) of the linear contact parameters' central differences.
+    m.add("LINEAR_PARAMETERS_AMPLITUDE", DEFAULT_AMPLITUDE)?;
     Ok(())
 }

@@ -13,6 +13,7 @@ mod dampers;
 mod errors;
 mod frequency_response;
 mod metrics;
+mod mode_rules;
 mod names;
 mod scenario;
 mod schema;
@@ -38,6 +39,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     scenario::register(m)?;
     vehicle_handle::register(m)?;
     vehicle::register(m)?;
+    mode_rules::register(m)?;
     schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;
