@@ -513,6 +513,15 @@ def select_mode(
     motions: NDArray[np.float64],
 ) -> int | None: ...
 
+# --- input ranges (input_ranges.rs) -------------------------------------------------------------
+
+__all__ += ["default_uncertainty_toml", "input_ranges"]
+
+def default_uncertainty_toml() -> str: ...
+def input_ranges(
+    vehicle: Vehicle, text: str | None = None, origin: str | None = None
+) -> list[tuple[str, float, float, float, str, str, str, str]]: ...
+
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [

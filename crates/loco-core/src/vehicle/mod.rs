@@ -46,6 +46,7 @@ pub mod decaying_states;
 pub mod elements;
 pub mod exponential_rk4;
 pub mod frequency_response;
+pub mod input_ranges;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
