@@ -4,7 +4,6 @@ pairs' table and its generated page."""
 from __future__ import annotations
 
 import csv
-import importlib.util
 import math
 from pathlib import Path
 from types import ModuleType
@@ -15,17 +14,13 @@ import loco
 from loco import contact, contact_pairs, profiles
 from loco._loco import conical_profiles
 from loco.cli import main
+from script_modules import load_script
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def _docs_script() -> ModuleType:
-    path = ROOT / "scripts" / "contact_pairs_docs.py"
-    spec = importlib.util.spec_from_file_location("contact_pairs_docs", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_script("contact_pairs_docs")
 
 
 @pytest.mark.parametrize("lam", [0.02, 0.04, 0.15])

@@ -225,11 +225,11 @@ class LinearContactParameters:
 
 def axle_load(vehicle: Any = None) -> float:
     """The mean axle load W (N) of ``vehicle`` (a :class:`loco.Locomotive`, default the study's):
-    its weight, its own wheelsets included, over its four wheelsets."""
+    its weight, its own wheelsets included, over its wheelsets (computed by the core)."""
     from loco.vehicle import Locomotive
 
     loco_ = vehicle if vehicle is not None else Locomotive.default()
-    return float(loco_.total_mass() * loco_["track.gravity"] / 4.0)
+    return float(loco_.native.mean_axle_load())
 
 
 def linear_parameters(
@@ -263,15 +263,8 @@ def linear_parameters(
         flange_back_offset,
         nominal_radius,
     )
-    values = dict(wheelset.linear_parameters(float(amplitude)))
-    load = float("nan")
-    stiffness = float("nan")
-    if axle_load is not None:
-        load = float(axle_load)
-        if not (np.isfinite(load) and load > 0.0):
-            raise _loco.ParameterError(f"axle_load: must be positive and finite, got {axle_load}")
-        stiffness = load * values["gravitational_stiffness_per_load"]
-    return LinearContactParameters(**values, axle_load=load, gravitational_stiffness=stiffness)
+    load = None if axle_load is None else float(axle_load)
+    return LinearContactParameters(**dict(wheelset.linear_parameters(float(amplitude), load)))
 
 
 # The contact API of the issue in one place: conicity (EN 15302) and Hertz/creep live in their own

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Any, Final
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 import xarray
 
@@ -105,41 +106,44 @@ def _figure_accelerations(
     plt.close(fig)
 
 
-def _figure_wheelsets(result: SimulationResult, kinds: dict[str, ChannelInfo], path: Path) -> None:
+def _plot_panels(
+    result: SimulationResult,
+    panels: list[tuple[str, list[tuple[str, npt.NDArray[np.float64]]]]],
+    title: str,
+    path: Path,
+) -> None:
+    """Time histories in panels one above the other: per panel its axis label and its
+    ``(legend, values)`` series."""
     import matplotlib.pyplot as plt
 
-    names = [n for n in result.channel_names if kinds[n].kind == ChannelKind.WHEELSET_MOTION]
-    lateral = [n for n in names if n.endswith("_y")]
-    yaw = [n for n in names if n.endswith("_yaw")]
-    fig, axes = plt.subplots(2, 1, figsize=(10, 6.5), sharex=True, layout="constrained")
-    for ax, group, label, scale in (
-        (axes[0], lateral, "lateral displacement (mm)", 1e3),
-        (axes[1], yaw, "yaw angle (mrad)", 1e3),
-    ):
-        for n in group:
-            ax.plot(result.time, result.channel(n) * scale, lw=0.7, label=n)
+    fig, axes = plt.subplots(len(panels), 1, figsize=(10, 6.5), sharex=True, layout="constrained")
+    for ax, (label, series) in zip(axes, panels, strict=True):
+        for legend, values in series:
+            ax.plot(result.time, values, lw=0.7, label=legend)
         ax.set_ylabel(label)
         ax.legend(fontsize="x-small", ncol=4, loc="upper right")
-    axes[0].set_title("wheelsets (relative to the track)")
+    axes[0].set_title(title)
     axes[-1].set_xlabel("time (s)")
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def _figure_wheelsets(result: SimulationResult, kinds: dict[str, ChannelInfo], path: Path) -> None:
+    names = [n for n in result.channel_names if kinds[n].kind == ChannelKind.WHEELSET_MOTION]
+    panels = [
+        (label, [(n, result.channel(n) * 1e3) for n in names if n.endswith(suffix)])
+        for suffix, label in (("_y", "lateral displacement (mm)"), ("_yaw", "yaw angle (mrad)"))
+    ]
+    _plot_panels(result, panels, "wheelsets (relative to the track)", path)
 
 
 def _figure_curving(result: SimulationResult, kinds: dict[str, ChannelInfo], path: Path) -> None:
-    import matplotlib.pyplot as plt
-
     wheel = [n for n in result.channel_names if kinds[n].kind == ChannelKind.WHEEL]
-    fig, axes = plt.subplots(2, 1, figsize=(10, 6.5), sharex=True, layout="constrained")
-    for ax, (suffix, label) in zip(axes, _CURVING_QUANTITIES, strict=True):
-        for n in (n for n in wheel if n.endswith(suffix)):
-            ax.plot(result.time, result.channel(n), lw=0.6, label=n.removesuffix(suffix))
-        ax.set_ylabel(label)
-        ax.legend(fontsize="x-small", ncol=4, loc="upper right")
-    axes[0].set_title("wheel forces on the curve")
-    axes[-1].set_xlabel("time (s)")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    panels = [
+        (label, [(n.removesuffix(suffix), result.channel(n)) for n in wheel if n.endswith(suffix)])
+        for suffix, label in _CURVING_QUANTITIES
+    ]
+    _plot_panels(result, panels, "wheel forces on the curve", path)
 
 
 def write_simulation(

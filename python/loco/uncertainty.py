@@ -25,7 +25,7 @@ from threadpoolctl import threadpool_limits
 from loco import _loco
 from loco.profiles import jm3
 from loco.schema import parameter_schema
-from loco.simulation import Scenario
+from loco.simulation import SCENARIOS, Scenario
 from loco.stability import critical_speed, eigen
 from loco.vehicle import Locomotive
 
@@ -93,14 +93,13 @@ OUTPUTS: dict[str, Output] = {
 #: The study speed of the screened eigen analyses, m/s.
 SPEED = 200 / 3.6
 
-#: The built-in wheel of each scenario the outputs use.
-_SCENARIO_WHEELS = {"S_low": "jm3-thin-flange", "S_norm": "jm3-new", "S_high": "jm3-worn"}
+#: The built-in wheel of each scenario the outputs use (the core's presets).
+_SCENARIO_WHEELS = {name: wheel for name, (wheel, _rail) in SCENARIOS.items()}
 
-#: The built-in JM3 wheels' construction parameters (:func:`loco.profiles.jm3`).
+#: The built-in JM3 wheels' construction parameters (:func:`loco.profiles.jm3`), from the core.
 _JM3_STATES = {
-    "jm3-new": {"tread_slope": 1 / 20, "band_radius": 0.5, "flange_thickness": 0.033},
-    "jm3-thin-flange": {"tread_slope": 1 / 28, "band_radius": 0.5, "flange_thickness": 0.026},
-    "jm3-worn": {"tread_slope": 1 / 10, "band_radius": 0.124, "flange_thickness": 0.033},
+    name: {"tread_slope": slope, "band_radius": band, "flange_thickness": flange}
+    for name, slope, band, flange in _loco.jm3_builtin_states()
 }
 
 
@@ -163,7 +162,7 @@ def evaluate(
             wheel = _SCENARIO_WHEELS[o.scenario]
             if wheel in wheels:
                 settings["wheel"] = jm3(**wheels[wheel])
-                settings["rail"] = "cn60"
+                settings["rail"] = SCENARIOS[o.scenario][1]
             else:
                 settings["name"] = o.scenario
             scenario = Scenario(speed=SPEED, yaw_damper=o.damper, **settings)

@@ -24,12 +24,12 @@ pub fn builtin_names() -> &'static [&'static str] {
 
 /// The built-in profile called `name`; the error lists the available names.
 pub fn builtin_profile(name: &str) -> Result<Profile> {
+    if let Some(state) = jm3::builtin_state(name) {
+        return jm3::jm3(name, &state);
+    }
     match name {
         "cn60" => cn60::cn60(),
         "cn60-gauge-ground" => cn60::cn60_gauge_ground(),
-        "jm3-new" => jm3::jm3(name, &jm3::NEW),
-        "jm3-thin-flange" => jm3::jm3(name, &jm3::THIN_FLANGE),
-        "jm3-worn" => jm3::jm3(name, &jm3::WORN),
         _ => Err(LocoError::param(
             "name",
             format!(

@@ -85,12 +85,7 @@ fn scenario_input(key: &str) -> Option<(f64, (f64, f64), &'static str)> {
         return Some((TrackSetup::default().rail_inclination, (0.0, 0.1), "rad"));
     }
     let (profile, field) = key.strip_prefix("wheel.")?.split_once('.')?;
-    let state: TreadState = match profile {
-        "jm3-new" => jm3::NEW,
-        "jm3-thin-flange" => jm3::THIN_FLANGE,
-        "jm3-worn" => jm3::WORN,
-        _ => return None,
-    };
+    let state: TreadState = jm3::builtin_state(profile)?;
     match field {
         "tread_slope" => Some((state.tread_slope, (MIN_CONE_SLOPE, MAX_CONE_SLOPE), "1")),
         "band_radius" => Some((state.band_radius, (MIN_BAND_RADIUS, f64::INFINITY), "m")),
