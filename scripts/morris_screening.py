@@ -3,9 +3,10 @@ the damping of the S_low carbody mode and the S_high bogie mode with YD1 and YD2
 linear critical speeds, 20 trajectories on a 4-level grid, seed 0, on a process pool.
 
 Writes into ``--out`` (default ``docs/screening``): ``morris.csv`` (μ*, μ, σ and the 95 %
-bootstrap interval of μ* per input and output), ``morris_samples.csv`` (every sample's inputs and
-outputs, so that a test can re-evaluate a few of them and re-run the analysis: the committed table
-is what the model gives now), ``morris.json`` (settings, loco version, wall time, the workers'
+bootstrap interval of μ* per input and output), ``morris_outputs.csv`` (every point's outputs,
+in the order of ``loco.uncertainty.morris_samples`` with these settings, so that a test can
+re-evaluate a few points and re-run the analysis: the committed table is what the model gives
+now), ``morris.json`` (settings, loco version, wall time, the workers'
 CPU time) and ``morris.png`` (μ* against σ, the five largest inputs of each output named).
 Usage: ``python scripts/morris_screening.py [--out docs/screening] [--workers 2]``.
 """
@@ -31,15 +32,34 @@ LEVELS = 4
 SEED = 0
 
 
+def analyse_samples(out: Path, table: pd.DataFrame, outputs: list[str]) -> pd.DataFrame:
+    """The screening table and figure from the outputs file in ``out`` (the points are the
+    sampler's, from the settings)."""
+    y = pd.read_csv(out / "morris_outputs.csv")[outputs].to_numpy()
+    x = uncertainty.morris_samples(None, outputs, TRAJECTORIES, SEED, LEVELS)
+    result = uncertainty.analyse(table, x, y, outputs, SEED)
+    result.to_csv(out / "morris.csv", index=False, float_format="%.6g")
+    uncertainty.plot_morris(result, path=out / "morris.png")
+    return result
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=Path("docs/screening"))
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    parser.add_argument(
+        "--analyse-only",
+        action="store_true",
+        help="re-analyse the outputs file in --out (morris_outputs.csv) without running the model",
+    )
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     vehicle = loco.Locomotive.default()
     outputs = list(uncertainty.OUTPUTS)
     table = uncertainty.screened_inputs(uncertainty.ranges(vehicle), outputs)
+    if args.analyse_only:
+        analyse_samples(args.out, table, outputs)
+        return
     samples: dict[int, list[float]] = {}
     start = time.perf_counter()
     with ProcessPoolExecutor(max_workers=args.workers) as pool:
@@ -57,13 +77,11 @@ def main() -> None:
     # cores as workers is about this over the workers.
     cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu_s = cpu.ru_utime + cpu.ru_stime
-    result.to_csv(args.out / "morris.csv", index=False, float_format="%.6g")
-    x = uncertainty.morris_samples(vehicle, outputs, TRAJECTORIES, SEED, LEVELS)
-    frame = pd.DataFrame(x, columns=list(table["key"]))
-    for j, name in enumerate(outputs):
-        frame[name] = [samples[i][j] for i in range(len(frame))]
-    frame.to_csv(args.out / "morris_samples.csv", index=False, float_format="%.17g")
-    uncertainty.plot_morris(result, path=args.out / "morris.png")
+    frame = pd.DataFrame([samples[i] for i in range(len(samples))], columns=outputs)
+    frame.to_csv(args.out / "morris_outputs.csv", index=False, float_format="%.17g")
+    # The committed table is the analysis of the committed samples (as --analyse-only makes it).
+    analysed = analyse_samples(args.out, table, outputs)
+    pd.testing.assert_frame_equal(analysed, result, check_exact=False, rtol=1e-9)
     meta = {
         "loco_version": loco.__version__,
         "trajectories": TRAJECTORIES,

@@ -106,33 +106,40 @@ def morris_section() -> list[str]:
         return []
     table = pd.read_csv(path)
     meta = json.loads((RESULTS / "morris.json").read_text(encoding="utf-8"))
+    cpu = (
+        f" ({meta['worker_cpu_time_s']:.0f} s of their CPU time)"
+        if "worker_cpu_time_s" in meta
+        else " (on a machine shared with other work: the wall time is an upper bound)"
+    )
     lines = [
         "## Which estimates matter",
         "",
         f"Morris screening (`loco.uncertainty.morris`): {meta['trajectories']} trajectories on",
         f"a {meta['levels']}-level grid (seed {meta['seed']}) over the {meta['inputs']} ranged",
         f"inputs that can change the outputs, {meta['samples']} evaluations of the linearised",
-        f"vehicle; {meta['wall_time_s']:.0f} s on {meta['workers']} worker processes"
-        f" ({meta['worker_cpu_time_s']:.0f} s of their CPU time). μ* is the mean absolute change",
+        f"vehicle; {meta['wall_time_s']:.0f} s on {meta['workers']} worker processes{cpu}.",
+        "μ* is the mean absolute change",
         "of the output for a step across an input's whole range, σ the spread of those changes",
-        "(interactions, nonlinearity); a trajectory with an output the model cannot give (no mode",
-        "passes the rule, no JM3 tread at a corner of the wheel's ranges) is left out of that",
-        "output; a vehicle stable up to the search limit of 110 m/s counts at that limit.",
+        "(interactions, nonlinearity). A step of a trajectory whose output the model cannot give",
+        "at one of its points (no mode passes the rule, no JM3 tread at a corner of the wheel's",
+        "ranges) gives no effect: the tables say how many steps of each input did (of",
+        f"{meta['trajectories']}). A vehicle stable up to the search limit of 110 m/s counts at",
+        "that limit.",
         "",
         "![Morris screening](screening/morris.png)",
         "",
     ]
     for output, g in table.groupby("output", sort=False):
         top = g.sort_values("mu_star", ascending=False).head(TOP)
-        used = int(g["trajectories_used"].iloc[0])
+        share = g["effects"].sum() / (meta["trajectories"] * len(g))
         lines += [
-            f"**{output}** ({used} of {meta['trajectories']} trajectories)",
+            f"**{output}** ({share:.0%} of the steps gave an effect)",
             "",
-            "| input | μ* | ± (95 %) | σ |",
-            "|---|---|---|---|",
+            "| input | μ* | ± (95 %) | σ | steps |",
+            "|---|---|---|---|---|",
             *(
                 f"| `{r['input']}` | {r['mu_star']:.3g} | {r['mu_star_conf']:.2g} | "
-                f"{r['sigma']:.3g} |"
+                f"{r['sigma']:.3g} | {int(r['effects'])} |"
                 for _, r in top.iterrows()
             ),
             "",

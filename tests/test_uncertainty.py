@@ -3,6 +3,7 @@
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import loco
@@ -110,3 +111,30 @@ def test_an_infeasible_wheel_corner_is_nan_not_an_error() -> None:
         loco.Locomotive.default(), keys, values, ["S_high_bogie_zeta_YD1", "S_low_carbody_zeta_YD1"]
     )
     assert np.isnan(out[0]) and np.isfinite(out[1])
+
+
+def test_the_committed_screening_is_what_the_model_gives_now() -> None:
+    # docs/screening (scripts/morris_screening.py): the first points of the first trajectory
+    # re-evaluated as the screening did them, and the committed table is the analysis of the
+    # committed outputs.
+    from script_modules import load_script
+
+    script = load_script("morris_screening")
+    outputs = list(uncertainty.OUTPUTS)
+    results = Path(__file__).parents[1] / "docs" / "screening"
+    stored = pd.read_csv(results / "morris_outputs.csv")[outputs].to_numpy()
+    x = uncertainty.morris_samples(None, outputs, script.TRAJECTORIES, script.SEED, script.LEVELS)
+    table = uncertainty.screened_inputs(uncertainty.ranges(), outputs)
+    vehicle = loco.Locomotive.default()
+    nominal = uncertainty.evaluate(vehicle, list(table["key"]), list(table["nominal"]), outputs)
+    guesses = {n: v for n, v in zip(outputs, nominal, strict=True) if "critical_speed" in n}
+    points = [[float(v) for v in row] for row in x[:3]]
+    fresh = uncertainty._evaluate_trajectory(
+        (vehicle, list(table["key"]), points, outputs, guesses)
+    )
+    np.testing.assert_allclose(np.array(fresh), stored[:3], rtol=1e-6, equal_nan=True)
+    committed = pd.read_csv(results / "morris.csv")
+    analysed = uncertainty.analyse(table, x, stored, outputs, script.SEED)
+    pd.testing.assert_frame_equal(
+        analysed[committed.columns], committed, check_exact=False, rtol=1e-5, check_dtype=False
+    )

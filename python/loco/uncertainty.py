@@ -24,6 +24,7 @@ from threadpoolctl import threadpool_limits
 
 from loco import _loco
 from loco.dampers import PRESETS, Damper, maxwell
+from loco.elementary_effects import elementary_effects
 from loco.profiles import jm3
 from loco.schema import parameter_schema
 from loco.simulation import SCENARIOS, Scenario
@@ -33,6 +34,7 @@ from loco.vehicle import Locomotive
 __all__ = [
     "OUTPUTS",
     "Output",
+    "analyse",
     "evaluate",
     "morris",
     "plot_morris",
@@ -298,19 +300,17 @@ def morris(
     :data:`OUTPUTS`. Returns one row per input and output: ``mu_star`` (mean absolute
     elementary effect, in the output's unit for a step across the whole range), ``mu``,
     ``sigma`` (their spread: interactions and nonlinearity), ``mu_star_conf`` (95 % bootstrap),
-    and ``trajectories_used``; a trajectory with a NaN output (the rule picks no mode there) is
-    left out of that output. ``executor`` is any :class:`concurrent.futures.Executor` (a process
+    and ``effects`` (the steps that gave one: a step touching a point with a NaN output, where
+    the rule picks no mode, gives none; :mod:`loco.elementary_effects`). ``executor`` is any
+    :class:`concurrent.futures.Executor` (a process
     pool, or ``distributed.Client.get_executor()`` for a Dask cluster); default: this process,
     one trajectory after the other (a trajectory is one task: its points run in order, each
     critical speed searched from the previous point's). Results are the same whichever executor
     runs the trajectories."""
-    from SALib.analyze import morris as analyze
-
     vehicle = vehicle or Locomotive.default()
     names = _checked_outputs(outputs)
     table = screened_inputs(ranges(vehicle, ranges_file), names)
     keys = list(table["key"])
-    problem = _problem(table)
     x = morris_samples(vehicle, names, trajectories, seed, levels, ranges_file)
     # The nominal vehicle's critical speeds start each sample's search (same result within
     # the search's tolerance, in about half the linearisations).
@@ -346,26 +346,22 @@ def morris(
             bar.update(len(rows))
     if bar is not None:
         bar.close()
+    return analyse(table, x, y, names, seed)
+
+
+def analyse(
+    table: pd.DataFrame, x: np.ndarray, y: np.ndarray, outputs: Sequence[str], seed: int = 0
+) -> pd.DataFrame:
+    """The screening table of :func:`morris` from its points ``x`` (the inputs of ``table``,
+    :func:`screened_inputs`) and outputs ``y`` (one column per output, NaN where the model
+    gives none): :func:`loco.elementary_effects.elementary_effects` per output."""
     frames = []
-    for j, name in enumerate(names):
-        complete = np.isfinite(y[:, j].reshape(trajectories, per)).all(axis=1)
-        used = np.repeat(complete, per)
-        result = analyze.analyze(
-            problem, x[used], y[used, j], num_levels=levels, seed=seed, print_to_console=False
+    for j, name in enumerate(outputs):
+        frame = elementary_effects(
+            x, y[:, j], table["low"], table["high"], list(table["key"]), seed=seed
         )
-        frames.append(
-            pd.DataFrame(
-                {
-                    "output": name,
-                    "input": keys,
-                    "mu_star": result["mu_star"],
-                    "mu": result["mu"],
-                    "sigma": result["sigma"],
-                    "mu_star_conf": result["mu_star_conf"],
-                    "trajectories_used": int(complete.sum()),
-                }
-            )
-        )
+        frame.insert(0, "output", name)
+        frames.append(frame)
     return pd.concat(frames, ignore_index=True)
 
 
