@@ -147,6 +147,73 @@ def morris_section() -> list[str]:
     return lines
 
 
+def plausible_section() -> list[str]:
+    path = RESULTS / "plausible.json"
+    if not path.exists():
+        return []
+    meta = json.loads(path.read_text(encoding="utf-8"))
+    fraction = pd.read_csv(RESULTS / "plausible_fraction.csv")
+    fsd = pd.read_csv(RESULTS / "plausible_fsd.csv")
+    importance = pd.read_csv(RESULTS / "plausible_importance.csv")
+    lines = [
+        "## The verdict's probability over plausible locomotives",
+        "",
+        f"{meta['n']} plausible locomotives (`loco.studies.premise_probability`): the default",
+        "vehicle with every ranged vehicle input drawn by a Latin hypercube (seed",
+        f"{meta['seed']}), each on one of the S_low pairs {', '.join(meta['s_low_pairs'])} (equal",
+        f"shares, a judgement) and on S_high ({meta['s_high_pair']}); YD1, YD2, FSD and FSD-H,",
+        f"{meta['distance_m']:g} m at {meta['speed_kmh']:g} km/h after {meta['lead_in_m']:g} m of",
+        f"lead-in, on {meta['n_tracks']} tracks: {meta['failed_runs']} failed runs;",
+        f"{meta['wall_time_s']:.0f} s. The rule, stated before the runs: {meta['premise_rule']}.",
+        "",
+        "| S_low pair | rule | locomotives | share | 95 % interval (Wilson) |",
+        "|---|---|---|---|---|",
+        *(
+            f"| {r['pair']} | {r['rule']} | {int(r['k'])} of {int(r['n'])} | "
+            f"{r['fraction']:.0%} | {r['low']:.0%}–{r['high']:.0%} |"
+            for _, r in fraction.iterrows()
+        ),
+        "",
+        "Inside the set where the premise holds, each FSD against the better fixed damper of",
+        "each scenario (its judging metric over the fixed damper's, per locomotive):",
+        "",
+        "| damper | scenario | against | locomotives | median ratio | share at or below 1 |",
+        "|---|---|---|---|---|---|",
+        *(
+            f"| {r['damper']} | {r['scenario']} | {r['better_fixed']} | {int(r['n'])} | "
+            + ("–" if pd.isna(r["median_ratio"]) else f"{r['median_ratio']:.2f}")
+            + " | "
+            + (
+                "–"
+                if pd.isna(r["share_at_or_below"])
+                else f"{r['share_at_or_below']:.0%} ({r['low']:.0%}–{r['high']:.0%})"
+            )
+            + " |"
+            for _, r in fsd.iterrows()
+        ),
+        "",
+    ]
+    if importance.empty:
+        lines += ["No classifier: the premise holds on all or none of them.", ""]
+        return lines
+    lines += [
+        'Which inputs decide it: a random forest classifies "premise holds" from the inputs',
+        "and the pair, trained on 75 % of the locomotives; on the other 25 % it is right for",
+        f"{meta['classifier_accuracy']:.0%} of them (always answering the majority class would",
+        f"be right for {meta['majority_share']:.0%}). The inputs whose shuffling costs it most",
+        "accuracy on the held-out locomotives (permutation importance, mean ± sd of 20):",
+        "",
+        "| input | importance | ± |",
+        "|---|---|---|",
+        *(
+            f"| `{r['input']}` | {r['importance']:.3f} | {r['std']:.3f} |"
+            for _, r in importance.head(8).iterrows()
+        ),
+        "",
+    ]
+    return lines
+
+
 def render() -> str:
     lines = [
         "# The premise: where it holds, and which estimates decide it",
@@ -160,12 +227,14 @@ def render() -> str:
         "inputs ([input uncertainty](uncertainty.md)) move the modes the premise is about.",
         "",
         *premise_section(),
+        *plausible_section(),
         *morris_section(),
         "## Reproduce",
         "",
         "```",
         "python scripts/premise_map.py       # the map, minutes",
         "python scripts/morris_screening.py  # the screening, minutes",
+        "python scripts/premise_probability.py  # the plausible locomotives, minutes",
         "python scripts/premise_docs.py --write",
         "```",
         "",

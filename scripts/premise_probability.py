@@ -38,11 +38,7 @@ def main() -> None:
     )
     wall = time.perf_counter() - start
     usage = resource.getrusage(resource.RUSAGE_SELF)
-    frame = result.inputs.copy()
-    frame["s_low_pair"] = result.pairs
-    for column in result.metrics:
-        frame[column] = result.metrics[column]
-    frame["premise"] = pp.premise_holds(result.metrics)
+    frame = pp.to_frame(result)
     frame.to_csv(args.out / "plausible.csv", index=False, float_format="%.6g")
     summary = pp.summarise(result)
     summary["fraction"].to_csv(

@@ -2,6 +2,8 @@
 low damping lets the bogies hunt on high conicity. These pin the map's sign changes, the
 conclusions the study's documentation draws from it."""
 
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -91,3 +93,46 @@ def test_the_premise_page_is_generated_from_the_committed_results() -> None:
     assert docs.PAGE.read_text(encoding="utf-8") == docs.render(), (
         "docs/premise.md is out of date: run python scripts/premise_docs.py --write"
     )
+
+
+def test_the_premise_case_is_new_wheels_on_rails_inclined_1_in_20() -> None:
+    from loco.contact_pairs import ContactPair
+    from loco.studies import premise_case
+
+    table = premise_case.candidates()
+    assert premise_case.choose_pair(table) == ContactPair("jm3-new", "cn60", 20)
+    # No pair qualifies: no premise case.
+    assert premise_case.choose_pair(table.assign(premise=False)) is None
+
+
+def test_the_premise_section_reads_the_rule_from_the_tracks(tmp_path: Path) -> None:
+    from loco.studies import premise_report
+
+    rows = []
+    # S_low is judged by the A_yc PSD peak, S_high by the A_yb peak: each scenario's rows
+    # carry one value in both columns.
+    for scenario, values in (
+        ("S_low", {"YD1": 0.01, "YD2": 0.03}),
+        ("S_high", {"YD1": 6.0, "YD2": 2.0}),
+    ):
+        for damper, v in values.items():
+            for track in range(3):
+                rows.append(
+                    {
+                        "scenario": scenario,
+                        "damper": damper,
+                        "track": track,
+                        "status": 0,
+                        "psd_peak": v,
+                        "ayb_peak_lp": v,
+                        "wy_max": 2.0,
+                    }
+                )
+    path = tmp_path / "fsd_tracks.csv"
+    pd.DataFrame(rows).to_csv(path, index=False)
+    assert premise_report.psd_ratios(pd.read_csv(path)) == pytest.approx(
+        {"S_low": 3.0, "S_high": 3.0}
+    )
+    text = "\n".join(premise_report.premise_section(path, None))
+    assert "On the default vehicle: yes" in text
+    assert "docs/premise.md" in text

@@ -48,6 +48,8 @@ STAGES = {
     "fsd_design": ["fsd_design.png", "fsd_design_population.csv", "fsd_design_front.csv",
                    "fsd_design_conicity.csv", "fsd_design_conicity_summary.csv",
                    "fsd_design_critical_speeds.csv", "fsd_design.json"],
+    "premise_case": ["premise_case_candidates.csv", "fsd_summary.csv", "fsd_tracks.csv",
+                     "fsd_psd.png"],
     "curving": ["curving.png", "curving.csv", "curving.json"],
 }  # fmt: skip
 ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
@@ -86,9 +88,12 @@ def test_report(run: tuple[Path, str]) -> None:
     assert len(figures) >= sum(n.endswith(".png") for f in STAGES.values() for n in f)
     for link in links:
         assert (out / link).is_file(), link
-    # The first section is the verdict, computed from the damper comparison's tracks.
+    # The first section asks whether the premise holds (the default vehicle, the premise case),
+    # the second is the verdict, computed from the damper comparison's tracks.
     sections = [line for line in text.splitlines() if line.startswith("## ")]
-    assert sections[0].startswith("## Verdict: which yaw damper holds which scenario")
+    assert sections[0] == "## Does the premise hold?"
+    assert "**The premise case: S_low on jm3-new on cn60 1:20**" in text
+    assert sections[1].startswith("## Verdict: which yaw damper holds which scenario")
     computed = verdict_from_csv(out / "fsd_comparison" / "fsd_tracks.csv").markdown()
     assert "\n".join(computed).strip() in text
     assert "**S_low**, judged by `wy_max`" in text and "**S_high**, judged by `ayb_peak_lp`" in text
@@ -96,8 +101,9 @@ def test_report(run: tuple[Path, str]) -> None:
     # which surrogate the optimisation used, and still the SPEC network's R².
     rankings = re.findall(r"ranking (not |partly )?significant at 0.05 over 2 tracks", text)
     # 4 in the comparison's section (2 scenarios x PSD peak and judging metric) and the 2 of the
-    # judging metrics again in the verdict.
-    assert len(rankings) == 4 + 2
+    # judging metrics again in the verdict; as many in the premise case's section, and its
+    # S_low rankings (PSD peak, W_y) in the premise section.
+    assert len(rankings) == 4 + 2 + 4 + 2
     assert "Surrogate used by the surrogate Sobol' indices and NSGA-II: W_y: **" in text
     assert "SPEC network (10 Gaussian units) mean held-out R²: W_y " in text
     meta = json.loads((out / "reproduce.json").read_text())

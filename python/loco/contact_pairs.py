@@ -39,6 +39,11 @@ class ContactPair:
         """The rail inclination, rad."""
         return math.atan(1.0 / self.cant)
 
+    @property
+    def label(self) -> str:
+        """``"<wheel> on <rail> 1:<cant>"``."""
+        return f"{self.wheel} on {self.rail} 1:{self.cant}"
+
 
 #: The study's three pairs, then the low-conicity pairs of its field problem.
 PAIRS: tuple[ContactPair, ...] = (

@@ -25,7 +25,10 @@ inputs is skipped on a rerun, ``--force`` runs it again):
 10. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
     and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
     preset in its ``SIZES``).
-11. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
+11. ``premise_case``: the damper comparison of stage 9 with S_low on the low-conicity pair on
+    which the default vehicle has the study's premise, chosen by the rule of
+    :mod:`loco.studies.premise_case` before any of its runs.
+12. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
     600–7000 m at 0–150 mm cant deficiency, ΣY, Y/Q and Y_qst by EN 14363
     (:mod:`loco.studies.curving`).
 
@@ -79,11 +82,13 @@ from loco.studies import (
     fsd_design_stage,
     parameter_stages,
     parameter_study,
+    premise_case,
     speed_sweep,
     surrogate_holdout,
     surrogate_samples,
     surrogate_validation,
 )
+from loco.studies.premise_report import premise_section
 from loco.studies.report import StudyRecord, save_json, write_report
 from loco.studies.stages import DataFile, Demand, Runtime, Stage, StageRunner
 from loco.studies.verdict import verdict_from_csv
@@ -333,6 +338,14 @@ def stages(
         fsd_design_stage.FsdDesignStage(
             design_sizes, speed_kmh=sizes.speed_kmh, seed=seed, integrator=integrator
         ),
+        premise_case.PremiseCaseStage.chosen(
+            speed_kmh=sizes.speed_kmh,
+            distance=sizes.distance,
+            lead_in=fsd_comparison.LEAD_IN,
+            seed=seed,
+            n_tracks=sizes.n_tracks,
+            integrator=integrator,
+        ),
     ]
     c = sizes.curving_sizes
     if c is not None:
@@ -425,13 +438,35 @@ def reproduce(
     )
 
 
-def _verdict(records: list[StudyRecord]) -> list[str]:
-    """The report's first section, computed from the damper comparison's per-track table."""
+def _tracks_table(records: list[StudyRecord], stage: str) -> Path | None:
+    """The per-track table of the damper comparison stage ``stage``, when it wrote one."""
     for record in records:
+        if record.name != stage:
+            continue
         for table in record.tables:
             if Path(table).name == "fsd_tracks.csv" and Path(table).is_file():
-                return verdict_from_csv(table).markdown()
-    return ["## Verdict", "", "Not available: the damper comparison stage wrote no table.", ""]
+                return Path(table)
+    return None
+
+
+def _verdict(records: list[StudyRecord]) -> list[str]:
+    """The report's first sections: "Does the premise hold?" (the study's and the premise
+    case's damper comparisons, :mod:`loco.studies.premise_report`), then the verdict, computed
+    from the damper comparison's per-track table."""
+    study = _tracks_table(records, fsd_comparison.FsdComparisonStage.name)
+    case = next(
+        (r for r in records if r.name == premise_case.PremiseCaseStage.name and r.tables), None
+    )
+    premise = premise_section(study, None if case is None else Path(case.tables[0]).parent)
+    if study is None:
+        return [
+            *premise,
+            "## Verdict",
+            "",
+            "Not available: the damper comparison stage wrote no table.",
+            "",
+        ]
+    return [*premise, *verdict_from_csv(study).markdown()]
 
 
 PREAMBLE = (

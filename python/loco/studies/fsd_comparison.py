@@ -28,6 +28,7 @@ import pandas as pd
 import loco
 from loco import dampers
 from loco.channels import ChannelKind, Metric
+from loco.contact_pairs import ContactPair
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
@@ -275,6 +276,8 @@ class FsdComparisonStage(Stage):
         Yaw damper laws by name (default :data:`DAMPERS`).
     integrator : str
         Integration scheme of every run (:data:`loco.simulation.INTEGRATORS`), at its own step.
+    s_low_pair : ContactPair, optional
+        The wheel/rail pair of the low-conicity case (default: the study's S_low).
     """
 
     name: ClassVar[str] = "fsd_comparison"
@@ -286,6 +289,7 @@ class FsdComparisonStage(Stage):
     vehicle: loco.Locomotive | None = None
     damper_set: Mapping[str, dampers.Damper] = field(default_factory=_dampers)
     integrator: str = loco.Scenario.integrator
+    s_low_pair: ContactPair | None = None
 
     def settings(self) -> dict[str, Any]:
         """The comparison's settings as its JSON file and report show them."""
@@ -302,6 +306,7 @@ class FsdComparisonStage(Stage):
             "cases": [list(c) for c in CASES],
             "dampers": {k: dampers.describe(d) for k, d in self.damper_set.items()},
             "vehicle_overrides": {} if self.vehicle is None else dict(self.vehicle.overrides),
+            "s_low_pair": None if self.s_low_pair is None else self.s_low_pair.label,
         }
 
     def demand(self) -> Demand:
@@ -325,9 +330,15 @@ def run_fsd_comparison(stage: FsdComparisonStage, runtime: Runtime | None = None
     start = time.perf_counter()
     runs = {}
     for scenario_name, label, channel in CASES:
+        pair = stage.s_low_pair if scenario_name == "S_low" else None
+        where: dict[str, Any] = (
+            {"name": scenario_name}
+            if pair is None
+            else {"wheel": pair.wheel, "rail": pair.rail, "rail_inclination": pair.inclination}
+        )
         for name, law in stage.damper_set.items():
             scenario = loco.Scenario(
-                name=scenario_name,
+                **where,
                 speed=stage.speed_kmh / 3.6,
                 distance=stage.distance,
                 lead_in=stage.lead_in,

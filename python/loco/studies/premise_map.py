@@ -120,7 +120,7 @@ def _pair_case(pair: ContactPair) -> _Case:
     wheel, rail = builtin(pair.wheel), builtin(pair.rail)
     lam = contact.linear_parameters(wheel, rail, inclination=pair.inclination).conicity
     settings = (("wheel", pair.wheel), ("rail", pair.rail), ("rail_inclination", pair.inclination))
-    return _Case("pair", f"{pair.wheel} on {pair.rail} 1:{pair.cant}", lam, settings)
+    return _Case("pair", pair.label, lam, settings)
 
 
 def _cases(families: Sequence[str], conicities: Sequence[float]) -> list[_Case]:

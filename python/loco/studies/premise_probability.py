@@ -47,11 +47,13 @@ __all__ = [
     "S_HIGH_PAIR",
     "S_LOW_PAIRS",
     "Plausible",
+    "from_frame",
     "premise_holds",
     "premise_sensitivity",
     "run_plausible",
     "sample_locomotives",
     "summarise",
+    "to_frame",
 ]
 
 #: The low-conicity S_low pairs: the study's thin-flange JM3 on CN60 1:40, the same on rail
@@ -77,10 +79,6 @@ PREMISE_RULE = (
     f"S_low A_yc PSD peak with YD2 at least {FACTOR:g} times that with YD1, and S_high A_yb peak "
     f"(10 Hz low-passed) with YD1 at least {FACTOR:g} times that with YD2 (track means)"
 )
-
-
-def _label(pair: ContactPair) -> str:
-    return f"{pair.wheel} on {pair.rail} 1:{pair.cant}"
 
 
 def sampled_inputs(vehicle: loco.Locomotive | None = None) -> pd.DataFrame:
@@ -113,7 +111,7 @@ def sample_locomotives(
     unit = qmc.LatinHypercube(d=len(table), seed=seed).random(n)
     values = qmc.scale(unit, table["low"].to_numpy(float), table["high"].to_numpy(float))
     rng = np.random.default_rng(seed)
-    pairs = [_label(S_LOW_PAIRS[i % len(S_LOW_PAIRS)]) for i in rng.permutation(n)]
+    pairs = [S_LOW_PAIRS[i % len(S_LOW_PAIRS)].label for i in rng.permutation(n)]
     return pd.DataFrame(values, columns=list(table["key"])), pairs
 
 
@@ -149,7 +147,7 @@ def run_plausible(
     ``loco.run_batch`` (a Dask cluster, a resumable store)."""
     inputs, pairs = sample_locomotives(n, seed, vehicle)
     names = list(inputs.columns)
-    by_pair = {_label(p): p for p in S_LOW_PAIRS}
+    by_pair = {p.label: p for p in S_LOW_PAIRS}
     metrics = pd.DataFrame(index=range(n), dtype=float)
     failed = 0
     groups: list[tuple[str, ContactPair, np.ndarray]] = [
@@ -198,8 +196,8 @@ def run_plausible(
         "distance_m": distance,
         "lead_in_m": LEAD_IN,
         "premise_rule": PREMISE_RULE,
-        "s_low_pairs": [_label(p) for p in S_LOW_PAIRS],
-        "s_high_pair": _label(S_HIGH_PAIR),
+        "s_low_pairs": [p.label for p in S_LOW_PAIRS],
+        "s_high_pair": S_HIGH_PAIR.label,
     }
     return Plausible(inputs, pairs, metrics, failed, settings)
 
@@ -314,3 +312,21 @@ def premise_sensitivity(
         .reset_index(drop=True)
     )
     return {"accuracy": accuracy, "majority": majority, "importance": importance}
+
+
+def to_frame(result: Plausible) -> pd.DataFrame:
+    """One row per locomotive: its inputs, ``s_low_pair``, the metric of every case and
+    ``premise`` (what ``scripts/premise_probability.py`` writes as ``plausible.csv``)."""
+    frame = pd.concat(
+        [result.inputs, pd.Series(result.pairs, name="s_low_pair"), result.metrics], axis=1
+    )
+    frame["premise"] = premise_holds(result.metrics)
+    return frame
+
+
+def from_frame(frame: pd.DataFrame, settings: dict[str, Any] | None = None) -> Plausible:
+    """The :class:`Plausible` of a :func:`to_frame` table (the failed-run count is not kept
+    there: -1)."""
+    cases = [f"{s} {d}" for s in JUDGE for d in DAMPERS]
+    inputs = frame.drop(columns=[*cases, "s_low_pair", "premise"])
+    return Plausible(inputs, list(frame["s_low_pair"]), frame[cases], -1, dict(settings or {}))
