@@ -147,6 +147,24 @@ def morris_section() -> list[str]:
     return lines
 
 
+def _fsd_reading(fsd: pd.DataFrame) -> list[str]:
+    """One sentence per FSD on what its ratios say (no ratio: nothing to say)."""
+    out = []
+    for name, g in fsd.groupby("damper", sort=False):
+        by = {r["scenario"]: r for _, r in g.iterrows()}
+        if not all(s in by and pd.notna(by[s]["median_ratio"]) for s in ("S_low", "S_high")):
+            continue
+        low, high = by["S_low"], by["S_high"]
+        both = low["median_ratio"] <= 1 and high["median_ratio"] <= 1
+        out.append(
+            f"- {name}: where the premise holds, its S_low judging metric is a median "
+            f"{low['median_ratio']:.2f} times {low['better_fixed']}'s and its S_high one "
+            f"{high['median_ratio']:.2f} times {high['better_fixed']}'s: "
+            + ("the best of both." if both else "not the best of both.")
+        )
+    return [*out, ""] if out else []
+
+
 def plausible_section() -> list[str]:
     path = RESULTS / "plausible.json"
     if not path.exists():
@@ -164,7 +182,8 @@ def plausible_section() -> list[str]:
         f"shares, a judgement) and on S_high ({meta['s_high_pair']}); YD1, YD2, FSD and FSD-H,",
         f"{meta['distance_m']:g} m at {meta['speed_kmh']:g} km/h after {meta['lead_in_m']:g} m of",
         f"lead-in, on {meta['n_tracks']} tracks: {meta['failed_runs']} failed runs;",
-        f"{meta['wall_time_s']:.0f} s. The rule, stated before the runs: {meta['premise_rule']}.",
+        f"{meta['wall_time_s']:.0f} s wall, {meta['cpu_time_s']:.0f} s of CPU time. The rule,",
+        f"stated before the runs: {meta['premise_rule']}.",
         "",
         "| S_low pair | rule | locomotives | share | 95 % interval (Wilson) |",
         "|---|---|---|---|---|",
@@ -192,6 +211,7 @@ def plausible_section() -> list[str]:
             for _, r in fsd.iterrows()
         ),
         "",
+        *_fsd_reading(fsd),
     ]
     if importance.empty:
         lines += ["No classifier: the premise holds on all or none of them.", ""]

@@ -136,3 +136,43 @@ def test_the_premise_section_reads_the_rule_from_the_tracks(tmp_path: Path) -> N
     text = "\n".join(premise_report.premise_section(path, None))
     assert "On the default vehicle: yes" in text
     assert "docs/premise.md" in text
+
+
+def test_the_committed_plausible_locomotives_are_what_the_model_gives_now() -> None:
+    # docs/screening/plausible.csv (scripts/premise_probability.py): one locomotive's S_low
+    # runs re-simulated, and the committed shares are the summary of the committed table.
+    import json
+
+    from loco.studies import premise_probability as pp
+
+    results = Path(__file__).parents[1] / "docs" / "screening"
+    meta = json.loads((results / "plausible.json").read_text(encoding="utf-8"))
+    frame = pd.read_csv(results / "plausible.csv")
+    inputs, pairs = pp.sample_locomotives(meta["n"], meta["seed"])
+    assert pairs == list(frame["s_low_pair"])
+    np.testing.assert_allclose(frame[list(inputs.columns)], inputs, rtol=1e-5)
+    i = 0
+    pair = next(p for p in pp.S_LOW_PAIRS if p.label == pairs[i])
+    for damper in ("YD1", "YD2"):
+        values = []
+        for track in range(meta["n_tracks"]):
+            scenario = loco.Scenario(
+                wheel=pair.wheel,
+                rail=pair.rail,
+                rail_inclination=pair.inclination,
+                speed=meta["speed_kmh"] / 3.6,
+                distance=meta["distance_m"],
+                lead_in=meta["lead_in_m"],
+                seed=track,
+                yaw_damper=damper,
+            )
+            batch = loco.run_batch(
+                inputs.to_numpy()[i : i + 1], list(inputs.columns), scenario=scenario,
+                progress=False,
+            )  # fmt: skip
+            values.append(batch.metric(pp.JUDGE["S_low"])[0])
+        assert np.mean(values) == pytest.approx(frame.loc[i, f"S_low {damper}"], rel=1e-4)
+    summary = pp.summarise(pp.from_frame(frame))
+    committed = pd.read_csv(results / "plausible_fraction.csv")
+    np.testing.assert_allclose(summary["fraction"]["k"], committed["k"])
+    np.testing.assert_allclose(summary["fraction"]["fraction"], committed["fraction"], rtol=1e-3)
