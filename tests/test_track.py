@@ -91,10 +91,10 @@ def test_measured_file_round_trip(tmp_path: Path) -> None:
 def test_malformed_files_name_file_and_line(tmp_path: Path) -> None:
     path = tmp_path / "bad.csv"
     path.write_text("0,1,2,3,4\n1,1,2,3,4\n0.5,1,2,3,4\n")
-    with pytest.raises(loco.ProfileFormatError, match=r"bad.csv:3:.*does not increase"):
+    with pytest.raises(loco.TrackFormatError, match=r"bad.csv:3:.*does not increase"):
         track.load(str(path))
     path.write_text("0,1,2,3,4\n1,nan,2,3,4\n")
-    with pytest.raises(loco.ProfileFormatError, match=r"bad.csv:2:.*vertical"):
+    with pytest.raises(loco.TrackFormatError, match=r"bad.csv:2:.*vertical"):
         track.load(str(path))
     with pytest.raises(loco.LocoIOError):
         track.load(str(tmp_path / "missing.csv"))

@@ -30,6 +30,7 @@ from loco._loco import (
     DerailmentError,
     DivergenceError,
     EquilibriumError,
+    FileFormatError,
     InternalError,
     LocoError,
     LocoIOError,
@@ -37,6 +38,8 @@ from loco._loco import (
     ParameterRangeError,
     ProfileFormatError,
     SimulationError,
+    TrackFormatError,
+    VehicleFormatError,
     __version__,
 )
 from loco.batch import BatchResult, run_batch
@@ -59,6 +62,7 @@ __all__ = [
     "DerailmentError",
     "DivergenceError",
     "EquilibriumError",
+    "FileFormatError",
     "FrequencyResponse",
     "InternalError",
     "LocoError",
@@ -73,6 +77,8 @@ __all__ = [
     "Scenario",
     "SimulationError",
     "SimulationResult",
+    "TrackFormatError",
+    "VehicleFormatError",
     "__version__",
     "batch",
     "channels",

@@ -16,6 +16,7 @@ mod metrics;
 mod names;
 mod scenario;
 mod schema;
+mod text_file;
 mod track;
 mod vehicle;
 mod vehicle_handle;
@@ -41,5 +42,6 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;
+    text_file::register(m)?;
     Ok(())
 }

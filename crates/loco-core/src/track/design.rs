@@ -211,7 +211,17 @@ impl TrackDesign {
             check_positive(&section_field(i, "length_m"), section.length())?;
             match *section {
                 DesignSection::Curve { radius, cant, .. } => {
-                    if !(radius.is_finite() && radius >= min_radius) {
+                    if !radius.is_finite() {
+                        return Err(section_error(
+                            i,
+                            "radius_m",
+                            format!(
+                                "must be a finite number of metres, got {radius} (straight \
+                                 track is a `straight` section)"
+                            ),
+                        ));
+                    }
+                    if radius < min_radius {
                         return Err(section_error(
                             i,
                             "radius_m",

@@ -1,0 +1,179 @@
+//! Plausibility of a wheel or rail profile: the checks that catch a file in the wrong unit, a
+//! wheel given as the rail (or the reverse), a flangeless wheel and a stray point, before the
+//! contact search fails on them with a message about something else.
+//!
+//! In the profile frame (`contact::profile`: y toward the field side, z up; a wheel's
+//! `z = r0 − r(y)`, so its flange tip is its lowest point, on the low-y side):
+//!
+//! - **width** (the y span) between [`MIN_WIDTH`] and [`MAX_WIDTH`]: a wheel rim is about 135 mm
+//!   wide (EN 13715's treads), a rail head about 70 mm (60E1: 72 mm, CN60: 73 mm); a file in
+//!   metres read as millimetres (or the reverse) is 1000 times off and far outside;
+//! - **height** (the z span) at most [`MAX_HEIGHT`]: a wheel's flange is about 28–36 mm high,
+//!   a rail head's profile drops by some 10–40 mm from its top;
+//! - a **wheel** has a **flange**: its lowest point lies inside the profile and at least
+//!   [`MIN_FLANGE_HEIGHT`] below the field-side end (the flanges of the study's JM3 treads are
+//!   about 27–32 mm high; a profile whose lowest point is at an end is a rail, or a wheel without
+//!   a flange, which no contact table can keep on the track);
+//! - a wheel's **tread is monotonic**: from the flange tip to the field side z never falls by more
+//!   than [`MAX_REVERSAL`] (a hollow-worn tread's false flange is a few mm; a stray point is not);
+//! - a **rail head falls away from its top**: from the highest point toward either end z never
+//!   rises by more than [`MAX_REVERSAL`] (a wheel given as the rail rises again at its flange back).
+//!
+//! Every reason names the profile and what was found; the caller adds the file or the argument.
+
+use super::profile::{Profile, ProfileKind};
+
+/// Narrowest profile, m.
+pub const MIN_WIDTH: f64 = 0.02;
+/// Widest profile, m.
+pub const MAX_WIDTH: f64 = 0.4;
+/// Largest height span, m.
+pub const MAX_HEIGHT: f64 = 0.2;
+/// Least flange height of a wheel (lowest point below the field-side end), m.
+pub const MIN_FLANGE_HEIGHT: f64 = 0.015;
+/// Largest reversal of a monotonic part (a wheel's tread, a rail head's flanks), m.
+pub const MAX_REVERSAL: f64 = 0.005;
+
+/// Why `profile` is not a plausible profile of its kind, or None when it is.
+pub fn implausibility(profile: &Profile) -> Option<String> {
+    let (y, z) = (profile.y(), profile.z());
+    let (name, kind) = (profile.name(), profile.kind().as_str());
+    let width = y[y.len() - 1] - y[0];
+    if !(MIN_WIDTH..=MAX_WIDTH).contains(&width) {
+        return Some(format!(
+            "{kind} profile '{name}' is {:.4} mm wide; a {kind} profile is {:.0}–{:.0} mm wide \
+             (a file in m read as mm, or the reverse, is 1000 times off)",
+            width * 1e3,
+            MIN_WIDTH * 1e3,
+            MAX_WIDTH * 1e3
+        ));
+    }
+    let (lo, hi) = z
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    if hi - lo > MAX_HEIGHT {
+        return Some(format!(
+            "{kind} profile '{name}' spans {:.1} mm in height; at most {:.0} mm is plausible",
+            (hi - lo) * 1e3,
+            MAX_HEIGHT * 1e3
+        ));
+    }
+    match profile.kind() {
+        ProfileKind::Wheel => wheel_problem(name, y, z),
+        ProfileKind::Rail => rail_problem(name, y, z),
+    }
+}
+
+fn wheel_problem(name: &str, y: &[f64], z: &[f64]) -> Option<String> {
+    let n = z.len();
+    let tip = (0..n).fold(0, |best, i| if z[i] < z[best] { i } else { best });
+    let flange = z[n - 1] - z[tip];
+    if tip == 0 || tip == n - 1 || flange < MIN_FLANGE_HEIGHT {
+        return Some(format!(
+            "wheel profile '{name}' has no flange: its lowest point (y = {:.1} mm) is {} and \
+             {:.1} mm below its field-side end; a wheel's flange tip lies inside the profile, at \
+             least {:.0} mm below the tread (is it a rail profile, or a flangeless wheel?)",
+            y[tip] * 1e3,
+            if tip == 0 || tip == n - 1 {
+                "at an end of the profile"
+            } else {
+                "inside the profile"
+            },
+            flange * 1e3,
+            MIN_FLANGE_HEIGHT * 1e3
+        ));
+    }
+    let mut top = z[tip];
+    for i in tip + 1..n {
+        top = top.max(z[i]);
+        if top - z[i] > MAX_REVERSAL {
+            return Some(format!(
+                "wheel profile '{name}': the tread is not monotonic: at y = {:.2} mm z falls \
+                 {:.1} mm below the tread before it (at most {:.0} mm, a hollow tread's false \
+                 flange); a stray point?",
+                y[i] * 1e3,
+                (top - z[i]) * 1e3,
+                MAX_REVERSAL * 1e3
+            ));
+        }
+    }
+    None
+}
+
+fn rail_problem(name: &str, y: &[f64], z: &[f64]) -> Option<String> {
+    let n = z.len();
+    let crown = (0..n).fold(0, |best, i| if z[i] > z[best] { i } else { best });
+    let sides = [
+        (crown..n).collect::<Vec<_>>(),
+        (0..=crown).rev().collect::<Vec<_>>(),
+    ];
+    for side in sides {
+        let mut low = z[crown];
+        for i in side {
+            low = low.min(z[i]);
+            if z[i] - low > MAX_REVERSAL {
+                return Some(format!(
+                    "rail profile '{name}' rises again by {:.1} mm at y = {:.2} mm after falling \
+                     from its top: a rail head falls away from its top on both sides (at most \
+                     {:.0} mm back); is it a wheel profile (a flange), or a stray point?",
+                    (z[i] - low) * 1e3,
+                    y[i] * 1e3,
+                    MAX_REVERSAL * 1e3
+                ));
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::builtin::{builtin_names, builtin_profile};
+
+    #[test]
+    fn every_builtin_profile_is_plausible() {
+        for name in builtin_names() {
+            let p = builtin_profile(name).unwrap();
+            assert_eq!(implausibility(&p), None, "{name}");
+        }
+    }
+
+    #[test]
+    fn units_swaps_missing_flanges_and_stray_points_are_named() {
+        let wheel = builtin_profile("jm3-new").unwrap();
+        let rail = builtin_profile("cn60").unwrap();
+        let scaled = |p: &Profile, k: f64| {
+            let y: Vec<f64> = p.y().iter().map(|v| v * k).collect();
+            let z: Vec<f64> = p.z().iter().map(|v| v * k).collect();
+            Profile::new(p.name(), p.kind(), &y, &z).unwrap()
+        };
+        for k in [1e-3, 1e3] {
+            let why = implausibility(&scaled(&wheel, k)).unwrap();
+            assert!(why.contains("wide"), "{why}");
+            let why = implausibility(&scaled(&rail, k)).unwrap();
+            assert!(why.contains("rail profile 'cn60'"), "{why}");
+        }
+        let as_rail = Profile::new("w", ProfileKind::Rail, wheel.y(), wheel.z()).unwrap();
+        let why = implausibility(&as_rail).unwrap();
+        assert!(why.contains("is it a wheel profile"), "{why}");
+        let as_wheel = Profile::new("r", ProfileKind::Wheel, rail.y(), rail.z()).unwrap();
+        let why = implausibility(&as_wheel).unwrap();
+        assert!(why.contains("has no flange"), "{why}");
+        // A flangeless wheel: the tread continued straight across the flange.
+        let flat: Vec<f64> = wheel.y().iter().map(|y| -0.05 * y).collect();
+        let flangeless = Profile::new("f", ProfileKind::Wheel, wheel.y(), &flat).unwrap();
+        assert!(implausibility(&flangeless)
+            .unwrap()
+            .contains("has no flange"));
+        // One point of the tread raised 50 mm (a smaller radius there).
+        let mut z = wheel.z().to_vec();
+        let i = wheel.y().iter().position(|&y| y > 0.02).unwrap();
+        z[i] += 0.05;
+        let spike = Profile::new("s", ProfileKind::Wheel, wheel.y(), &z).unwrap();
+        let why = implausibility(&spike).unwrap();
+        assert!(why.contains("not monotonic"), "{why}");
+    }
+}
