@@ -140,6 +140,11 @@ impl PyVehicle {
         self.structure.total_mass()
     }
 
+    /// Mean axle load, N: the weight over the wheelsets.
+    fn mean_axle_load(&self) -> f64 {
+        self.structure.mean_axle_load()
+    }
+
     /// The 90 × 90 mass matrix `Σ Tᵀ diag(m, m, m, Ixx, Iyy, Izz) T` (kg, kg·m, kg·m²), in
     /// coordinate order.
     fn mass_matrix<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
