@@ -18,16 +18,31 @@ import loco
 from loco.store import CampaignStore, find_campaigns
 from loco.store_lock import LOCK_FILE, StoreBusyError, StoreLock, remove_stale_temporaries
 
-#: The campaign both processes run: six 20 m samples, one per chunk (a part file each).
+#: The campaign every writer runs: six 20 m samples, one per chunk (a part file each). Given a
+#: second argument (a file), the writer holds on after its first chunk until that file exists, so
+#: that a second writer certainly starts while the first holds the store.
 WRITER = """
-import json, sys
+import json, sys, time
+from pathlib import Path
 import numpy as np
 import loco
+from loco.executors import LocalExecutor
+
+class Gated(LocalExecutor):
+    def map_chunks(self, job, chunks, progress=None):
+        for i, result in enumerate(super().map_chunks(job, chunks, progress)):
+            yield result
+            deadline = time.monotonic() + 120
+            while i == 0 and len(sys.argv) > 2 and not Path(sys.argv[2]).exists():
+                if time.monotonic() > deadline:
+                    raise SystemExit("never released")
+                time.sleep(0.02)
+
 params = np.linspace(1.0e5, 3.0e5, 6)[:, None]
 scenario = loco.Scenario(name="S_norm", distance=20.0, track="perfect")
 try:
     r = loco.run_batch(params, ["C_sx"], scenario=scenario, store=sys.argv[1], chunk_size=1,
-                       progress=False, threads=1)
+                       progress=False, executor=Gated(1))
 except loco.LocoError as e:
     print(json.dumps({"error": type(e).__name__, "message": str(e)}))
 else:
@@ -35,9 +50,11 @@ else:
 """
 
 
-def _writer(store: Path) -> subprocess.Popen[str]:
+def _writer(store: Path, *gate: Path) -> subprocess.Popen[str]:
     return subprocess.Popen(
-        [sys.executable, "-c", WRITER, str(store)], stdout=subprocess.PIPE, text=True
+        [sys.executable, "-c", WRITER, str(store), *map(str, gate)],
+        stdout=subprocess.PIPE,
+        text=True,
     )
 
 
@@ -50,33 +67,32 @@ def _answer(process: subprocess.Popen[str]) -> dict[str, object]:
 def test_a_second_writer_fails_at_once_naming_the_first_and_no_sample_runs_twice(
     tmp_path: Path,
 ) -> None:
-    store = tmp_path / "store"
-    first = _writer(store)
-    # Wait until the first holds the lock (it writes its pid into the lock file).
+    store, gate = tmp_path / "store", tmp_path / "go"
+    first = _writer(store, gate)
+    # Wait until the first holds the lock and has stored its first chunk.
     deadline = time.monotonic() + 120
-    lock = None
-    while time.monotonic() < deadline and first.poll() is None:
-        locks = list(store.glob(f"*/{LOCK_FILE}"))
-        if locks and str(first.pid) in locks[0].read_text(encoding="utf-8"):
-            lock = locks[0]
-            break
+    parts: list[Path] = []
+    while time.monotonic() < deadline and first.poll() is None and not parts:
+        parts = list(store.glob("*/samples/part-*.parquet"))
         time.sleep(0.05)
-    assert lock is not None, "the first writer never took the store's lock"
+    assert parts, "the first writer never stored a chunk"
+    lock = parts[0].parent.parent / LOCK_FILE
+    assert str(first.pid) in lock.read_text(encoding="utf-8")
     started = time.monotonic()
     second = _answer(_writer(store))
-    first_answer = _answer(first)
-    assert second["error"] == "StoreBusyError", second
-    message = str(second["message"])
-    assert f"pid {first.pid} on {socket.gethostname()}" in message, message
     # It failed before doing anything: within the time of starting Python and loco.
     assert time.monotonic() - started < 60
+    gate.touch()
+    first_answer = _answer(first)
+    assert second.get("error") == "StoreBusyError", second
+    message = str(second["message"])
+    assert f"pid {first.pid} on {socket.gethostname()}" in message, message
     assert first_answer == {"reused": 0, "status": [0] * 6}
     # Every sample was stored once, by the first writer: one part per chunk.
-    parts = sorted((lock.parent / "samples").glob("part-*.parquet"))
-    assert len(parts) == 6
+    assert len(sorted(lock.parent.glob("samples/part-*.parquet"))) == 6
     # A writer after the first has finished reads everything back and runs nothing.
     assert _answer(_writer(store)) == {"reused": 6, "status": [0] * 6}
-    assert len(sorted((lock.parent / "samples").glob("part-*.parquet"))) == 6
+    assert len(sorted(lock.parent.glob("samples/part-*.parquet"))) == 6
     (status,) = find_campaigns(store)
     assert (status.n_done, status.n_samples, status.damage) == (6, 6, None)
 
@@ -119,10 +135,10 @@ def test_a_store_that_is_a_file_or_read_only_is_refused_before_any_work(tmp_path
     read_only.mkdir()
     read_only.chmod(0o500)
     try:
-        if os.access(read_only, os.W_OK):
-            pytest.skip("running as a user who can write anywhere (root)")
+        # A user who can write anywhere (root) cannot create files in /proc either.
+        place = read_only if not os.access(read_only, os.W_OK) else Path("/proc")
         with pytest.raises(loco.LocoIOError, match="the `store`"):
-            loco.run_batch(params, ["C_sx"], scenario=scenario, store=read_only, progress=False)
+            loco.run_batch(params, ["C_sx"], scenario=scenario, store=place, progress=False)
     finally:
         read_only.chmod(0o700)
 

@@ -279,7 +279,8 @@ class CampaignStatus:
 
 def describe_damage(description: Path) -> tuple[dict[str, Any] | None, str | None]:
     """The content of the ``campaign.json`` at ``description``, or None and why it is unusable
-    (unreadable, not JSON, no key of 64 hex digits, no whole number of samples)."""
+    (unreadable, not JSON, no key of 64 hex digits, a key that is not the directory's, no whole
+    number of samples)."""
     try:
         meta = json.loads(description.read_text(encoding="utf-8"))
     except OSError as e:
@@ -293,6 +294,11 @@ def describe_damage(description: Path) -> tuple[dict[str, Any] | None, str | Non
     key = meta.get("key")
     if not isinstance(key, str) or re.fullmatch(r"[0-9a-f]{64}", key) is None:
         return None, f"has no campaign key of 64 hex digits (key: {key!r})"
+    if key[:16] != description.parent.name:
+        return None, (
+            f"names the campaign {key[:16]}…, not this directory's ({description.parent.name}): "
+            "it was copied from another store"
+        )
     n = meta.get("n_samples")
     if isinstance(n, bool) or not isinstance(n, int) or n < 0:
         return None, f"has no whole number of samples (n_samples: {n!r})"

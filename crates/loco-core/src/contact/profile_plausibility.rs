@@ -15,7 +15,7 @@
 //!   about 27–32 mm high; a profile whose lowest point is at an end is a rail, or a wheel without
 //!   a flange, which no contact table can keep on the track);
 //! - a wheel's **tread is monotonic**: from the flange tip to the field side z never falls by more
-//!   than [`MAX_REVERSAL`] (a hollow-worn tread's false flange is a few mm; a stray point is not);
+//!   than [`MAX_HOLLOW`] (a hollow-worn tread's false flange is a few mm; a stray point is not);
 //! - a **rail head falls away from its top**: from the highest point toward either end z never
 //!   rises by more than [`MAX_REVERSAL`] (a wheel given as the rail rises again at its flange back).
 //!
@@ -31,7 +31,13 @@ pub const MAX_WIDTH: f64 = 0.4;
 pub const MAX_HEIGHT: f64 = 0.2;
 /// Least flange height of a wheel (lowest point below the field-side end), m.
 pub const MIN_FLANGE_HEIGHT: f64 = 0.015;
-/// Largest reversal of a monotonic part (a wheel's tread, a rail head's flanks), m.
+/// Deepest hollow of a wheel's tread (its false flange), m: above the limits a locomotive may run
+/// on, a tread worn hollow 5/16 in (7.9 mm) in road service and 3/8 in (9.5 mm) in switching
+/// service (US 49 CFR 229.75(g)), so every wheel in service passes and a stray point does not.
+pub const MAX_HOLLOW: f64 = 0.010;
+/// Largest rise of a rail head's flanks back toward its top, m: a measured head falls away from
+/// its crown on both sides (a profilometer's noise is a fraction of a millimetre), while a wheel
+/// read as the rail rises again by its flange height (25–36 mm) at the flange back.
 pub const MAX_REVERSAL: f64 = 0.005;
 
 /// Why `profile` is not a plausible profile of its kind, or None when it is.
@@ -88,14 +94,14 @@ fn wheel_problem(name: &str, y: &[f64], z: &[f64]) -> Option<String> {
     let mut top = z[tip];
     for i in tip + 1..n {
         top = top.max(z[i]);
-        if top - z[i] > MAX_REVERSAL {
+        if top - z[i] > MAX_HOLLOW {
             return Some(format!(
                 "wheel profile '{name}': the tread is not monotonic: at y = {:.2} mm z falls \
                  {:.1} mm below the tread before it (at most {:.0} mm, a hollow tread's false \
                  flange); a stray point?",
                 y[i] * 1e3,
                 (top - z[i]) * 1e3,
-                MAX_REVERSAL * 1e3
+                MAX_HOLLOW * 1e3
             ));
         }
     }
@@ -139,6 +145,34 @@ mod tests {
             let p = builtin_profile(name).unwrap();
             assert_eq!(implausibility(&p), None, "{name}");
         }
+    }
+
+    #[test]
+    fn every_jm3_tread_state_the_family_accepts_is_plausible() {
+        use crate::contact::builtin::jm3::{
+            conical_tread, tread, TreadState, MAX_CONE_SLOPE, MIN_BAND_RADIUS, MIN_CONE_SLOPE,
+        };
+        // The corners of the family's domain (some do not build: a steep band of small radius
+        // does not fit between flange and outer tread) and the built-in states' ranges.
+        let mut built = 0;
+        for tread_slope in [MIN_CONE_SLOPE, 0.08, 0.125, MAX_CONE_SLOPE] {
+            for band_radius in [MIN_BAND_RADIUS, 0.2, 0.8, f64::INFINITY] {
+                for flange_thickness in [0.022, 0.026, 0.034] {
+                    let state = TreadState {
+                        flange_thickness,
+                        tread_slope,
+                        band_radius,
+                    };
+                    if let Ok(p) = tread(&state) {
+                        assert_eq!(implausibility(&p), None, "{state:?}");
+                        built += 1;
+                    }
+                }
+            }
+            let cone = conical_tread(tread_slope).unwrap();
+            assert_eq!(implausibility(&cone), None, "cone {tread_slope}");
+        }
+        assert!(built >= 10, "only {built} states built");
     }
 
     #[test]

@@ -171,6 +171,9 @@ impl Scenario {
         let Some(last) = self.curve.last() else {
             return Ok(());
         };
+        // The sections' own faults first (the smallest radius needs the contact: checked when
+        // the run builds the design).
+        crate::track::design::check_sections(&self.curve, 0.0)?;
         let length: f64 = self.curve.iter().map(DesignSection::length).sum();
         let run = self.lead_in + self.distance;
         if matches!(last, DesignSection::Curve { .. }) && run > length {
