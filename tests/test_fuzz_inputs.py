@@ -230,6 +230,7 @@ def _track_cases() -> list[Case]:
 def _profile_cases() -> list[Case]:
     import numpy as np
 
+    import loco
     from loco import profiles
 
     wheel = profiles.builtin("jm3-new")
@@ -253,6 +254,18 @@ def _profile_cases() -> list[Case]:
     out: list[Case] = [
         (f"profile {label}", "p.txt", lambda d, b=b, k=k: profiles.load(_file(d / "p.txt", b), k))
         for label, (b, k) in cases.items()
+    ]
+    def scenario(**kw: Any) -> Any:
+        run = loco.Scenario(distance=5.0, track="perfect", **{"wheel": wheel, "rail": rail, **kw})
+        return loco.simulate(loco.Locomotive.default(), run)
+
+    huge = profiles.Profile("huge", "wheel", np.array(wheel.y) * 1e3, np.array(wheel.z) * 1e3)
+    flangeless = profiles.Profile("flat", "wheel", np.array(wheel.y), flat)
+    out += [
+        ("scenario with a huge wheel", "`wheel`", lambda _: scenario(wheel=huge)),
+        ("scenario with a flangeless wheel", "`wheel`", lambda _: scenario(wheel=flangeless)),
+        ("scenario with a rail as the wheel", "`wheel`", lambda _: scenario(wheel=rail)),
+        ("scenario with a wheel as the rail", "`rail`", lambda _: scenario(rail=wheel)),
     ]
     good = text(wheel.y, wheel.z)
     for v in [-1.0, math.nan, 1000.0, "2e-3"]:
@@ -290,6 +303,24 @@ def _file_cases() -> list[Case]:
             lambda d: loco.Locomotive.from_toml(_file(d / "v.toml", b"\x00\xff" * 20)),
         ),
         ("vehicle text malformed", "<toml_text>", lambda _: loco.Locomotive(toml_text="[x")),
+        (
+            "vehicle file malformed",
+            "v.toml:1",
+            lambda d: loco.Locomotive.from_toml(_file(d / "v.toml", b"[x")),
+        ),
+        (
+            "sections malformed",
+            "c.csv:2",
+            lambda d: loco.simulate(
+                loco.Locomotive.default(),
+                loco.Scenario(
+                    name="S_norm",
+                    distance=10.0,
+                    track="perfect",
+                    curve=str(_file(d / "c.csv", b"kind,length_m\nstraight,30,1\n")),
+                ),
+            ),
+        ),
         (
             "sections Latin-1",
             "c.csv",
@@ -370,6 +401,70 @@ def _executor_cases() -> list[Case]:
     return out
 
 
+def _cli(argv: list[str], environment: dict[str, str] | None = None) -> None:
+    """``loco <argv>`` in this process: nothing for exit 0; for exit 1 or 2 with a one-line
+    ``error:`` message and no traceback, a :class:`loco.LocoError` carrying what it printed (so
+    the case is judged on the message); anything else raises as it came."""
+    import contextlib
+    import io
+
+    import loco
+    from loco.cli import main
+
+    printed = io.StringIO()
+    saved = {k: os.environ.get(k) for k in environment or {}}
+    os.environ.update(environment or {})
+    try:
+        with contextlib.redirect_stderr(printed):
+            try:
+                code = main(argv)
+            except SystemExit as e:
+                code = int(e.code or 0)
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+    message = printed.getvalue()
+    if code == 0:
+        return
+    if code in (1, 2) and "error:" in message and "Traceback" not in message:
+        raise loco.LocoError(message)
+    raise RuntimeError(f"exit {code}: {message}")
+
+
+def _cli_cases() -> list[Case]:
+    import loco
+    from loco import executors
+
+    text = loco.Locomotive.default().default_toml()
+    latin1 = "# \xe9\n".encode("latin-1") + text.encode()
+    sections = "# \xe9\nkind,length_m\nstraight,30\n".encode("latin-1")
+    return [
+        (
+            "loco frf --vehicle Latin-1",
+            "v.toml",
+            lambda d: _cli(["frf", "--vehicle", str(_file(d / "v.toml", latin1)), "--out", str(d)]),
+        ),
+        (
+            "loco simulate --curve Latin-1",
+            "c.csv",
+            lambda d: _cli(
+                ["simulate", "--curve", str(_file(d / "c.csv", sections)), "--out", str(d)]
+            ),
+        ),
+        (
+            f"loco reproduce with {executors.SCHEDULER_ENV}=bogus",
+            executors.SCHEDULER_ENV,
+            lambda d: _cli(
+                ["reproduce", "--tiny", "--no-progress", "--out", str(d / "out")],
+                {executors.SCHEDULER_ENV: "bogus"},
+            ),
+        ),
+    ]
+
+
 def _file(path: Path, data: bytes) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_bytes(data)
@@ -388,6 +483,7 @@ def cases() -> list[Case]:
         *_file_cases(),
         *_bench_cases(),
         *_executor_cases(),
+        *_cli_cases(),
     ]
 
 
@@ -415,6 +511,16 @@ def run_case(case: Case, directory: Path) -> dict[str, Any]:
     return {"outcome": "result"}
 
 
+#: The class a file's fault must raise, by the start of the case's label: the file's kind, not
+#: another kind's (a malformed track file is not a profile error).
+FILE_CLASSES = {
+    "vehicle": "VehicleFormatError",
+    "track ": "TrackFormatError",
+    "sections": "TrackFormatError",
+    "profile ": "ProfileFormatError",
+}
+
+
 def judge(label: str, named: str | None, answer: dict[str, Any]) -> str | None:
     """What is wrong with an answer (None: fine)."""
     if named is None:
@@ -423,6 +529,10 @@ def judge(label: str, named: str | None, answer: dict[str, Any]) -> str | None:
         return f"{label}: expected an error naming {named}, got {answer}"
     if named not in answer["message"]:
         return f"{label}: the error does not name {named}: {answer['message']}"
+    expected = next((c for start, c in FILE_CLASSES.items() if label.startswith(start)), None)
+    if expected and named.startswith(("v.toml", "t.csv", "c.csv", "p.txt", "<toml_text>")):
+        if answer["type"] != expected:
+            return f"{label}: expected a {expected}, got {answer['type']}: {answer['message']}"
     return None
 
 
