@@ -115,6 +115,14 @@ def _curve_cases() -> list[Case]:
 
     return [
         ("curve=[]", "`curve`", lambda _: run([])),
+        (
+            "fastsim_grid (1, 1)",
+            "`fastsim_grid`",
+            lambda _: loco.simulate(
+                loco.Locomotive.default(),
+                loco.Scenario(name="S_norm", distance=1.0, track="perfect", fastsim_grid=(1, 1)),
+            ),
+        ),
         ("radius inf", "radius_m", lambda _: run(section(radius_m=math.inf))),
         ("radius nan", "radius_m", lambda _: run(section(radius_m=math.nan))),
         (
