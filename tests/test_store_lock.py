@@ -109,7 +109,9 @@ def test_the_lock_is_released_and_taken_again(tmp_path: Path) -> None:
         CampaignStore(tmp_path, key, 3, writable=False).load()
 
 
-def test_temporary_files_are_removed_only_when_their_writer_is_gone(tmp_path: Path) -> None:
+def test_temporary_files_are_removed_only_when_their_writer_is_gone(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     host = socket.gethostname()
     dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
                           capture_output=True, text=True, check=True)  # fmt: skip
@@ -121,6 +123,12 @@ def test_temporary_files_are_removed_only_when_their_writer_is_gone(tmp_path: Pa
         path.write_bytes(b"partial")
     assert remove_stale_temporaries(tmp_path) == [gone]
     assert mine.exists() and other_host.exists() and not gone.exists()
+    # A host name with dots (a domain) is read whole.
+    monkeypatch.setattr(socket, "gethostname", lambda: "node1.cluster.example")
+    dotted = tmp_path / f".part.parquet.node1.cluster.example.{dead_pid}.tmp"
+    dotted.write_bytes(b"partial")
+    assert remove_stale_temporaries(tmp_path) == [dotted]
+    assert mine.exists() and other_host.exists()
 
 
 def test_a_store_that_is_a_file_or_read_only_is_refused_before_any_work(tmp_path: Path) -> None:

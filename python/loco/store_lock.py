@@ -100,10 +100,11 @@ def remove_stale_temporaries(directory: Path) -> list[Path]:
     host = socket.gethostname()
     removed = []
     for tmp in directory.glob(".*.tmp"):
-        parts = tmp.name[1:-4].rsplit(".", 2)
-        if len(parts) != 3 or parts[1] != host or not parts[2].isdigit():
+        # `.<name>.<host>.<pid>.tmp`; a host name may hold dots itself.
+        rest, _, pid = tmp.name[1:-4].rpartition(".")
+        if not rest.endswith(f".{host}") or not pid.isdigit():
             continue
-        if not _running(int(parts[2])):
+        if not _running(int(pid)):
             tmp.unlink(missing_ok=True)
             removed.append(tmp)
     return removed

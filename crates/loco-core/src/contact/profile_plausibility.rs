@@ -9,7 +9,8 @@
 //!   wide (EN 13715's treads), a rail head about 70 mm (60E1: 72 mm, CN60: 73 mm); a file in
 //!   metres read as millimetres (or the reverse) is 1000 times off and far outside;
 //! - **height** (the z span) at most [`MAX_HEIGHT`]: a wheel's flange is about 28–36 mm high,
-//!   a rail head's profile drops by some 10–40 mm from its top;
+//!   a rail head's profile drops by some 10–40 mm from its top, a file 1000 times too large
+//!   spans metres;
 //! - a **wheel** has a **flange**: its lowest point lies inside the profile and at least
 //!   [`MIN_FLANGE_HEIGHT`] below the field-side end (the flanges of the study's JM3 treads are
 //!   about 27–32 mm high; a profile whose lowest point is at an end is a rail, or a wheel without
@@ -25,10 +26,14 @@ use super::profile::{Profile, ProfileKind};
 
 /// Narrowest profile, m.
 pub const MIN_WIDTH: f64 = 0.02;
-/// Widest profile, m.
-pub const MAX_WIDTH: f64 = 0.4;
-/// Largest height span, m.
-pub const MAX_HEIGHT: f64 = 0.2;
+/// Widest profile, m: a rim is about 135 mm wide and a rail head about 70 mm, and a file 1000
+/// times off is 0.1 mm or 100 m wide, so any bound between catches it; 1 m leaves room for the
+/// idealised 500 mm cone of [`super::builtin::conical`].
+pub const MAX_WIDTH: f64 = 1.0;
+/// Largest height span, m: a wheel's flange is about 28–36 mm high and a rail head's profile drops
+/// by some 10–40 mm, while a file 1000 times too large spans tens of metres; 0.6 m leaves room
+/// for the idealised cone (0.5 m high at its steepest, conicity 1).
+pub const MAX_HEIGHT: f64 = 0.6;
 /// Least flange height of a wheel (lowest point below the field-side end), m.
 pub const MIN_FLANGE_HEIGHT: f64 = 0.015;
 /// Deepest hollow of a wheel's tread (its false flange), m: above the limits a locomotive may run
@@ -42,6 +47,22 @@ pub const MAX_REVERSAL: f64 = 0.005;
 
 /// Why `profile` is not a plausible profile of its kind, or None when it is.
 pub fn implausibility(profile: &Profile) -> Option<String> {
+    checked(profile, true)
+}
+
+/// Which of a run's `wheel` and `rail` is implausible (`"wheel"` or `"rail"`) and why, or None.
+/// A wheel needs its flange on every rail but the knife edge of the idealised conical pair
+/// ([`super::builtin::conical::KNIFE_EDGE`]), whose crown keeps the contact on the cone.
+pub fn pair_implausibility(wheel: &Profile, rail: &Profile) -> Option<(&'static str, String)> {
+    let needs_flange = rail.name() != super::builtin::conical::KNIFE_EDGE;
+    if let Some(reason) = checked(wheel, needs_flange) {
+        return Some(("wheel", reason));
+    }
+    implausibility(rail).map(|reason| ("rail", reason))
+}
+
+/// [`implausibility`], a wheel's flange checked only when `needs_flange`.
+fn checked(profile: &Profile, needs_flange: bool) -> Option<String> {
     let (y, z) = (profile.y(), profile.z());
     let (name, kind) = (profile.name(), profile.kind().as_str());
     let width = y[y.len() - 1] - y[0];
@@ -67,16 +88,16 @@ pub fn implausibility(profile: &Profile) -> Option<String> {
         ));
     }
     match profile.kind() {
-        ProfileKind::Wheel => wheel_problem(name, y, z),
+        ProfileKind::Wheel => wheel_problem(name, y, z, needs_flange),
         ProfileKind::Rail => rail_problem(name, y, z),
     }
 }
 
-fn wheel_problem(name: &str, y: &[f64], z: &[f64]) -> Option<String> {
+fn wheel_problem(name: &str, y: &[f64], z: &[f64], needs_flange: bool) -> Option<String> {
     let n = z.len();
     let tip = (0..n).fold(0, |best, i| if z[i] < z[best] { i } else { best });
     let flange = z[n - 1] - z[tip];
-    if tip == 0 || tip == n - 1 || flange < MIN_FLANGE_HEIGHT {
+    if needs_flange && (tip == 0 || tip == n - 1 || flange < MIN_FLANGE_HEIGHT) {
         return Some(format!(
             "wheel profile '{name}' has no flange: its lowest point (y = {:.1} mm) is {} and \
              {:.1} mm below its field-side end; a wheel's flange tip lies inside the profile, at \
@@ -173,6 +194,21 @@ mod tests {
             assert_eq!(implausibility(&cone), None, "cone {tread_slope}");
         }
         assert!(built >= 10, "only {built} states built");
+    }
+
+    #[test]
+    fn the_idealised_cone_needs_no_flange_on_its_knife_edge_only() {
+        use crate::contact::builtin::conical::{conical_pair, MAX_CONICITY};
+        for conicity in [0.01, 0.1, 0.7, MAX_CONICITY] {
+            let (cone, knife) = conical_pair(conicity).unwrap();
+            assert_eq!(pair_implausibility(&cone, &knife), None, "{conicity}");
+            let cn60 = builtin_profile("cn60").unwrap();
+            let (field, why) = pair_implausibility(&cone, &cn60).unwrap();
+            assert!(field == "wheel" && why.contains("has no flange"), "{why}");
+        }
+        let wheel = builtin_profile("jm3-worn").unwrap();
+        let rail = builtin_profile("cn60-gauge-ground").unwrap();
+        assert_eq!(pair_implausibility(&wheel, &rail), None);
     }
 
     #[test]

@@ -275,7 +275,9 @@ pub fn shared_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resu
 }
 
 /// The wheel and the rail checked for their kind and their plausibility
-/// ([`crate::contact::profile_plausibility`]); an error names `wheel` or `rail`.
+/// ([`crate::contact::profile_plausibility::pair_implausibility`]: 1000 times off, no flange, a
+/// stray point), before the contact is built: an error names `wheel` or `rail` and why, not the
+/// quantity a failure would later be found in (the gauge range of the track, a contact search).
 fn check_profiles(wheel: &Profile, rail: &Profile) -> Result<()> {
     for (field, profile, kind) in [
         ("wheel", wheel, ProfileKind::Wheel),
@@ -291,11 +293,11 @@ fn check_profiles(wheel: &Profile, rail: &Profile) -> Result<()> {
                 ),
             ));
         }
-        if let Some(reason) = crate::contact::profile_plausibility::implausibility(profile) {
-            return Err(LocoError::param(field, reason));
-        }
     }
-    Ok(())
+    match crate::contact::profile_plausibility::pair_implausibility(wheel, rail) {
+        Some((field, reason)) => Err(LocoError::param(field, reason)),
+        None => Ok(()),
+    }
 }
 
 fn wheel_rail_of(inputs: &WheelRailInputs) -> Result<WheelRail> {
