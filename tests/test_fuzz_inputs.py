@@ -263,6 +263,7 @@ def _profile_cases() -> list[Case]:
         (f"profile {label}", "p.txt", lambda d, b=b, k=k: profiles.load(_file(d / "p.txt", b), k))
         for label, (b, k) in cases.items()
     ]
+
     def scenario(**kw: Any) -> Any:
         run = loco.Scenario(distance=5.0, track="perfect", **{"wheel": wheel, "rail": rail, **kw})
         return loco.simulate(loco.Locomotive.default(), run)

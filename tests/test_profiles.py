@@ -82,6 +82,24 @@ def test_en15302_reference_profiles_load(shared_data: Path) -> None:
     assert rail.kind == "rail"
 
 
+def test_every_reference_profile_is_plausible_as_its_kind_only(shared_data: Path) -> None:
+    """The standards' and the benchmark's measured-style profiles pass the plausibility checks as
+    what they are and are refused, with the reason, as the other kind."""
+    en15302 = shared_data / "en15302"
+    wheels = [en15302 / f"RUIC519{c}.dat" for c in "ABHI"]
+    for path, kind, other in [
+        *((w, "wheel", "rail") for w in wheels),
+        (en15302 / "SUIC519A.dat", "rail", "wheel"),
+    ]:
+        assert profiles.load(path, kind).kind == kind
+        reason = "is it a wheel profile" if other == "rail" else "has no flange"
+        with pytest.raises(loco.ProfileFormatError, match=f"{path.stem}.*{reason}"):
+            profiles.load(path, other)
+    # A file that is no profile (a conicity table, three millimetres wide) is named as such.
+    with pytest.raises(loco.ProfileFormatError, match="1000 times off"):
+        profiles.load(en15302 / "ben_E1.dat", "wheel")
+
+
 def test_builtin_unknown_name_lists_the_available_ones() -> None:
     assert isinstance(profiles.builtin_names(), list)
     with pytest.raises(loco.ParameterError, match="available"):

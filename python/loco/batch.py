@@ -160,9 +160,14 @@ def run_batch(
         Give every sample its own synthesised track (stream ``i`` of the seed). Not with an
         executor or a store (a chunk would number its streams from 0).
     executor : loco.executors.Executor, optional
-        Where the chunks run (local threads, a Dask cluster); see :mod:`loco.campaign`.
+        Where the chunks run (local threads, a Dask cluster); see :mod:`loco.campaign`. An
+        executor object (``LocalExecutor(threads)``, ``DaskExecutor(address=...)``,
+        ``DaskExecutor(n_workers=...)`` for a local cluster), not a name: ``"dask"`` is refused.
     store : path, optional
-        Directory of campaign stores: finished samples are kept there and not run again.
+        Directory of campaign stores: finished samples are kept there and not run again. A
+        path that is a file or cannot be written is refused before any work; a second process
+        writing the same campaign fails at once naming the first
+        (:class:`loco.store_lock.StoreBusyError`).
     chunk_size : int, optional
         Samples per chunk of a campaign, a whole number >= 1 (default: the executor's choice).
 
