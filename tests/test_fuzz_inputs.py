@@ -399,6 +399,13 @@ def _executor_cases() -> list[Case]:
             lambda _: executors.executor_from_options(scheduler="::::"),
         )
     )
+    out.append(
+        (
+            "a scheduler address where a web server answers",
+            "not a Dask scheduler",
+            lambda _: executors.DaskExecutor(address=f"tcp://127.0.0.1:{_web_server()}"),
+        )
+    )
     # Nothing listens on port 1: refused at once, or at worst after the 5 s connect timeout.
     out.append(
         (
@@ -472,6 +479,24 @@ def _cli_cases() -> list[Case]:
             ),
         ),
     ]
+
+
+def _web_server() -> int:
+    """The port of a local server that answers every connection as a web server would (an
+    HTTP error), in a daemon thread of this process."""
+    import socket
+    import threading
+
+    server = socket.create_server(("127.0.0.1", 0))
+
+    def answer() -> None:
+        while True:
+            connection, _ = server.accept()
+            with connection:
+                connection.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n")
+
+    threading.Thread(target=answer, daemon=True).start()
+    return int(server.getsockname()[1])
 
 
 def _file(path: Path, data: bytes) -> Path:

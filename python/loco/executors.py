@@ -409,13 +409,19 @@ def check_scheduler_address(address: str, origin: str = "scheduler") -> str:
 
 def _connect(distributed: Any, address: str) -> Any:
     """A client of the scheduler at ``address``, or a :class:`loco.LocoError` within
-    :data:`CONNECT_TIMEOUT` s when it cannot be reached."""
+    :data:`CONNECT_TIMEOUT` s when it cannot be reached, or when what answers there is not a
+    Dask scheduler (a web server's reply read as Dask's frames asks for exabytes)."""
     check_scheduler_address(address)
     try:
         return distributed.Client(address, timeout=f"{CONNECT_TIMEOUT}s")
     except (OSError, TimeoutError) as e:
         raise _loco.LocoError(
             f"cannot reach the Dask scheduler at {address} within {CONNECT_TIMEOUT:g} s: {e}"
+        ) from None
+    except Exception as e:  # any other failure of the handshake is the address's
+        raise _loco.LocoError(
+            f"cannot reach the Dask scheduler at {address}: what answers there is not a Dask "
+            f"scheduler ({type(e).__name__}: {e})"
         ) from None
 
 
