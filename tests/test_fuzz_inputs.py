@@ -344,6 +344,19 @@ def _file_cases() -> list[Case]:
             ),
         ),
         (
+            "sections file without sections",
+            "c.csv:0: no sections",
+            lambda d: loco.simulate(
+                loco.Locomotive.default(),
+                loco.Scenario(
+                    name="S_norm",
+                    distance=10.0,
+                    track="perfect",
+                    curve=str(_file(d / "c.csv", b"kind,length_m\n")),
+                ),
+            ),
+        ),
+        (
             "sections with a BOM",
             None,
             lambda d: loco.simulate(
