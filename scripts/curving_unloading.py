@@ -46,7 +46,7 @@ def run_case(
         distance=distance,
         lead_in=curving.LEAD_IN,
         yaw_damper=dampers.PRESETS[damper],
-        curve=case.sections(straight),
+        curve=case.sections(straight, run_m=curving.LEAD_IN + distance),
         track="perfect",
     )
     return loco.simulate(vehicle, scenario), straight + case.transition_m

@@ -9,6 +9,7 @@ import json
 import os
 import random
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -156,7 +157,10 @@ def test_damaged_files_are_detected_and_rerun(
     data = bytearray(flipped.read_bytes())
     data[len(data) // 2] ^= 0xFF
     flipped.write_bytes(bytes(data))
-    (directory / "samples" / ".part-x.123.tmp").write_bytes(b"half a file")  # a killed writer's
+    # A killed writer's temporary file: this host, a process id that no longer runs.
+    dead = int(Path("/proc/sys/kernel/pid_max").read_text()) + 1
+    tmp = directory / "samples" / f".part-x.{socket.gethostname()}.{dead}.tmp"
+    tmp.write_bytes(b"half a file")
     main(["campaign", "status", str(tmp_path)])
     with pytest.warns(CorruptStoreWarning) as caught:
         rerun = run_campaign(design, names(), scenario=SCENARIO, store=tmp_path, chunk_size=4,

@@ -74,3 +74,22 @@ def test_bad_sections_are_named() -> None:
                 {"kind": "transition", "length_m": 10.0, "cant_run_off_m": 20.0},
             ]
         )
+
+
+def test_a_run_beyond_a_design_ending_straight_continues_on_straight_track() -> None:
+    """The design ends in a transition (which runs out to straight track); the run goes on 150 m
+    beyond it: the wheelsets come back to the centre of straight track. A design that ends in
+    the circular curve is refused for the same run, naming `distance`."""
+    curve = [
+        {"kind": "straight", "length_m": 10.0},
+        {"kind": "transition", "length_m": 40.0},
+        {"kind": "curve", "length_m": 60.0, "radius_m": 1200.0, "cant_mm": 50.0,
+         "direction": "left"},
+        {"kind": "transition", "length_m": 40.0},
+    ]  # fmt: skip
+    result = _run(curve, distance=300.0)
+    y = result.channel("wheelset1_y")
+    assert np.abs(y).max() > 1e-3  # in the curve
+    assert abs(y[-1]) < 2e-4  # on straight track after the design
+    with pytest.raises(loco.ParameterError, match=r"`distance`.*`curve` design ends at 110 m"):
+        _run(curve[:3], distance=300.0)

@@ -135,7 +135,7 @@ import loco
 vehicle = loco.Locomotive.default()
 fine = loco.Scenario(name="S_high", fastsim_grid=(50, 50))
 plain = loco.Scenario(name="S_high")
-many = np.linspace(0.1, 20.0, 200_000)
+many = np.linspace(0.1, 20.0, 100_000)  # the most frequencies a call takes, about 50 s of work
 calls = {
     "critical_speed_linear": lambda: loco.critical_speed(vehicle, fine, method="linear",
                                                          tolerance=1e-300, low=1.0, high=1000.0),

@@ -39,19 +39,24 @@ def test_bad_points_raise_parameter_errors() -> None:
 
 
 def test_text_files_errors_name_file_and_line(tmp_path: Path) -> None:
+    jm3 = profiles.builtin("jm3-new")
+    points = "".join(f"{y * 1e3:.6f} {z * 1e3:.6f}\n" for y, z in zip(jm3.y, jm3.z, strict=True))
     good = tmp_path / "wheel.txt"
-    good.write_text("# y z in mm\n-2 0.1\n-1 0.05\n0 0\n1 -0.05\n2 -0.1\n")
+    good.write_text("# y z in mm\n" + points)
     p = profiles.load(good, "wheel")
-    assert p.name == "wheel" and p.y[0] == pytest.approx(-2e-3)
+    assert p.name == "wheel" and p.y[0] == pytest.approx(jm3.y[0], abs=1e-9)
     bad = tmp_path / "bad.txt"
     bad.write_text("0 0\n1 1\n1,5 x\n3 3\n4 4\n")
     with pytest.raises(loco.ProfileFormatError, match=r"bad.txt:3"):
         profiles.load(bad, "wheel")
+    cn60 = profiles.builtin("cn60")
+    rows = [f"{y * 1e3:.6f} {z * 1e3:.6f}" for y, z in zip(cn60.y, cn60.z, strict=True)]
+    rows.insert(2, rows[0])  # a point that goes back in y, on line 3
     unsorted = tmp_path / "unsorted.txt"
-    unsorted.write_text("0 0\n1 1\n0.5 1\n3 3\n4 4\n5 5\n")
+    unsorted.write_text("\n".join(rows) + "\n")
     with pytest.raises(loco.ProfileFormatError, match=r"unsorted.txt:3"):
         profiles.load(unsorted, "rail")
-    assert len(profiles.load(unsorted, "rail", drop_backtracking=True).y) == 5
+    assert len(profiles.load(unsorted, "rail", drop_backtracking=True).y) == len(cn60.y)
     with pytest.raises(loco.ParameterError, match="kind"):
         profiles.load(good)
     with pytest.raises(loco.LocoIOError):
@@ -75,6 +80,24 @@ def test_en15302_reference_profiles_load(shared_data: Path) -> None:
     rail = profiles.load(shared_data / "en15302" / "SUIC519A.dat", "rail")
     assert wheel.y[0] == pytest.approx(-0.070)
     assert rail.kind == "rail"
+
+
+def test_every_reference_profile_is_plausible_as_its_kind_only(shared_data: Path) -> None:
+    """The standards' and the benchmark's measured-style profiles pass the plausibility checks as
+    what they are and are refused, with the reason, as the other kind."""
+    en15302 = shared_data / "en15302"
+    wheels = [en15302 / f"RUIC519{c}.dat" for c in "ABHI"]
+    for path, kind, other in [
+        *((w, "wheel", "rail") for w in wheels),
+        (en15302 / "SUIC519A.dat", "rail", "wheel"),
+    ]:
+        assert profiles.load(path, kind).kind == kind
+        reason = "is it a wheel profile" if other == "rail" else "has no flange"
+        with pytest.raises(loco.ProfileFormatError, match=f"{path.stem}.*{reason}"):
+            profiles.load(path, other)
+    # A file that is no profile (a conicity table, three millimetres wide) is named as such.
+    with pytest.raises(loco.ProfileFormatError, match="1000 times off"):
+        profiles.load(en15302 / "ben_E1.dat", "wheel")
 
 
 def test_builtin_unknown_name_lists_the_available_ones() -> None:

@@ -219,7 +219,9 @@ def test_stages_request_what_they_demand(run: tuple[Path, str]) -> None:
 def test_rerun_skips_finished_stages(
     run: tuple[Path, str], capsys: pytest.CaptureFixture[str]
 ) -> None:
-    out, _ = run
+    out, first = run
+    # The first run (with --no-progress) printed where each stage's samples came from.
+    assert "[monte_carlo] samples: 0 from the store, " in first
     markers = {s: (out / s / MARKER).stat().st_mtime_ns for s in STAGES}
     assert main([*ARGS, "--out", str(out)]) == 0
     log = capsys.readouterr().out
@@ -253,6 +255,10 @@ def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, st
     assert "[monte_carlo] output monte_carlo/monte_carlo.csv is changed or truncated since the " \
         "stage finished: running again" in lines  # fmt: skip
     assert [line for line in lines if line.endswith("running")] == ["[monte_carlo] running"]
+    # Without progress bars the stage still says where its samples came from: all the store.
+    (count,) = [line for line in lines if line.startswith("[monte_carlo] samples: ")]
+    reused = int(count.split()[2])
+    assert reused > 0 and count == f"[monte_carlo] samples: {reused} from the store, 0 run"
     assert table.read_bytes() == whole
     assert sorted((out / "monte_carlo" / "store").rglob("part-*.parquet")) == parts
 

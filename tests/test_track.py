@@ -91,13 +91,35 @@ def test_measured_file_round_trip(tmp_path: Path) -> None:
 def test_malformed_files_name_file_and_line(tmp_path: Path) -> None:
     path = tmp_path / "bad.csv"
     path.write_text("0,1,2,3,4\n1,1,2,3,4\n0.5,1,2,3,4\n")
-    with pytest.raises(loco.ProfileFormatError, match=r"bad.csv:3:.*does not increase"):
+    with pytest.raises(loco.TrackFormatError, match=r"bad.csv:3:.*does not increase"):
         track.load(str(path))
     path.write_text("0,1,2,3,4\n1,nan,2,3,4\n")
-    with pytest.raises(loco.ProfileFormatError, match=r"bad.csv:2:.*vertical"):
+    with pytest.raises(loco.TrackFormatError, match=r"bad.csv:2:.*vertical"):
         track.load(str(path))
     with pytest.raises(loco.LocoIOError):
         track.load(str(tmp_path / "missing.csv"))
+
+
+def test_a_first_row_is_data_unless_it_has_no_number_and_a_bom_is_skipped(
+    tmp_path: Path,
+) -> None:
+    rows = "".join(f"{0.5 * i},{i % 3},0,0,0\n" for i in range(100))
+    plain, bom, typo = (tmp_path / n for n in ("plain.csv", "bom.csv", "typo.csv"))
+    plain.write_text(rows)
+    bom.write_bytes(b"\xef\xbb\xbf" + rows.encode())
+    a, b = (track.load(str(p), run_in=0.0) for p in (plain, bom))
+    # The byte-order mark is not read as a header: the first row (vertical 0 mm at 0 m) is kept.
+    assert a.length == b.length == pytest.approx(49.5)
+    np.testing.assert_array_equal(a.vertical, b.vertical)
+    typo.write_text("0,1,2x,0,0\n" + rows)
+    with pytest.raises(loco.TrackFormatError, match=r"typo.csv:1: not a number"):
+        track.load(str(typo))
+    gap = tmp_path / "gap.csv"
+    gap.write_text(rows + "10049.5,0,0,0,0\n")
+    with pytest.raises(loco.TrackFormatError, match=r"gap.csv:101: a gap of 10000.000 m"):
+        track.load(str(gap))
+    with pytest.raises(loco.ParameterError, match="`run_in`"):
+        track.load(str(plain), run_in=60.0)
 
 
 def test_plot_draws_psd_against_target() -> None:

@@ -114,7 +114,7 @@ def test_vehicle_from_a_parameter_file(tmp_path: Path) -> None:
     with pytest.raises(loco.ParameterError, match=r"heavier\.toml:2: .*`carbody\.mass`.*source"):
         loco.Locomotive.from_toml(path)
     path.write_text("[carbody\n", encoding="utf-8")
-    with pytest.raises(loco.ProfileFormatError, match=r"heavier\.toml:1"):
+    with pytest.raises(loco.VehicleFormatError, match=r"heavier\.toml:1"):
         loco.Locomotive.from_toml(path)
     with pytest.raises(loco.LocoIOError):
         loco.Locomotive.from_toml(tmp_path / "missing.toml")

@@ -31,6 +31,7 @@ from loco._loco import (
     DerailmentError,
     DivergenceError,
     EquilibriumError,
+    FileFormatError,
     InternalError,
     LocoError,
     LocoIOError,
@@ -38,6 +39,8 @@ from loco._loco import (
     ParameterRangeError,
     ProfileFormatError,
     SimulationError,
+    TrackFormatError,
+    VehicleFormatError,
     __version__,
 )
 from loco.batch import BatchResult, run_batch
@@ -60,6 +63,7 @@ __all__ = [
     "DerailmentError",
     "DivergenceError",
     "EquilibriumError",
+    "FileFormatError",
     "FrequencyResponse",
     "InternalError",
     "LocoError",
@@ -74,6 +78,8 @@ __all__ = [
     "Scenario",
     "SimulationError",
     "SimulationResult",
+    "TrackFormatError",
+    "VehicleFormatError",
     "__version__",
     "batch",
     "channels",

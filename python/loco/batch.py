@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from loco import _loco
+from loco import _loco, field_types
 from loco.channels import channel_kinds_of
 from loco.simulation import RUN_STATISTICS, Scenario, SimulationResult
 from loco.vehicle import Locomotive
@@ -148,8 +148,8 @@ def run_batch(
         Wheel and rail, speed, distance, track, yaw damper
         (default: ``Scenario(name="S_high")``).
     threads : int, optional
-        Worker threads (default or 0: one per core, as ``loco-batch --threads 0``). Results do
-        not depend on it.
+        Worker threads (default or 0: one per core, as ``loco-batch --threads 0``, with or
+        without ``store``). Results do not depend on it.
     seed : int, optional
         Track seed (default: the scenario's).
     progress : bool
@@ -160,22 +160,34 @@ def run_batch(
         Give every sample its own synthesised track (stream ``i`` of the seed). Not with an
         executor or a store (a chunk would number its streams from 0).
     executor : loco.executors.Executor, optional
-        Where the chunks run (local threads, a Dask cluster); see :mod:`loco.campaign`.
+        Where the chunks run (local threads, a Dask cluster); see :mod:`loco.campaign`. An
+        executor object (``LocalExecutor(threads)``, ``DaskExecutor(address=...)``,
+        ``DaskExecutor(n_workers=...)`` for a local cluster), not a name: ``"dask"`` is refused.
     store : path, optional
-        Directory of campaign stores: finished samples are kept there and not run again.
+        Directory of campaign stores: finished samples are kept there and not run again. A
+        path that is a file or cannot be written is refused before any work; a second process
+        writing the same campaign fails at once naming the first
+        (:class:`loco.store_lock.StoreBusyError`).
     chunk_size : int, optional
-        Samples per chunk of a campaign (default: the executor's choice).
+        Samples per chunk of a campaign, a whole number >= 1 (default: the executor's choice).
 
     Raises
     ------
     loco.ParameterError
         Wrong shape, unknown name, NaN or a non-physical value; the message names the row and
-        column. Failures while running do not raise: they are flagged in ``status``.
+        column. ``params`` must hold real numbers (strings, complex numbers, bools and objects
+        are refused, not converted); ``names`` must be a sequence of names, not one string.
+        Failures while running do not raise: they are flagged in ``status``.
     KeyboardInterrupt
         Ctrl-C: the batch stops within a few integration steps.
     """
     from loco import campaign
 
+    names = field_types.names("names", names)
+    threads = None if threads is None else field_types.whole("threads", threads, high=1024)
+    if chunk_size is not None:
+        chunk_size = field_types.whole("chunk_size", chunk_size, low=1)
+    params = field_types.real_array("params", params)
     if executor is not None or store is not None or campaign.current() is not None:
         return campaign.run_campaign(
             params,
@@ -193,14 +205,12 @@ def run_batch(
         )
     vehicle = vehicle or Locomotive.default()
     scenario = scenario or Scenario(name="S_high")
-    x = np.asarray(params, dtype=np.float64)
+    x = params
     if x.ndim != 2:
         raise _loco.ParameterError(
             f"invalid input `params`: must be a 2-D (samples x parameters) array, got shape "
             f"{x.shape}"
         )
-    if threads is not None and threads < 0:
-        raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 0, got {threads}")
     keep = [int(i) for i in histories]
     if any(i < 0 for i in keep):
         raise _loco.ParameterError(f"invalid input `histories`: negative index in {keep}")

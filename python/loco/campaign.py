@@ -24,11 +24,10 @@ from __future__ import annotations
 import contextlib
 import functools
 import hashlib
-import json
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextvars import ContextVar
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -36,12 +35,13 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from loco import _loco
+from loco import _loco, field_types
 from loco.batch import STATUS_NAMES, BatchResult, history_results
 from loco.channels import channel_kinds_of
 from loco.executors import BatchJob, Chunk, Executor, LocalExecutor
 from loco.simulation import RUN_STATISTICS, SETTINGS, Scenario
-from loco.store import CampaignStore, campaign_key, file_sha256
+from loco.store import CAMPAIGN_FILE, CampaignStore, campaign_key, describe_damage, file_sha256
+from loco.store_lock import check_store_root
 from loco.vehicle import Locomotive
 
 __all__ = ["CampaignContext", "campaign_inputs", "current", "run_campaign", "using"]
@@ -56,13 +56,23 @@ META_COLUMNS = (
 )  # fmt: skip
 
 
+@dataclass
+class SampleCount:
+    """Samples of the campaigns of a :func:`using` block: read back from the store, and run."""
+
+    reused: int = 0
+    ran: int = 0
+
+
 @dataclass(frozen=True)
 class CampaignContext:
-    """Defaults for every ``loco.run_batch`` inside :func:`using`."""
+    """Defaults for every ``loco.run_batch`` inside :func:`using`, and the count of its
+    samples (``samples``: from the store and run, over every campaign of the block)."""
 
     executor: Executor | None = None
     store: Path | None = None
     chunk_size: int | None = None
+    samples: SampleCount = field(default_factory=SampleCount)
 
 
 _CONTEXT: ContextVar[CampaignContext | None] = ContextVar("loco_campaign", default=None)
@@ -77,12 +87,28 @@ def using(
 ) -> Iterator[CampaignContext]:
     """Run every ``loco.run_batch`` in the block as a campaign on ``executor`` (default local
     threads) with its samples kept under ``store`` (default: not kept)."""
+    executor, chunk_size = _checked(executor, chunk_size)
     context = CampaignContext(executor, None if store is None else Path(store), chunk_size)
     token = _CONTEXT.set(context)
     try:
         yield context
     finally:
         _CONTEXT.reset(token)
+
+
+def _checked(executor: Any, chunk_size: Any) -> tuple[Executor | None, int | None]:
+    """``executor`` (an :class:`Executor` or None; a name such as ``"dask"`` is refused with
+    the accepted values) and ``chunk_size`` (None or a whole number >= 1), checked."""
+    if executor is not None and not isinstance(executor, Executor):
+        raise field_types.wrong_type(
+            "executor",
+            "a loco.executors.Executor (LocalExecutor(threads), DaskExecutor(address=...) or "
+            "DaskExecutor(n_workers=...)); None runs on local threads",
+            executor,
+        )
+    if chunk_size is not None:
+        chunk_size = field_types.whole("chunk_size", chunk_size, low=1)
+    return executor, chunk_size
 
 
 def current() -> CampaignContext | None:
@@ -200,7 +226,10 @@ def run_campaign(
     context = current() or CampaignContext()
     vehicle = vehicle or Locomotive.default()
     scenario = scenario or Scenario(name="S_high")
-    x = np.asarray(params, dtype=np.float64)
+    names = field_types.names("names", names)
+    x = field_types.real_array("params", params)
+    executor, chunk_size = _checked(executor, chunk_size)
+    threads = None if threads is None else field_types.whole("threads", threads, high=1024)
     if x.ndim != 2 or x.shape[1] != len(names):
         raise _loco.ParameterError(
             f"invalid input `params`: must be a 2-D (samples x {len(names)} parameters) array, "
@@ -212,8 +241,10 @@ def run_campaign(
     keep = {int(i) for i in histories}
     if any(i < 0 or i >= len(x) for i in keep):
         raise _loco.ParameterError(f"invalid input `histories`: index out of range in {keep}")
-    executor = executor or context.executor or LocalExecutor(threads)
     store = store if store is not None else context.store
+    if store is not None:
+        store = check_store_root(store)  # a file or read-only place fails before any work
+    executor = executor or context.executor or LocalExecutor(threads)
     n = len(x)
     track_seed = int(scenario.seed if seed is None else seed)
     scenario.native(seed=seed)  # a bad scenario fails here, before any chunk is sent
@@ -227,7 +258,11 @@ def run_campaign(
     sink = None
     if store is not None:
         sink = CampaignStore(store, key, n, meta={"inputs": inputs, "created": time.ctime()})
-        stored = sink.load().frame
+        try:
+            stored = sink.load().frame
+        except BaseException:
+            sink.close()
+            raise
         if len(stored):
             rows = stored["sample"].to_numpy(dtype=np.int64)
             metrics[rows] = stored[metric_names].to_numpy(dtype=np.float64)
@@ -236,10 +271,9 @@ def run_campaign(
                 messages[int(i)] = str(m)
             done[rows] = True
     n_reused = int(done.sum())
+    context.samples.reused += n_reused
     todo = np.flatnonzero(~done | np.isin(np.arange(n), sorted(keep))).astype(np.int64)
     size = chunk_size or context.chunk_size or executor.default_chunk_size(len(todo))
-    if size < 1:
-        raise _loco.ParameterError(f"invalid parameter `chunk_size`: must be >= 1, got {size}")
     chunks = _chunks(todo, x, int(size), keep)
     job = BatchJob(
         vehicle=vehicle,
@@ -248,12 +282,13 @@ def run_campaign(
         seed=seed,
         per_sample_track=per_sample_track,
     )
-    bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None
     kept: dict[int, Any] = {}
     # Samples read back from the store did not run here: their statistics stay NaN.
     statistics = np.full((n, len(RUN_STATISTICS)), np.nan)
     start = time.perf_counter()
+    bar = None
     try:
+        bar = _Bar(n, n_reused, int((status[done] != 0).sum())) if progress else None
         for result in executor.map_chunks(job, chunks, bar.chunk_progress if bar else None):
             if result.metric_names != metric_names:
                 raise _loco.InternalError(f"batch metrics {result.metric_names} != {metric_names}")
@@ -265,6 +300,7 @@ def run_campaign(
             for i, m in zip(idx, result.messages, strict=True):
                 messages[int(i)] = m
             kept.update(result.histories)
+            context.samples.ran += int(new.sum())
             if sink is not None and new.any():
                 sink.append(_frame(idx[new], x, names, result, new, track_seed, inputs, key))
             done[idx] = True
@@ -275,6 +311,8 @@ def run_campaign(
     finally:
         if bar:
             bar.close()
+        if sink is not None:
+            sink.close()
     return BatchResult(
         params=x,
         names=list(names),
@@ -356,6 +394,9 @@ class _Bar:
 def load_campaign(directory: str | Path) -> pd.DataFrame:
     """The stored samples of the campaign store ``directory`` (``<root>/<key16>``) as a frame,
     one row per sample in design order (``store.to_xarray()`` for an ``xarray.Dataset``)."""
-    meta = json.loads((Path(directory) / "campaign.json").read_text(encoding="utf-8"))
+    description = Path(directory) / CAMPAIGN_FILE
+    meta, damage = describe_damage(description)
+    if meta is None:
+        raise _loco.LocoIOError(f"cannot access `{description}`: it {damage}")
     store = CampaignStore(Path(directory).parent, meta["key"], meta["n_samples"], writable=False)
     return store.load().frame

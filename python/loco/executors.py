@@ -32,6 +32,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
+from loco.field_types import whole, wrong_type
 from loco.simulation import Scenario
 from loco.track import Track
 from loco.vehicle import Locomotive
@@ -43,6 +44,7 @@ __all__ = [
     "DaskExecutor",
     "Executor",
     "LocalExecutor",
+    "check_scheduler_address",
     "executor_from_options",
     "require_distributed",
     "run_chunk",
@@ -210,9 +212,9 @@ class LocalExecutor(Executor):
     one per core), as ``loco.run_batch`` runs a batch."""
 
     def __init__(self, threads: int | None = None) -> None:
-        if threads is not None and threads < 1:
-            raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
-        self.threads = threads
+        # 0 is one thread per core, as in `loco.run_batch` and `loco-batch --threads 0`.
+        threads = None if threads is None else whole("threads", threads, high=1024)
+        self.threads = threads or None
         self.slots = threads or os.cpu_count() or 1
 
     def default_chunk_size(self, n_samples: int) -> int:
@@ -295,7 +297,7 @@ class DaskExecutor(Executor):
             raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
         self._owned: list[Any] = []
         if client is None and address is not None:
-            client = distributed.Client(address)
+            client = _connect(distributed, address)
             self._owned.append(client)
         elif client is None:
             cluster = distributed.LocalCluster(
@@ -369,6 +371,60 @@ class DaskExecutor(Executor):
         self._owned.clear()
 
 
+#: How long a connection to a Dask scheduler may take, s: a scheduler on a network answers in
+#: well under a second, so a few seconds tell "unreachable" without the client's 30 s default.
+CONNECT_TIMEOUT = 5.0
+
+
+def check_scheduler_address(address: str, origin: str = "scheduler") -> str:
+    """``address`` if it is a Dask scheduler address (``tcp://host:port``, ``host:port``, or
+    another protocol Dask knows, ``tls://``, ``inproc://``, ...), else a
+    :class:`loco.ParameterError` naming ``origin`` (the option or environment variable)."""
+    require_distributed()
+    from distributed.comm import parse_address
+    from distributed.comm.addressing import parse_host_port
+    from distributed.comm.registry import backends
+
+    if not isinstance(address, str) or not address.strip():
+        raise wrong_type(origin, "a scheduler address such as tcp://host:8786", address)
+
+    def refuse(why: str) -> _loco.ParameterError:
+        return _loco.ParameterError(
+            f"invalid parameter `{origin}`: {address!r} is not a scheduler address ({why}); "
+            "expected e.g. tcp://host:8786"
+        )
+
+    try:
+        protocol, location = parse_address(address)
+        if protocol not in backends:
+            raise refuse(f"unknown protocol {protocol!r}; known: {', '.join(sorted(backends))}")
+        if protocol != "inproc":
+            host, port = parse_host_port(location)
+            if not host or any(c.isspace() for c in host) or not 0 < port < 65536:
+                raise refuse("a host and a port 1-65535 are needed")
+    except (ValueError, TypeError) as e:
+        raise refuse(str(e)) from None
+    return address
+
+
+def _connect(distributed: Any, address: str) -> Any:
+    """A client of the scheduler at ``address``, or a :class:`loco.LocoError` within
+    :data:`CONNECT_TIMEOUT` s when it cannot be reached, or when what answers there is not a
+    Dask scheduler (a web server's reply read as Dask's frames asks for exabytes)."""
+    check_scheduler_address(address)
+    try:
+        return distributed.Client(address, timeout=f"{CONNECT_TIMEOUT}s")
+    except (OSError, TimeoutError) as e:
+        raise _loco.LocoError(
+            f"cannot reach the Dask scheduler at {address} within {CONNECT_TIMEOUT:g} s: {e}"
+        ) from None
+    except Exception as e:  # any other failure of the handshake is the address's
+        raise _loco.LocoError(
+            f"cannot reach the Dask scheduler at {address}: what answers there is not a Dask "
+            f"scheduler ({type(e).__name__}: {e})"
+        ) from None
+
+
 def executor_from_options(
     *, workers: int | None = None, scheduler: str | None = None, threads: int | None = None
 ) -> Executor:
@@ -379,7 +435,10 @@ def executor_from_options(
         raise _loco.ParameterError(
             "invalid parameter `workers`: give --workers or --scheduler, not both"
         )
-    scheduler = scheduler or (None if workers is not None else os.environ.get(SCHEDULER_ENV))
+    if scheduler is not None:
+        check_scheduler_address(scheduler, "--scheduler")
+    elif workers is None and os.environ.get(SCHEDULER_ENV):
+        scheduler = check_scheduler_address(os.environ[SCHEDULER_ENV], SCHEDULER_ENV)
     if scheduler:
         return DaskExecutor(address=scheduler, threads=threads)
     if workers is not None:

@@ -13,9 +13,12 @@ import math
 import numbers
 from typing import Any
 
+import numpy as np
+import numpy.typing as npt
+
 from loco import _loco
 
-__all__ = ["flag", "pair", "real", "text", "whole", "wrong_type"]
+__all__ = ["flag", "names", "pair", "real", "real_array", "text", "whole", "wrong_type"]
 
 #: Largest whole number a setting takes: the largest TOML integer (64-bit signed), the form in
 #: which settings reach the core, as the study file's do.
@@ -77,3 +80,50 @@ def flag(name: str, value: Any) -> bool:
     if isinstance(value, bool) or type(value).__name__ == "bool_":
         return bool(value)
     raise wrong_type(name, "True or False", value)
+
+
+def real_array(name: str, value: Any) -> npt.NDArray[np.float64]:
+    """``value`` as a float64 array: numbers (int, float), not strings, complex numbers, bools,
+    objects or ragged lists, which numpy would convert (a complex part dropped, ``"1"`` read as
+    1.0) or refuse with a raw error."""
+    try:
+        array = np.asarray(value)
+    except (ValueError, TypeError) as e:
+        raise wrong_type(name, "an array of real numbers", value) from e
+    if array.dtype.kind not in "iuf":
+        raise _loco.ParameterError(
+            f"invalid input `{name}`: expected an array of real numbers, got dtype "
+            f"{array.dtype} ({_KIND_NAMES.get(array.dtype.kind, 'not numbers')})"
+        )
+    return np.asarray(array, dtype=np.float64)
+
+
+#: What a numpy dtype kind that is not a real number holds, for messages.
+_KIND_NAMES = {
+    "b": "booleans",
+    "c": "complex numbers: their imaginary parts would be dropped",
+    "U": "strings",
+    "S": "bytes",
+    "O": "Python objects (mixed types, None, or rows of different lengths)",
+    "M": "dates",
+    "m": "time spans",
+    "V": "records",
+}
+
+
+def names(name: str, value: Any) -> list[str]:
+    """``value`` as a list of names: a sequence of strings, not one string (which would be read
+    as its characters)."""
+    if isinstance(value, (str, bytes)):
+        raise _loco.ParameterError(
+            f"invalid parameter `{name}`: expected a sequence of names, got the single string "
+            f"{value!r} (write [{value!r}] for one)"
+        )
+    try:
+        items = list(value)
+    except TypeError:
+        raise wrong_type(name, "a sequence of names (str)", value) from None
+    for item in items:
+        if not isinstance(item, str):
+            raise wrong_type(name, "a sequence of names (str)", item)
+    return items

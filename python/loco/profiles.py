@@ -20,6 +20,7 @@ from loco._loco import (
     jm3_tread_profile,
     load_profile_file,
 )
+from loco.field_types import real
 
 __all__ = ["Profile", "builtin", "builtin_names", "jm3", "load"]
 
@@ -36,11 +37,16 @@ def load(
     ``kind`` ('wheel' or 'rail') is required for text files and, when given for a SIMPACK file,
     must match the file's type. ``drop_backtracking`` drops points of a text file that do not
     advance in y instead of raising :class:`loco.ProfileFormatError`. ``smoothing_length`` (m)
-    > 0 smooths the profile (cubic smoothing spline, see :meth:`Profile.smoothed`); use about
-    2e-3 for measured or rounded profiles so that curvatures are meaningful.
+    > 0 smooths the profile (cubic smoothing spline, see :meth:`Profile.smoothed`; at most
+    0.01 m); use about 2e-3 for measured or rounded profiles so that curvatures are meaningful.
+    A loaded profile is checked for plausibility (width, height, a wheel's flange and monotonic
+    tread, a rail head falling from its top): a file in the wrong unit, a wheel file given as the
+    rail or a stray point is a :class:`loco.ProfileFormatError` saying so.
     """
+    length = real("smoothing_length", smoothing_length)
     profile = load_profile_file(os.fspath(path), kind, drop_backtracking)
-    return profile.smoothed(smoothing_length) if smoothing_length > 0.0 else profile
+    # Any value but 0 goes to the core, which refuses a negative, NaN or over-long one.
+    return profile if length == 0.0 else profile.smoothed(length)
 
 
 def builtin(name: str) -> Profile:

@@ -119,7 +119,11 @@ class Scenario:
     each ``kind`` (``"straight"``, ``"transition"``, ``"curve"``) and ``length_m``; a curve adds
     ``radius_m``, ``cant_mm`` and ``direction`` (``"left"`` or ``"right"``), a transition
     (clothoid, linear cant run-off) may give ``cant_run_off_m``; s = 0 is where the leading
-    wheelset starts; irregularities come on top. ``integrator`` is the time integration scheme
+    wheelset starts; irregularities come on top. ``curve=[]`` is refused (leave it out for
+    straight track). A run longer than its design continues on straight, level track after the
+    last section when the design ends straight (a straight, or a transition, which runs out to
+    straight track); beyond a design that ends in a circular curve it is refused naming
+    ``distance`` (docs/errors.md). ``integrator`` is the time integration scheme
     (:data:`INTEGRATORS`) with its fixed ``step`` (s; without it the scheme's own,
     :data:`INTEGRATOR_STEPS`): ``"etdrk4"`` (default), RK4's four stages with the gearbox
     bearings' stiff springs and the linear dampers' series springs solved exactly, at 2 ms:

@@ -20,7 +20,8 @@ Every write is atomic (temporary file, ``fsync``, ``os.replace``, ``fsync`` of t
 and a reader trusts a part only if the SHA-256 of its bytes matches the one in its name and its
 rows are those the name says: a truncated or corrupted part is renamed ``*.corrupt``, named in a
 :class:`CorruptStoreWarning`, and its samples count as missing (the campaign reruns them).
-One process writes a campaign at a time.
+One process writes a campaign at a time: a writer holds the store's advisory lock
+(:mod:`loco.store_lock`), and a second one fails at once naming the holder.
 """
 
 from __future__ import annotations
@@ -38,6 +39,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
+
+from loco.store_lock import StoreLock, remove_stale_temporaries, temporary_name
 
 if TYPE_CHECKING:
     import xarray
@@ -78,7 +81,7 @@ def atomic_write(path: str | Path, data: bytes) -> Path:
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    tmp = temporary_name(path)
     with open(tmp, "wb") as f:
         f.write(data)
         f.flush()
@@ -111,7 +114,8 @@ class StoreState:
 class CampaignStore:
     """The store of one campaign in ``<root>/<key[:16]>/`` (created, or checked to be the same
     campaign). ``meta`` is the description written to ``campaign.json`` with ``key`` and
-    ``n_samples``."""
+    ``n_samples``. A writable store holds the store's lock until :meth:`close` (a second
+    writer gets :class:`loco.store_lock.StoreBusyError`); use it in a ``with`` block."""
 
     def __init__(
         self,
@@ -127,21 +131,46 @@ class CampaignStore:
         self.key = key
         self.n_samples = int(n_samples)
         self.writable = writable
+        self._lock: StoreLock | None = None
+        if writable:
+            self.directory.mkdir(parents=True, exist_ok=True)
+            self._lock = StoreLock(self.directory)
+        try:
+            self._open(meta)
+        except BaseException:
+            self.close()
+            raise
+
+    def _open(self, meta: Mapping[str, Any] | None) -> None:
+        key = self.key
         description = self.directory / CAMPAIGN_FILE
         known = _read_json(description) if description.is_file() else None
         if known is not None and known.get("key") != key:
             raise FileExistsError(
                 f"{description} belongs to another campaign (key {known.get('key')})"
             )
-        if not writable:
+        if not self.writable:
             return
         if known is None:
             data = {"key": key, "n_samples": self.n_samples, **dict(meta or {})}
             text = json.dumps(data, indent=2, sort_keys=True, default=str) + "\n"
             atomic_write(description, text.encode("utf-8"))
         self.samples_dir.mkdir(parents=True, exist_ok=True)
-        for tmp in self.samples_dir.glob(".*.tmp"):
-            tmp.unlink(missing_ok=True)  # left by a killed writer: never renamed, never trusted
+        # Left by a killed writer: never renamed, never trusted.
+        remove_stale_temporaries(self.directory)
+        remove_stale_temporaries(self.samples_dir)
+
+    def close(self) -> None:
+        """Releases the store's lock (a read-only store holds none)."""
+        if self._lock is not None:
+            self._lock.release()
+            self._lock = None
+
+    def __enter__(self) -> CampaignStore:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
 
     def append(self, frame: pd.DataFrame) -> Path:
         """Store the rows of one finished chunk (a ``sample`` column and the rest) atomically;
@@ -244,14 +273,46 @@ class CampaignStatus:
     n_failed: int
     n_parts: int
     corrupt: list[Path]
+    #: Why ``campaign.json`` cannot be used (then nothing else is counted), None when it can.
+    damage: str | None = None
+
+
+def describe_damage(description: Path) -> tuple[dict[str, Any] | None, str | None]:
+    """The content of the ``campaign.json`` at ``description``, or None and why it is unusable
+    (unreadable, not JSON, no key of 64 hex digits, a key that is not the directory's, no whole
+    number of samples)."""
+    try:
+        meta = json.loads(description.read_text(encoding="utf-8"))
+    except OSError as e:
+        return None, f"cannot be read: {e.strerror or e}"
+    except UnicodeDecodeError as e:
+        return None, f"is not UTF-8 text (byte offset {e.start})"
+    except json.JSONDecodeError as e:
+        return None, f"is not valid JSON (line {e.lineno}, column {e.colno}: {e.msg})"
+    if not isinstance(meta, dict):
+        return None, f"holds a JSON {type(meta).__name__}, not an object"
+    key = meta.get("key")
+    if not isinstance(key, str) or re.fullmatch(r"[0-9a-f]{64}", key) is None:
+        return None, f"has no campaign key of 64 hex digits (key: {key!r})"
+    if key[:16] != description.parent.name:
+        return None, (
+            f"names the campaign {key[:16]}…, not this directory's ({description.parent.name}): "
+            "it was copied from another store"
+        )
+    n = meta.get("n_samples")
+    if isinstance(n, bool) or not isinstance(n, int) or n < 0:
+        return None, f"has no whole number of samples (n_samples: {n!r})"
+    return meta, None
 
 
 def find_campaigns(root: str | Path) -> list[CampaignStatus]:
-    """Every campaign store under ``root`` (at any depth), with its progress."""
+    """Every campaign store under ``root`` (at any depth), with its progress; a store whose
+    ``campaign.json`` is damaged is listed with :attr:`CampaignStatus.damage` saying why."""
     out = []
     for description in sorted(Path(root).rglob(CAMPAIGN_FILE)):
-        meta = _read_json(description)
-        if meta is None or "key" not in meta:
+        meta, damage = describe_damage(description)
+        if meta is None:
+            out.append(CampaignStatus(description.parent, {}, 0, 0, 0, 0, [], damage=damage))
             continue
         store = CampaignStore(
             description.parent.parent, meta["key"], meta["n_samples"], writable=False

@@ -167,8 +167,13 @@ def load(
     path: str, *, step: float | None = None, run_in: float = 30.0, length: float | None = None
 ) -> Track:
     """Reads a measured irregularity CSV (distance m, vertical, alignment, cross_level,
-    gauge in mm), resampled to ``step`` m (default: the file's median spacing). ``length``
-    (m): raise if the file is shorter than the run needs."""
+    gauge in mm; UTF-8, a byte-order mark skipped), resampled to ``step`` m (default: the file's
+    median spacing). ``length`` (m): raise if the file is shorter than the run needs.
+
+    Raises :class:`loco.TrackFormatError` naming the file and line for a file that is not UTF-8,
+    a first row with a number and a field that is not one (a header has no numbers), a gap
+    between rows longer than 10 times the median spacing, distances that do not increase; and
+    :class:`loco.ParameterError` for a ``run_in`` longer than the file."""
     return Track(_loco.load_track(str(path), step, run_in, length))
 
 

@@ -31,6 +31,7 @@ import numpy.typing as npt
 
 from loco import _loco
 from loco.channels import channel_table
+from loco.field_types import names, pair, real, real_array, text
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
@@ -71,7 +72,7 @@ def _output_units(vehicle: Locomotive, outputs: Sequence[str]) -> dict[str, str]
 def _frequencies(frequencies: npt.ArrayLike | None) -> npt.NDArray[np.float64]:
     if frequencies is None:
         return np.linspace(0.1, 20.0, 200)
-    f = np.asarray(frequencies, dtype=np.float64)
+    f = real_array("frequencies", frequencies)
     if f.ndim != 1:
         raise _loco.ParameterError(
             f"invalid parameter `frequencies`: must be one-dimensional, got shape {f.shape}"
@@ -186,10 +187,12 @@ def frequency_response(
     four channels) to ``outputs`` (recorded channel names, default :data:`DEFAULT_OUTPUTS`) at
     ``frequencies`` (Hz, positive; default 0.1–20 Hz).
 
-    Raises :class:`loco.ParameterError` for an unknown channel or input name and for a
-    non-positive or non-finite frequency."""
-    ins = list(INPUTS if inputs is None else inputs)
-    outs = list(DEFAULT_OUTPUTS if outputs is None else outputs)
+    Raises :class:`loco.ParameterError` for an unknown channel or input name, a string where a
+    list of names is expected, frequencies that are not real numbers, non-positive, non-finite,
+    above 1 kHz or more than 100 000 of them, and for a scenario with a ``curve`` (the response
+    about a steady curve is not implemented; it is refused, not taken on straight track)."""
+    ins = names("inputs", INPUTS if inputs is None else inputs)
+    outs = names("outputs", DEFAULT_OUTPUTS if outputs is None else outputs)
     f = _frequencies(frequencies)
     h, speed, wheelset_x = _loco.frequency_response(
         vehicle.native,
@@ -293,20 +296,22 @@ def response_psd(
 ) -> ResponsePsd:
     """Output PSDs, rms values and W_y of the linearised vehicle on a random track of
     ``spectrum`` (default the scenario's) in the wavelength ``band`` (m, default the scenario's),
-    amplitudes times ``amplitude_scale``; ``outputs`` and ``frequencies`` as in
-    :func:`frequency_response`."""
-    outs = list(DEFAULT_OUTPUTS if outputs is None else outputs)
+    amplitudes times ``amplitude_scale``; ``outputs``, ``frequencies`` and the refusal of a
+    ``curve`` as in :func:`frequency_response`."""
+    outs = names("outputs", DEFAULT_OUTPUTS if outputs is None else outputs)
     f = _frequencies(frequencies)
-    name = scenario.spectrum if spectrum is None else spectrum
-    lo, hi = scenario.band if band is None else band
+    name = text("spectrum", scenario.spectrum if spectrum is None else spectrum)
+    lo, hi = pair("band", scenario.band if band is None else band)
+    lo, hi = real("band[0]", lo), real("band[1]", hi)
+    amplitude_scale = real("amplitude_scale", amplitude_scale)
     psd, rms, wy, zeta = _loco.response_psd(
         vehicle.native,
         scenario.native(),
         outs,
         f,
         spectrum=name,
-        band=(float(lo), float(hi)),
-        amplitude_scale=float(amplitude_scale),
+        band=(lo, hi),
+        amplitude_scale=amplitude_scale,
     )
     return ResponsePsd(
         frequencies=f,

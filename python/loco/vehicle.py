@@ -19,6 +19,11 @@ from loco.field_types import real, wrong_type
 
 __all__ = ["STUDY_PARAMETERS", "Locomotive", "Parameter", "body_names", "dof_names"]
 
+#: The origin of the embedded default vehicle, as its errors name it.
+DEFAULT_ORIGIN = "<default vehicle>"
+#: The origin errors name for a vehicle given as ``toml_text`` without an ``origin``.
+TEXT_ORIGIN = "<toml_text>"
+
 #: The six study parameters (SPEC §6): alias -> parameter file key.
 STUDY_PARAMETERS: dict[str, str] = dict(_loco.study_parameters())
 
@@ -44,12 +49,15 @@ class Locomotive:
     """
 
     toml_text: str | None = None
-    origin: str = "<default vehicle>"
+    origin: str = DEFAULT_ORIGIN
     overrides: Mapping[str, float] = field(default_factory=dict)
     #: The built vehicle (``loco._loco.Vehicle``), shared by every call that takes this one.
     native: _loco.Vehicle = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        if self.toml_text is not None and self.origin == DEFAULT_ORIGIN:
+            # Errors in given text name the text, not the embedded file it replaces.
+            object.__setattr__(self, "origin", TEXT_ORIGIN)
         overrides = _checked(self.overrides)
         object.__setattr__(self, "overrides", overrides)
         object.__setattr__(self, "native", _loco.Vehicle(self.toml_text, self.origin, overrides))
@@ -80,11 +88,7 @@ class Locomotive:
     @classmethod
     def from_toml(cls, path: str | Path) -> Locomotive:
         """A vehicle from a parameter file in the format of the embedded one."""
-        path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as e:
-            raise _loco.LocoIOError(f"cannot access `{path}`: {e}") from e
+        text = _loco.read_text_file(str(Path(path)), "vehicle")
         return cls(toml_text=text, origin=str(path))
 
     def replace(self, overrides: Mapping[str, float] | None = None, /, **kw: float) -> Locomotive:

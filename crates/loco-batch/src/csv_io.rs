@@ -22,11 +22,8 @@ pub struct Samples {
 /// the file and line.
 pub fn read_samples(path: &Path) -> Result<Samples> {
     let label = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
-        path: label.clone(),
-        reason: e.to_string(),
-    })?;
-    let table = CsvTable::parse(&text, &label)?;
+    let text = loco_core::text_file::read_text(path, loco_core::error::FileKind::Study)?;
+    let table = CsvTable::parse(&text, &label, loco_core::error::FileKind::Study)?;
     let mut values = Vec::new();
     for (line, cells) in &table.rows {
         for (cell, name) in cells.iter().zip(&table.names) {

@@ -41,6 +41,7 @@
 //! other (`spectrum`, `seed` or `band` with a perfect or measured track; `name` with `wheel`;
 //! `speed` with `speed_kmh`) are refused.
 
+use loco_core::error::FileKind;
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::Scenario;
 use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
@@ -89,23 +90,21 @@ pub struct Study {
     pub channels: Option<Vec<String>>,
 }
 
-fn read(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path).map_err(|e| LocoError::Io {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    })
+fn read(path: &Path, kind: FileKind) -> Result<String> {
+    loco_core::text_file::read_text(path, kind)
 }
 
 /// Reads and resolves the study file at `path`.
 pub fn load_study(path: &Path) -> Result<Study> {
-    let text = read(path)?;
+    let text = read(path, FileKind::Study)?;
     let origin = path.display().to_string();
-    let file: StudyFile = toml::from_str(&text).map_err(|e| LocoError::toml(&origin, &text, &e))?;
+    let file: StudyFile =
+        toml::from_str(&text).map_err(|e| LocoError::toml(FileKind::Study, &origin, &text, &e))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut base = match &file.vehicle.file {
         Some(f) => {
             let p = dir.join(f);
-            ParameterSet::from_toml_str(&read(&p)?, &p.display().to_string())?
+            ParameterSet::from_toml_str(&read(&p, FileKind::Vehicle)?, &p.display().to_string())?
         }
         None => ParameterSet::default_vehicle(),
     };

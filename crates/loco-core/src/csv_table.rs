@@ -6,12 +6,13 @@
 //! Measured irregularity files (`track::measured`) are not tables of this kind: their header is
 //! optional and their columns fixed by position.
 
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 
 /// A table split into cells (no cell interpreted yet).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CsvTable<'a> {
     path: &'a str,
+    kind: FileKind,
     /// Column names, trimmed.
     pub names: Vec<&'a str>,
     /// 1-based line of the header.
@@ -21,15 +22,15 @@ pub struct CsvTable<'a> {
 }
 
 impl<'a> CsvTable<'a> {
-    /// Splits `text`, the content of the file `path`. Errors: no header row, an empty column
+    /// Splits `text`, the content of the file `path` (a file of `kind`). Errors: no header row, an empty column
     /// name, a row with more or fewer cells than the header has names.
-    pub fn parse(text: &'a str, path: &'a str) -> Result<Self> {
+    pub fn parse(text: &'a str, path: &'a str, kind: FileKind) -> Result<Self> {
         let mut lines = text
             .lines()
             .enumerate()
             .map(|(i, l)| (i + 1, l.trim()))
             .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-        let error = |line: usize, reason: String| parse_error(path, line, reason);
+        let error = |line: usize, reason: String| parse_error(kind, path, line, reason);
         let (header_line, header) = lines.next().ok_or_else(|| {
             error(
                 0,
@@ -53,6 +54,7 @@ impl<'a> CsvTable<'a> {
         }
         Ok(Self {
             path,
+            kind,
             names,
             header_line,
             rows,
@@ -61,16 +63,12 @@ impl<'a> CsvTable<'a> {
 
     /// A parse error at `line` of the table's file.
     pub fn error(&self, line: usize, reason: impl Into<String>) -> LocoError {
-        parse_error(self.path, line, reason)
+        parse_error(self.kind, self.path, line, reason)
     }
 }
 
-fn parse_error(path: &str, line: usize, reason: impl Into<String>) -> LocoError {
-    LocoError::Parse {
-        path: path.to_string(),
-        line,
-        reason: reason.into(),
-    }
+fn parse_error(kind: FileKind, path: &str, line: usize, reason: impl Into<String>) -> LocoError {
+    LocoError::parse(kind, path, line, reason)
 }
 
 #[cfg(test)]
@@ -80,7 +78,7 @@ mod tests {
     #[test]
     fn lines_are_counted_in_the_file_with_comments_and_blanks() {
         let text = "# a comment\n\n a , b \n1, 2\n\n# more\n3,4\n";
-        let t = CsvTable::parse(text, "f.csv").unwrap();
+        let t = CsvTable::parse(text, "f.csv", FileKind::Study).unwrap();
         assert_eq!(t.names, ["a", "b"]);
         assert_eq!(t.header_line, 3);
         assert_eq!(t.rows, [(4, vec!["1", "2"]), (7, vec!["3", "4"])]);
@@ -88,11 +86,11 @@ mod tests {
 
     #[test]
     fn bad_tables_name_file_and_line() {
-        let e = CsvTable::parse("# only a comment\n", "f.csv").unwrap_err();
+        let e = CsvTable::parse("# only a comment\n", "f.csv", FileKind::Study).unwrap_err();
         assert!(e.to_string().contains("f.csv:0: empty file"), "{e}");
-        let e = CsvTable::parse("# c\na,,b\n", "f.csv").unwrap_err();
+        let e = CsvTable::parse("# c\na,,b\n", "f.csv", FileKind::Study).unwrap_err();
         assert!(e.to_string().contains("f.csv:2: empty column name"), "{e}");
-        let e = CsvTable::parse("a,b\n1,2\n1,2,3\n", "f.csv").unwrap_err();
+        let e = CsvTable::parse("a,b\n1,2\n1,2,3\n", "f.csv", FileKind::Study).unwrap_err();
         assert!(
             e.to_string().contains("f.csv:3: 3 cells for 2 columns"),
             "{e}"

@@ -44,9 +44,11 @@ pub enum LocoError {
     #[error("invalid input `{name}`: {reason}")]
     InvalidInput { name: String, reason: String },
 
-    /// A file was read but its content is malformed. `line` is 1-based (0: the whole file).
+    /// A file was read but its content is malformed (or not UTF-8 text). `kind` says which
+    /// kind of file (each maps to its own Python class), `line` is 1-based (0: the whole file).
     #[error("{path}:{line}: {reason}")]
     Parse {
+        kind: FileKind,
         path: String,
         line: usize,
         reason: String,
@@ -92,6 +94,45 @@ pub enum LocoError {
     Interrupted,
 }
 
+/// The kinds of input file, each with its own Python error class (`loco.FileFormatError` and its
+/// subclasses), so that a malformed track file is not reported as a malformed profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    /// A wheel or rail profile (text, SIMPACK `.prw`/`.prr`).
+    Profile,
+    /// A vehicle parameter file (TOML).
+    Vehicle,
+    /// A track file: a measured irregularity CSV or a CSV of curve sections.
+    Track,
+    /// A batch study file (TOML) or samples file (CSV).
+    Study,
+}
+
+impl FileKind {
+    /// The kind's name as front ends give it (`profile`, `vehicle`, `track`, `study`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Profile => "profile",
+            Self::Vehicle => "vehicle",
+            Self::Track => "track",
+            Self::Study => "study",
+        }
+    }
+
+    /// The kind named `name` ([`Self::name`]); an error names `field` and the accepted names.
+    pub fn from_name(name: &str, field: &str) -> Result<Self> {
+        [Self::Profile, Self::Vehicle, Self::Track, Self::Study]
+            .into_iter()
+            .find(|k| k.name() == name)
+            .ok_or_else(|| {
+                LocoError::param(
+                    field,
+                    format!("expected profile, vehicle, track or study, got '{name}'"),
+                )
+            })
+    }
+}
+
 /// A number for a message: plain when of everyday size, otherwise in exponent form (`1e30`).
 fn number(x: f64) -> String {
     if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
@@ -121,11 +162,22 @@ impl LocoError {
         }
     }
 
+    /// A [`LocoError::Parse`] of a file of `kind` at `line` (1-based; 0: the whole file).
+    pub fn parse(kind: FileKind, path: &str, line: usize, reason: impl Into<String>) -> Self {
+        Self::Parse {
+            kind,
+            path: path.to_string(),
+            line,
+            reason: reason.into(),
+        }
+    }
+
     /// A [`LocoError::Parse`] for the TOML error `e` in `text`, the content of the file `path`,
     /// at the 1-based line where the error's span starts (a span starting a line counts that
     /// line; 0: no span).
-    pub fn toml(path: &str, text: &str, e: &toml::de::Error) -> Self {
+    pub fn toml(kind: FileKind, path: &str, text: &str, e: &toml::de::Error) -> Self {
         Self::Parse {
+            kind,
             path: path.to_string(),
             line: e
                 .span()

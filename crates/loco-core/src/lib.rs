@@ -11,6 +11,7 @@
 //! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
 //! - [`vehicle`]: the 90-DOF locomotive: parameters, bodies, suspension, equations of motion.
 //! - [`batch`]: many runs in parallel (rayon), failed samples flagged, deterministic.
+//! - [`text_file`]: input files read as UTF-8 text, other encodings refused by file and byte.
 //! - [`csv_table`]: comma-separated tables with a header row, errors naming file and line.
 
 pub mod batch;
@@ -20,6 +21,7 @@ pub mod dampers;
 pub mod error;
 pub mod kept;
 pub mod metrics;
+pub mod text_file;
 pub mod toml_fields;
 pub mod track;
 pub mod vehicle;

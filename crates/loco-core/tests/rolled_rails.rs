@@ -270,7 +270,9 @@ fn measured_track_beyond_the_contact_is_refused_with_its_line() {
     };
     // 40 mm of gauge widening: 20 mm per wheel plus the thin flange's clearance is off the table.
     match run(&rows(700, 3, 40.0)) {
-        Err(LocoError::Parse { path, line, reason }) => {
+        Err(LocoError::Parse {
+            path, line, reason, ..
+        }) => {
             assert_eq!((path.as_str(), line), ("measured.csv", 700));
             assert!(reason.contains("gauge deviation 40.00 mm"), "{reason}");
         }

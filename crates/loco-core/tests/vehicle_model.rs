@@ -2,6 +2,7 @@
 //! on perfect track, symmetry, Klingel's kinematic wavelength, determinism, divergence and
 //! derailment (stability: `vehicle_stability.rs`).
 
+use loco_core::contact::builtin::conical::KNIFE_EDGE;
 use loco_core::contact::hertz_table::HertzShapeTable;
 use loco_core::contact::kalker::KalkerTable;
 use loco_core::contact::profile::ProfileKind;
@@ -268,7 +269,8 @@ fn conical_scenario(lambda: f64, speed: f64, distance: f64) -> Scenario {
         .line(0.03)
         .arc(0.01, -2.0 * flank)
         .line(0.03)
-        .build("sharp crown", ProfileKind::Rail, 2e-4)
+        // The knife edge of the idealised conical pair, by its name: on it a wheel needs no flange.
+        .build(KNIFE_EDGE, ProfileKind::Rail, 2e-4)
         .unwrap();
     let mut s = perfect("S_norm", speed, distance);
     s.wheel = wheel;

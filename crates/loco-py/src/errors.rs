@@ -4,6 +4,7 @@
 //! derive from the matching built-in (`ValueError`, `OSError`, `RuntimeError`) so that generic
 //! handlers keep working.
 
+use loco_core::error::FileKind;
 use loco_core::LocoError as CoreError;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyKeyboardInterrupt};
@@ -35,9 +36,28 @@ create_exception!(
 );
 create_exception!(
     loco._loco,
-    ProfileFormatError,
+    FileFormatError,
     LocoError,
-    "A profile, track or study file is malformed; the message names the file and line."
+    "An input file is malformed or not UTF-8 text; the message names the file and line \
+     (subclasses say which kind of file; a batch study or samples file raises this class)."
+);
+create_exception!(
+    loco._loco,
+    ProfileFormatError,
+    FileFormatError,
+    "A wheel or rail profile file is malformed; the message names the file and line."
+);
+create_exception!(
+    loco._loco,
+    VehicleFormatError,
+    FileFormatError,
+    "A vehicle parameter file is not valid TOML or not UTF-8; the message names the file and line."
+);
+create_exception!(
+    loco._loco,
+    TrackFormatError,
+    FileFormatError,
+    "A measured-track or curve-sections file is malformed; the message names the file and line."
 );
 create_exception!(
     loco._loco,
@@ -90,7 +110,12 @@ pub fn to_py_err(err: CoreError) -> PyErr {
         | CoreError::InvalidParameterInFile { .. }
         | CoreError::InvalidInput { .. } => ParameterError::new_err(msg),
         CoreError::OutOfRange { .. } => ParameterRangeError::new_err(msg),
-        CoreError::Parse { .. } => ProfileFormatError::new_err(msg),
+        CoreError::Parse { kind, .. } => match kind {
+            FileKind::Profile => ProfileFormatError::new_err(msg),
+            FileKind::Vehicle => VehicleFormatError::new_err(msg),
+            FileKind::Track => TrackFormatError::new_err(msg),
+            FileKind::Study => FileFormatError::new_err(msg),
+        },
         CoreError::Io { .. } => LocoIOError::new_err(msg),
         CoreError::Contact(_) => ContactError::new_err(msg),
         CoreError::Diverged { .. } => DivergenceError::new_err(msg),
@@ -189,7 +214,10 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LocoError", py.get_type::<LocoError>())?;
     m.add("ParameterError", py.get_type::<ParameterError>())?;
     m.add("ParameterRangeError", py.get_type::<ParameterRangeError>())?;
+    m.add("FileFormatError", py.get_type::<FileFormatError>())?;
     m.add("ProfileFormatError", py.get_type::<ProfileFormatError>())?;
+    m.add("VehicleFormatError", py.get_type::<VehicleFormatError>())?;
+    m.add("TrackFormatError", py.get_type::<TrackFormatError>())?;
     m.add("LocoIOError", py.get_type::<LocoIOError>())?;
     m.add("ContactError", py.get_type::<ContactError>())?;
     m.add("SimulationError", py.get_type::<SimulationError>())?;

@@ -18,6 +18,7 @@ mod mode_rules;
 mod names;
 mod scenario;
 mod schema;
+mod text_file;
 mod track;
 mod vehicle;
 mod vehicle_handle;
@@ -45,5 +46,6 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;
+    text_file::register(m)?;
     Ok(())
 }

@@ -11,7 +11,7 @@ import argparse
 from pathlib import Path
 
 from loco.commands.arguments import UsageError
-from loco.store import find_campaigns
+from loco.store import CAMPAIGN_FILE, find_campaigns
 
 NAME = "campaign"
 HELP = "show the progress of stored campaigns (samples done, failed, damaged files)"
@@ -29,7 +29,8 @@ def _describe(meta: dict[str, object]) -> str:
         return ""
     scenario = inputs.get("scenario", {})
     case = scenario.get("name") if isinstance(scenario, dict) else None
-    names = ", ".join(str(n) for n in inputs.get("names", []))
+    columns = inputs.get("names", [])
+    names = ", ".join(str(n) for n in columns) if isinstance(columns, list) else "?"
     return f"{case or 'custom scenario'}; columns {names}; loco {inputs.get('loco_version')}"
 
 
@@ -42,6 +43,12 @@ def run(args: argparse.Namespace) -> int:
         return 1
     total = done = 0
     for c in campaigns:
+        if c.damage is not None:
+            print(
+                f"{c.directory}: damaged {CAMPAIGN_FILE}: it {c.damage}; its samples cannot be "
+                "counted (a rerun of the campaign writes a new description)"
+            )
+            continue
         total += c.n_samples
         done += c.n_done
         state = "complete" if c.n_done == c.n_samples else f"{c.n_samples - c.n_done} missing"

@@ -391,8 +391,11 @@ def reproduce(
         """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
         if force:
             shutil.rmtree(stage_dir / "store", ignore_errors=True)
-        with campaign.using(executor, stage_dir / "store", chunk_size=chunk_size):
+        with campaign.using(executor, stage_dir / "store", chunk_size=chunk_size) as context:
             yield
+        # Printed with or without progress bars: where the stage's samples came from.
+        count = context.samples
+        log(f"[{stage_dir.name}] samples: {count.reused} from the store, {count.ran} run")
 
     runner = StageRunner(
         out_dir,

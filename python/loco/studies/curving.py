@@ -69,14 +69,17 @@ class CurveCase:
     curve_m: float = 200.0
     direction: str = "left"
 
-    def sections(self, straight_m: float) -> list[dict[str, float | str]]:
-        """The design: ``straight_m`` of straight, the transition, the circular curve."""
+    def sections(self, straight_m: float, run_m: float = 0.0) -> list[dict[str, float | str]]:
+        """The design: ``straight_m`` of straight, the transition, the circular curve, which
+        runs on beyond its assessed ``curve_m`` to cover a run whose leading wheelset travels
+        ``run_m`` m (a run may not go beyond a design that ends in a curve)."""
+        curve_m = max(self.curve_m, run_m - straight_m - self.transition_m)
         return [
             {"kind": "straight", "length_m": straight_m},
             {"kind": "transition", "length_m": self.transition_m},
             {
                 "kind": "curve",
-                "length_m": self.curve_m,
+                "length_m": curve_m,
                 "radius_m": self.radius_m,
                 "cant_mm": self.cant_mm,
                 "direction": self.direction,
@@ -324,7 +327,7 @@ def run_curving(stage: CurvingStage, runtime: Runtime | None = None) -> CurvingS
                 distance=planned.distance,
                 lead_in=lead_in,
                 yaw_damper=law,
-                curve=case.sections(straight),
+                curve=case.sections(straight, run_m=lead_in + planned.distance),
                 integrator=stage.integrator,
                 **track,
             )

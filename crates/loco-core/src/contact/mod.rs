@@ -33,6 +33,7 @@ pub mod linear_parameters;
 pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;
+pub mod profile_plausibility;
 pub mod profile_simpack;
 mod quadrature;
 pub mod setup;

@@ -11,7 +11,7 @@
 //! - SIMPACK (`.prw` wheel, `.prr` rail): see [`super::profile_simpack`].
 
 use super::profile::{Profile, ProfileKind};
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 use std::path::Path;
 
 /// Loads a profile file. SIMPACK files are recognised by their extension (`.prw`, `.prr`); any
@@ -23,10 +23,7 @@ pub fn load_profile(
     drop_backtracking: bool,
 ) -> Result<Profile> {
     let label = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
-        path: label.clone(),
-        reason: e.to_string(),
-    })?;
+    let text = crate::text_file::read_text(path, FileKind::Profile)?;
     let name = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -48,15 +45,15 @@ pub fn load_profile(
             parse_text(&text, &label, kind, drop_backtracking)?
         }
     };
-    Ok(profile.renamed(name))
+    let profile = profile.renamed(name);
+    if let Some(reason) = super::profile_plausibility::implausibility(&profile) {
+        return Err(parse_error(&label, 0, reason));
+    }
+    Ok(profile)
 }
 
 pub(super) fn parse_error(path: &str, line: usize, reason: impl Into<String>) -> LocoError {
-    LocoError::Parse {
-        path: path.to_string(),
-        line,
-        reason: reason.into(),
-    }
+    LocoError::parse(FileKind::Profile, path, line, reason)
 }
 
 /// Points with the 1-based line each came from.

@@ -28,6 +28,11 @@ pub struct CubicSpline {
     m: Vec<f64>,
 }
 
+/// Longest smoothing length, m: the smoothing removes features shorter than it, and a wheel's
+/// flange throat radius and its contact patches (semi-axes of some 5–10 mm) are about 10 mm;
+/// 2 mm suits measured profiles.
+pub const MAX_SMOOTHING_LENGTH: f64 = 0.01;
+
 impl CubicSpline {
     /// Builds the spline; `y` must be strictly increasing and finite, at least 3 points.
     /// `name` names the data in errors.
@@ -83,16 +88,20 @@ impl CubicSpline {
 
     /// Natural cubic **smoothing** spline (Reinsch 1967; Green & Silverman 1994, ch. 2): minimises
     /// Σ (z_i − f(y_i))² + λ ∫ f''² dy over the points, with λ in m³ here chosen from a smoothing
-    /// length L (m) as λ = L⁴ / h̄ (h̄ the mean point spacing), so that features shorter than about
+    /// length L (m, at most [`MAX_SMOOTHING_LENGTH`]) as λ = L⁴ / h̄ (h̄ the mean point spacing), so that features shorter than about
     /// L are smoothed out and longer ones kept (the spline's equivalent kernel has a bandwidth of
     /// order (λ·h̄)^(1/4) = L). Straight lines are reproduced exactly and, away from the ends,
     /// so are parabolas (constant curvature). `length = 0` interpolates.
     pub fn smoothing(name: &str, y: &[f64], z: &[f64], length: f64) -> Result<Self> {
         let interpolating = Self::new(name, y, z)?;
-        if !(length.is_finite() && length >= 0.0) {
+        if !(length.is_finite() && (0.0..=MAX_SMOOTHING_LENGTH).contains(&length)) {
             return Err(LocoError::param(
-                "smoothing length",
-                format!("must be finite and >= 0, got {length}"),
+                "smoothing_length",
+                format!(
+                    "must be finite and in [0, {MAX_SMOOTHING_LENGTH}] m, got {length}: \
+                     features shorter than the length are removed, and beyond 10 mm that \
+                     takes the flange's throat radius and the contact patch's curvatures"
+                ),
             ));
         }
         if length == 0.0 {

@@ -10,7 +10,9 @@
 //! the cant raises the outer rail, so the track plane's roll θ (positive: left rail higher, the
 //! convention of `vehicle::rail_plane`) is `θ = −sign(κ)·atan(c / 2b)` with 2b the distance
 //! between the nominal contact points. Beyond the last section the end values continue (a run
-//! may end inside a steady curve); before the first, its start values.
+//! may end inside a steady curve; after a design that ends straight it runs on straight track,
+//! and a scenario refuses a run that would leave a design ending in a curve); before the first,
+//! its start values.
 //!
 //! Along s the design gives κ(s), dκ/ds, θ(s), dθ/ds, the heading Ψ(s) = ∫κ ds and its
 //! integral ∫Ψ ds (exact for the piecewise linear κ): the track frame of a body at s yaws at
@@ -204,55 +206,7 @@ impl TrackDesign {
     /// radius the contact table can follow (see [`min_radius_of`]). Errors name the section
     /// (1-based) and the field.
     pub fn new(sections: &[DesignSection], half_distance: f64, min_radius: f64) -> Result<Self> {
-        if sections.is_empty() {
-            return Err(LocoError::param("curve", "no sections"));
-        }
-        for (i, section) in sections.iter().enumerate() {
-            check_positive(&section_field(i, "length_m"), section.length())?;
-            match *section {
-                DesignSection::Curve { radius, cant, .. } => {
-                    if !(radius.is_finite() && radius >= min_radius) {
-                        return Err(section_error(
-                            i,
-                            "radius_m",
-                            format!(
-                                "{radius} m is below {min_radius:.0} m, the smallest radius \
-                                 the contact table can follow (its largest rolling radius \
-                                 difference gives pure rolling down to that radius)"
-                            ),
-                        ));
-                    }
-                    if !(cant.is_finite() && (0.0..=MAX_CANT).contains(&cant)) {
-                        return Err(section_error(
-                            i,
-                            "cant_mm",
-                            format!(
-                                "{:.1} mm is outside 0 … {:.0} mm",
-                                cant * 1e3,
-                                MAX_CANT * 1e3
-                            ),
-                        ));
-                    }
-                }
-                DesignSection::Transition {
-                    cant_run_off: Some(run_off),
-                    length,
-                } => {
-                    check_positive(&section_field(i, "cant_run_off_m"), run_off)?;
-                    if run_off > length {
-                        return Err(section_error(
-                            i,
-                            "cant_run_off_m",
-                            format!(
-                                "the transition ({length} m) is shorter than the cant run-off \
-                                 asked for ({run_off} m)"
-                            ),
-                        ));
-                    }
-                }
-                _ => {}
-            }
-        }
+        check_sections(sections, min_radius)?;
         let ends = |i: Option<usize>| {
             i.and_then(|i| sections.get(i))
                 .and_then(DesignSection::ends)
@@ -331,6 +285,74 @@ impl TrackDesign {
             .iter()
             .all(|p| p.kappa == 0.0 && p.kappa_slope == 0.0 && p.cant == 0.0 && p.cant_slope == 0.0)
     }
+}
+
+/// Checks `sections` on their own: at least one, positive lengths, finite radii of at least
+/// `min_radius` (m; 0 checks only that they are finite and positive), cants within
+/// [`MAX_CANT`], run-offs within their transitions. Errors name the section (1-based) and the
+/// field.
+pub fn check_sections(sections: &[DesignSection], min_radius: f64) -> Result<()> {
+    if sections.is_empty() {
+        return Err(LocoError::param("curve", "no sections"));
+    }
+    for (i, section) in sections.iter().enumerate() {
+        check_positive(&section_field(i, "length_m"), section.length())?;
+        match *section {
+            DesignSection::Curve { radius, cant, .. } => {
+                if !radius.is_finite() {
+                    return Err(section_error(
+                        i,
+                        "radius_m",
+                        format!(
+                            "must be a finite number of metres, got {radius} (straight \
+                                 track is a `straight` section)"
+                        ),
+                    ));
+                }
+                check_positive(&section_field(i, "radius_m"), radius)?;
+                if radius < min_radius {
+                    return Err(section_error(
+                        i,
+                        "radius_m",
+                        format!(
+                            "{radius} m is below {min_radius:.0} m, the smallest radius \
+                                 the contact table can follow (its largest rolling radius \
+                                 difference gives pure rolling down to that radius)"
+                        ),
+                    ));
+                }
+                if !(cant.is_finite() && (0.0..=MAX_CANT).contains(&cant)) {
+                    return Err(section_error(
+                        i,
+                        "cant_mm",
+                        format!(
+                            "{:.1} mm is outside 0 … {:.0} mm",
+                            cant * 1e3,
+                            MAX_CANT * 1e3
+                        ),
+                    ));
+                }
+            }
+            DesignSection::Transition {
+                cant_run_off: Some(run_off),
+                length,
+            } => {
+                check_positive(&section_field(i, "cant_run_off_m"), run_off)?;
+                if run_off > length {
+                    return Err(section_error(
+                        i,
+                        "cant_run_off_m",
+                        format!(
+                            "the transition ({length} m) is shorter than the cant run-off \
+                                 asked for ({run_off} m)"
+                        ),
+                    ));
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 impl Piece {

@@ -9,7 +9,7 @@
 
 use super::design::{CurveDirection, DesignSection};
 use crate::csv_table::CsvTable;
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 use crate::toml_fields::read_table;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -125,7 +125,7 @@ pub fn resolve_sections(settings: &[SectionSetting]) -> Result<Vec<DesignSection
 
 /// Sections from CSV text (header row of field names); `path` names the file in errors.
 pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>> {
-    let table = CsvTable::parse(text, path)?;
+    let table = CsvTable::parse(text, path, FileKind::Track)?;
     let known = SECTION_FIELDS;
     let header = table.header_line;
     if let Some(bad) = table.names.iter().find(|n| !known.contains(n)) {
@@ -173,10 +173,7 @@ pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>>
 
 /// Sections from a CSV file.
 pub fn load_sections_csv(path: &Path) -> Result<Vec<SectionSetting>> {
-    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    })?;
+    let text = crate::text_file::read_text(path, FileKind::Track)?;
     parse_sections_csv(&text, &path.display().to_string())
 }
 
@@ -221,6 +218,17 @@ impl CurveSetting {
 
     /// The sections, a file relative to `dir`.
     pub fn sections(&self, dir: &Path) -> Result<Vec<DesignSection>> {
+        let sections = self.sections_given(dir)?;
+        if sections.is_empty() {
+            return Err(LocoError::param(
+                "curve",
+                "no sections: give at least one section, or leave `curve` out for straight track",
+            ));
+        }
+        Ok(sections)
+    }
+
+    fn sections_given(&self, dir: &Path) -> Result<Vec<DesignSection>> {
         match self {
             Self::File(file) => {
                 // As the track: a name that is no file is the setting's fault, named by it.

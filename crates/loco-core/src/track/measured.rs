@@ -2,14 +2,23 @@
 //!
 //! Format: CSV, one row per measuring point, columns `distance` (m), then `vertical`,
 //! `alignment`, `cross_level`, `gauge` irregularities in **mm** (converted to m here, ×1e-3).
-//! Lines starting with `#` and blank lines are ignored; a first line that is not numeric is a
-//! header. Distances must increase strictly; they are shifted so the first point is at
-//! s = 0. The data are resampled by linear interpolation onto a uniform grid (default step:
+//! Lines starting with `#` and blank lines are ignored; a first line of five fields none of which
+//! is a number is a header (a first line with some numbers and a field that is not one is an
+//! error naming its line, not a header). Distances must increase strictly; they are shifted so the
+//! first point is at s = 0. A gap between two rows longer than [`MAX_GAP_FACTOR`] times the
+//! median spacing is refused, and so is a cosine run-in longer than the file. The data are resampled by linear interpolation onto a uniform grid (default step:
 //! the median spacing of the file), slopes by centred differences, then a cosine run-in is
 //! applied as for synthesised tracks.
 
 use super::irregularity::{TrackIrregularity, TrackOrigin};
-use crate::error::{check_non_negative, check_positive, LocoError, Result};
+use crate::error::{check_non_negative, check_positive, FileKind, LocoError, Result};
+
+/// Largest gap between two rows of a file, in multiples of its median spacing. Linear
+/// interpolation across a gap of length g removes the irregularity's wavelengths shorter than
+/// about 2g there: a file recorded every 0.25 m with a 2.5 m gap would lose the 1–5 m
+/// wavelengths of the study's band over that stretch (a missing stretch, not a coarse record).
+/// Ten times keeps files with uneven spacing (a few missed samples) readable.
+pub const MAX_GAP_FACTOR: f64 = 10.0;
 
 /// Options for reading a measured file.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -34,21 +43,15 @@ impl Default for MeasuredParams {
 
 /// Reads and validates the file at `path`.
 pub fn load_csv(path: &str, params: &MeasuredParams) -> Result<TrackIrregularity> {
-    let text = std::fs::read_to_string(path).map_err(|e| LocoError::Io {
-        path: path.to_string(),
-        reason: e.to_string(),
-    })?;
+    let text = crate::text_file::read_text(std::path::Path::new(path), FileKind::Track)?;
     parse_csv(&text, path, params)
 }
 
 /// Parses the content `text` of a file named `path` (used in error messages).
 pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<TrackIrregularity> {
     check_non_negative("run_in", params.run_in)?;
-    let parse_err = |line: usize, reason: String| LocoError::Parse {
-        path: path.to_string(),
-        line,
-        reason,
-    };
+    let parse_err =
+        |line: usize, reason: String| LocoError::parse(FileKind::Track, path, line, reason);
     let mut distance: Vec<f64> = Vec::new();
     let mut columns: [Vec<f64>; 4] = Default::default();
     let mut lines: Vec<usize> = Vec::new();
@@ -64,11 +67,31 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
             fields.iter().map(|f| f.parse::<f64>()).collect();
         let numbers = match numbers {
             Ok(n) => n,
-            Err(_) if !seen_data_line => {
+            Err(_) if !seen_data_line && fields.iter().all(|f| f.parse::<f64>().is_err()) => {
+                if fields.len() != 5 {
+                    return Err(parse_err(
+                        line_no,
+                        format!(
+                            "a header of {} names; expected 5 (distance, vertical, alignment, \
+                             cross_level, gauge)",
+                            fields.len()
+                        ),
+                    ));
+                }
                 seen_data_line = true; // a header
                 continue;
             }
-            Err(e) => return Err(parse_err(line_no, format!("not a number: {e} in `{line}`"))),
+            Err(e) => {
+                let what = if seen_data_line {
+                    String::new()
+                } else {
+                    " (a header row has no numbers)".to_string()
+                };
+                return Err(parse_err(
+                    line_no,
+                    format!("not a number: {e} in `{line}`{what}"),
+                ));
+            }
         };
         seen_data_line = true;
         if numbers.len() != 5 {
@@ -110,6 +133,30 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
     let origin = distance[0];
     distance.iter_mut().for_each(|d| *d -= origin);
     let length = distance[distance.len() - 1];
+    let median = median_spacing(&distance);
+    if let Some(k) =
+        (1..distance.len()).find(|&k| distance[k] - distance[k - 1] > MAX_GAP_FACTOR * median)
+    {
+        return Err(parse_err(
+            lines[k],
+            format!(
+                "a gap of {:.3} m after line {} is more than {MAX_GAP_FACTOR} times the file's \
+                 median spacing ({median:.3} m): linear interpolation across it would remove the \
+                 wavelengths shorter than about twice the gap; fill the gap or split the file",
+                distance[k] - distance[k - 1],
+                lines[k - 1]
+            ),
+        ));
+    }
+    if params.run_in > length {
+        return Err(LocoError::param(
+            "run_in",
+            format!(
+                "the cosine run-in of {} m is longer than {path}, which covers {length:.3} m",
+                params.run_in
+            ),
+        ));
+    }
     if let Some(required) = params.required_length {
         if required.is_nan() || length < required {
             return Err(LocoError::input(
@@ -120,7 +167,7 @@ pub fn parse_csv(text: &str, path: &str, params: &MeasuredParams) -> Result<Trac
     }
     let step = match params.step {
         Some(h) => check_positive("step", h)?,
-        None => median_spacing(&distance),
+        None => median,
     };
     let nodes = (length / step).floor() + 1.0;
     if nodes > 5.0e7 {
@@ -224,6 +271,14 @@ mod tests {
             ("0,1,2,3,4\n1,NaN,2,3,4\n", "t.csv:2:"),
             ("0,1,2,3,4\n1,x,2,3,4\n", "t.csv:2:"),
             ("0,1,2,3,4\n", "t.csv:0:"),
+            // A first row with a typo is not a header.
+            ("0,1,2x,3,4\n1,1,2,3,4\n2,1,2,3,4\n", "t.csv:1:"),
+            ("d,v,a,c\n0,1,2,3,4\n1,1,2,3,4\n", "t.csv:1:"),
+            // A 10 km gap in a file recorded every metre.
+            (
+                "0,0,0,0,0\n1,0,0,0,0\n2,0,0,0,0\n10002,0,0,0,0\n",
+                "t.csv:4: a gap of 10000.000 m",
+            ),
         ];
         for (text, expected) in cases {
             let err = parse_csv(text, "t.csv", &params()).unwrap_err().to_string();
@@ -235,6 +290,21 @@ mod tests {
         };
         let err = parse_csv("0,1,2,3,4\n1,1,2,3,4\n", "t.csv", &short).unwrap_err();
         assert!(err.to_string().contains("needs 500.000 m"));
+        let long_run_in = MeasuredParams {
+            run_in: 30.0,
+            ..params()
+        };
+        let err = parse_csv("0,1,2,3,4\n1,1,2,3,4\n", "t.csv", &long_run_in).unwrap_err();
+        assert!(err.to_string().contains("`run_in`"), "{err}");
+        assert!(matches!(err, LocoError::InvalidParameter { .. }));
+        let bad = parse_csv("0,1,2x,3,4\n1,1,2,3,4\n", "t.csv", &params()).unwrap_err();
+        assert!(matches!(
+            bad,
+            LocoError::Parse {
+                kind: FileKind::Track,
+                ..
+            }
+        ));
         assert!(matches!(
             load_csv("/nonexistent/track.csv", &params()),
             Err(LocoError::Io { .. })

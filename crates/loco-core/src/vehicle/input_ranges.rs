@@ -13,7 +13,7 @@ use crate::contact::builtin::jm3::{
     self, TreadState, MAX_CONE_SLOPE, MIN_BAND_RADIUS, MIN_CONE_SLOPE,
 };
 use crate::contact::setup::TrackSetup;
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -101,8 +101,8 @@ pub fn input_ranges(
     ranges_text: &str,
     origin: &str,
 ) -> Result<Vec<InputRange>> {
-    let file: RangesFile =
-        toml::from_str(ranges_text).map_err(|e| LocoError::toml(origin, ranges_text, &e))?;
+    let file: RangesFile = toml::from_str(ranges_text)
+        .map_err(|e| LocoError::toml(FileKind::Study, origin, ranges_text, &e))?;
     let bad = |key: &str, line: usize, reason: String| LocoError::InvalidParameterInFile {
         path: origin.to_string(),
         line,

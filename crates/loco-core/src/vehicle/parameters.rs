@@ -16,7 +16,7 @@
 
 use super::parameter_schema::{schema, spec, unknown_key_reason};
 use super::units;
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 use serde::Deserialize;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -94,8 +94,8 @@ impl ParameterSet {
             name: name.to_string(),
             reason,
         };
-        let table: toml::Table =
-            toml::from_str(text).map_err(|e| LocoError::toml(origin, text, &e))?;
+        let table: toml::Table = toml::from_str(text)
+            .map_err(|e| LocoError::toml(FileKind::Vehicle, origin, text, &e))?;
         let mut allow = BTreeSet::new();
         let mut given: Vec<(String, FileParameter, usize)> = Vec::new();
         for (top, item) in table {
@@ -168,11 +168,12 @@ impl ParameterSet {
             .filter(|k| !entries.contains_key(*k))
             .collect();
         if !missing.is_empty() {
-            return Err(LocoError::Parse {
-                path: origin.to_string(),
-                line: 0,
-                reason: format!("missing vehicle parameters: {}", missing.join(", ")),
-            });
+            return Err(LocoError::parse(
+                FileKind::Vehicle,
+                origin,
+                0,
+                format!("missing vehicle parameters: {}", missing.join(", ")),
+            ));
         }
         Ok(Self {
             entries,

@@ -61,14 +61,19 @@ impl Default for PsdSettings {
 }
 
 impl PsdSettings {
-    /// Checks every field, naming the offending one.
+    /// Checks every field, naming the offending one; the wavelengths by the name front ends
+    /// give them, `band` = (shortest, longest) m.
     pub fn validate(&self) -> Result<()> {
-        check_positive("wavelength_min", self.wavelength_min)?;
-        check_positive("wavelength_max", self.wavelength_max)?;
+        check_positive("band[0] (shortest wavelength, m)", self.wavelength_min)?;
+        check_positive("band[1] (longest wavelength, m)", self.wavelength_max)?;
         if self.wavelength_max <= self.wavelength_min {
             return Err(LocoError::param(
-                "wavelength_max",
-                format!("must exceed wavelength_min = {} m", self.wavelength_min),
+                "band",
+                format!(
+                    "({}, {}) m: give (shortest, longest) wavelength, the shortest first and \
+                     below the longest",
+                    self.wavelength_min, self.wavelength_max
+                ),
             ));
         }
         check_positive("amplitude_scale", self.amplitude_scale)?;

@@ -13,7 +13,7 @@ use super::wheel_rail_cache::{self, WheelRailInputs};
 use crate::contact::builtin::builtin_profile;
 use crate::contact::fastsim::FastsimParams;
 use crate::contact::geometry::ContactGeometry;
-use crate::contact::profile::Profile;
+use crate::contact::profile::{Profile, ProfileKind};
 use crate::contact::setup::{ContactSearchParams, TrackSetup, WheelsetSetup};
 use crate::contact::table::{ContactTable, ContactTableParams};
 use crate::dampers::Damper;
@@ -159,7 +159,35 @@ impl Scenario {
                 ),
             ));
         }
+        self.check_curve_covers_run()?;
         super::run_limits::check_cost(self)
+    }
+
+    /// A run longer than its curve design continues on straight, level track after the last
+    /// section when the design ends there (a straight, or a transition, which runs out to
+    /// straight track); a design ending in a circular curve would end in a step of curvature and
+    /// cant no track has, so a run beyond it is refused naming `distance`.
+    fn check_curve_covers_run(&self) -> Result<()> {
+        let Some(last) = self.curve.last() else {
+            return Ok(());
+        };
+        // The sections' own faults first (the smallest radius needs the contact: checked when
+        // the run builds the design).
+        crate::track::design::check_sections(&self.curve, 0.0)?;
+        let length: f64 = self.curve.iter().map(DesignSection::length).sum();
+        let run = self.lead_in + self.distance;
+        if matches!(last, DesignSection::Curve { .. }) && run > length {
+            return Err(LocoError::param(
+                "distance",
+                format!(
+                    "the leading wheelset runs to {run} m (lead_in + distance) but the `curve` \
+                     design ends at {length} m in a circular curve; lengthen the curve, or end \
+                     the design with a transition and a straight (after a design that ends \
+                     straight the run continues on straight track)"
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Track length a run needs, m.
@@ -246,7 +274,34 @@ pub fn shared_wheel_rail(parameters: &ParameterSet, scenario: &Scenario) -> Resu
         .map_err(|e| with_suspects(e, parameters))
 }
 
+/// The wheel and the rail checked for their kind and their plausibility
+/// ([`crate::contact::profile_plausibility::pair_implausibility`]: 1000 times off, no flange, a
+/// stray point), before the contact is built: an error names `wheel` or `rail` and why, not the
+/// quantity a failure would later be found in (the gauge range of the track, a contact search).
+fn check_profiles(wheel: &Profile, rail: &Profile) -> Result<()> {
+    for (field, profile, kind) in [
+        ("wheel", wheel, ProfileKind::Wheel),
+        ("rail", rail, ProfileKind::Rail),
+    ] {
+        if profile.kind() != kind {
+            return Err(LocoError::param(
+                field,
+                format!(
+                    "profile '{}' is a {} profile; the {field} must be a {field} profile",
+                    profile.name(),
+                    profile.kind().as_str()
+                ),
+            ));
+        }
+    }
+    match crate::contact::profile_plausibility::pair_implausibility(wheel, rail) {
+        Some((field, reason)) => Err(LocoError::param(field, reason)),
+        None => Ok(()),
+    }
+}
+
 fn wheel_rail_of(inputs: &WheelRailInputs) -> Result<WheelRail> {
+    check_profiles(inputs.wheel, inputs.rail)?;
     let c = inputs.contact;
     let r0 = c.nominal_radius;
     let half = c.contact_half_distance;

@@ -21,7 +21,7 @@ use super::layout::N_WHEELSETS;
 use super::linearise::LinearisationSettings;
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
-use crate::error::Result;
+use crate::error::{LocoError, Result};
 use crate::track::RailIrregularity;
 
 /// Rail inputs per wheelset (positions then slopes).
@@ -174,6 +174,14 @@ pub fn scenario_track_model_with(
     scenario: &super::scenario::Scenario,
     settings: &LinearisationSettings,
 ) -> Result<TrackInputModel> {
+    if !scenario.curve.is_empty() {
+        return Err(LocoError::param(
+            "curve",
+            "the frequency response is taken about the straight-track equilibrium; about a \
+             steady curve it is not implemented: leave `curve` out (straight track), or run \
+             `simulate` in the curve",
+        ));
+    }
     let vehicle = super::scenario::PerfectTrackVehicle::new(vehicle, scenario)?;
     let mut system = vehicle.system(scenario.speed)?;
     track_input_model_with(&mut system, settings)

@@ -13,7 +13,7 @@
 //!   track in service (a few millimetres; cant belongs to the designed track geometry).
 
 use super::wheel_rail::WheelRail;
-use crate::error::{LocoError, Result};
+use crate::error::{FileKind, LocoError, Result};
 use crate::track::{Channel, TrackIrregularity};
 
 /// Contact angle (rad) from which a touching point counts as on the flange.
@@ -82,11 +82,12 @@ impl TrackLimits {
             for (k, &line) in origin.lines.iter().enumerate() {
                 if let Some(reason) = problem(origin.channels[cross][k], origin.channels[gauge][k])
                 {
-                    return Err(LocoError::Parse {
-                        path: origin.path.clone(),
+                    return Err(LocoError::parse(
+                        FileKind::Track,
+                        &origin.path,
                         line,
                         reason,
-                    });
+                    ));
                 }
             }
             return Ok(());

@@ -11,6 +11,10 @@ use crate::contact::profile::{Profile, ProfileKind};
 use crate::contact::profile_builder::ProfileBuilder;
 use crate::error::{LocoError, Result};
 
+/// Name of the knife-edge rail: on it a wheel needs no flange
+/// (`contact::profile_plausibility::pair_implausibility`).
+pub const KNIFE_EDGE: &str = "knife edge";
+
 /// Largest equivalent conicity accepted (–): a 45° cone, well beyond worn wheels (~0.7).
 pub const MAX_CONICITY: f64 = 1.0;
 
@@ -38,7 +42,7 @@ pub fn conical_pair(conicity: f64) -> Result<(Profile, Profile)> {
         .line(0.03)
         .arc(0.01, -2.0 * flank)
         .line(0.03)
-        .build("knife edge", ProfileKind::Rail, 2e-4)?;
+        .build(KNIFE_EDGE, ProfileKind::Rail, 2e-4)?;
     Ok((wheel, rail))
 }
 

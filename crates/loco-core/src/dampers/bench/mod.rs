@@ -21,6 +21,40 @@ use crate::LocoError;
 use std::f64::consts::TAU;
 use stepping::{check_run_length, drive, run_recorded, substeps};
 
+/// Highest bench frequency, Hz. The damper laws are lumped (no oil-column inertia or wave
+/// effects, the valve's own dynamics only as modelled), meant for the vehicle's content: its
+/// rigid bodies end below about 100 Hz (the frequency response stops at 1 kHz for the same
+/// reason), and a bench beyond that is outside every law's validity.
+pub const MAX_FREQUENCY_HZ: f64 = 1_000.0;
+
+/// Largest bench amplitude, m: half the about 0.5 m a yaw damper measures between its pins, so
+/// beyond the stroke of any damper the laws describe (the study's dampers move by millimetres).
+pub const MAX_AMPLITUDE_M: f64 = 0.25;
+
+/// `value` (Hz) checked to be positive and at most [`MAX_FREQUENCY_HZ`]; errors name `name`.
+fn check_frequency(name: &str, value: f64) -> Result<f64> {
+    let f = check_positive(name, value)?;
+    if f > MAX_FREQUENCY_HZ {
+        return Err(LocoError::param(
+            name,
+            format!("{f} Hz is above {MAX_FREQUENCY_HZ} Hz, beyond the lumped damper laws' range"),
+        ));
+    }
+    Ok(f)
+}
+
+/// `value` (m) checked to be positive and at most [`MAX_AMPLITUDE_M`]; errors name `name`.
+fn check_amplitude(name: &str, value: f64) -> Result<f64> {
+    let a = check_positive(name, value)?;
+    if a > MAX_AMPLITUDE_M {
+        return Err(LocoError::param(
+            name,
+            format!("{a} m is above {MAX_AMPLITUDE_M} m, beyond any damper's stroke"),
+        ));
+    }
+    Ok(a)
+}
+
 /// The prescribed elongation of the damper.
 #[derive(Debug, Clone, PartialEq)]
 pub enum BenchMotion {
@@ -123,8 +157,8 @@ pub fn run(damper: &Damper, motion: &BenchMotion, options: &BenchOptions) -> Res
             amplitude_m,
             cycles,
         } => {
-            let f = check_positive("frequency_hz", *frequency_hz)?;
-            let a = check_positive("amplitude_m", *amplitude_m)?;
+            let f = check_frequency("frequency_hz", *frequency_hz)?;
+            let a = check_amplitude("amplitude_m", *amplitude_m)?;
             if *cycles < 1 || options.equivalent_cycles < 1 || options.equivalent_cycles > *cycles {
                 return Err(LocoError::param(
                     "cycles",
@@ -178,9 +212,9 @@ pub fn run(damper: &Damper, motion: &BenchMotion, options: &BenchOptions) -> Res
             amplitude_m,
             duration_s,
         } => {
-            let f0 = check_positive("start_frequency_hz", *start_frequency_hz)?;
-            let f1 = check_positive("end_frequency_hz", *end_frequency_hz)?;
-            let a = check_positive("amplitude_m", *amplitude_m)?;
+            let f0 = check_frequency("start_frequency_hz", *start_frequency_hz)?;
+            let f1 = check_frequency("end_frequency_hz", *end_frequency_hz)?;
+            let a = check_amplitude("amplitude_m", *amplitude_m)?;
             let duration = check_positive("duration_s", *duration_s)?;
             let f_max = f0.max(f1);
             let sample_dt = 1.0 / (f_max * options.samples_per_cycle as f64);
