@@ -110,6 +110,10 @@ def file_cases() -> list[dict[str, Any]]:
     out = []
     for key, spec in loco.parameter_schema().items():
         section, name = key.split(".")
+        if f"[{section}]" not in lines:
+            # An optional key the default file leaves out: fuzzed in a section of its own.
+            lines = [*lines, "", f"[{section}]", f'{name} = {{ value = 0, unit = "{spec.unit}"'
+                     ', source = "fuzz" }']
         header = lines.index(f"[{section}]")
         row = next(
             i for i in range(header + 1, len(lines)) if lines[i].startswith(f"{name} = {{ value = ")

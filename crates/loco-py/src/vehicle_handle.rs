@@ -140,6 +140,12 @@ impl PyVehicle {
         self.structure.total_mass()
     }
 
+    /// The bogie mass m⁺ of the EN 14363 stability limit, kg: `assessment.bogie_mass` when the
+    /// file or an override states it, else the heavier bogie's bodies.
+    fn en14363_bogie_mass(&self) -> PyResult<f64> {
+        loco_core::vehicle::bogie_mass::en14363_bogie_mass(&self.structure).map_err(to_py_err)
+    }
+
     /// The 90 × 90 mass matrix `Σ Tᵀ diag(m, m, m, Ixx, Iyy, Izz) T` (kg, kg·m, kg·m²), in
     /// coordinate order.
     fn mass_matrix<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {

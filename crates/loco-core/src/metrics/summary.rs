@@ -1,6 +1,7 @@
 //! Every metric of one simulated run as a row of named values, for the batch engine.
 
 use super::comfort::{weighted_rms, ComfortWeighting};
+use super::limit_cycle::limit_cycle;
 use super::metric_table::MetricValue;
 use super::spectral::{check_record, dominant_frequency, WelchParams, MIN_SAMPLES};
 use super::sperling::{sperling, Direction, SperlingParams};
@@ -105,6 +106,7 @@ impl RunMetrics {
         let ayc_wd_p95 = weighted_rms(ayc, fs, ComfortWeighting::Wd)?.p95;
         let nmv = 6.0 * (ayc_wd_p95.powi(2) + azc_wb_p95.max(0.0).powi(2)).sqrt();
         let ayb = records.bogie_lateral;
+        let cycle = limit_cycle(ayb, fs, &params.stability)?;
         let stability = bogie_stability(
             ayb,
             fs,
@@ -133,6 +135,9 @@ impl RunMetrics {
             ayb_en_rms: stability.sliding_rms_max,
             ayb_en_limit: stability.limit,
             ayb_en_unstable: Some(stability.en_unstable),
+            ayb_limit_cycle: Some(cycle.detected),
+            ayb_cycle_hz: cycle.frequency,
+            ayb_cycle_amplitude: cycle.amplitude,
         })
     }
 
