@@ -12,7 +12,7 @@ shared with other jobs the wall time also measures their load, the CPU time much
 
 From the measured per-sample cost (core-seconds per run = local wall time × threads / samples)
 and the Dask overhead, it projects a Saltelli N = 1024 study (N·(k + 2) = 8192 runs per scenario
-for k = 6; 14 336 with the second-order terms, as issue 15 counts it) of two scenarios on a
+for k = 6; 14 336 with the second-order terms) of two scenarios on a
 64-core cluster.
 
     python scripts/bench_dask.py --samples 64 512 --distance 300 --repeat 2

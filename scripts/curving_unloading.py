@@ -1,5 +1,5 @@
 """Why the curving study's YD2 case at R = 3000 m and 150 mm cant deficiency (232 km/h) unloads
-a wheel to ΔQ/Q0 = 0.95 (issue 17): the wheelset motion in the curve, its frequency against the
+a wheel to ΔQ/Q0 = 0.95: the wheelset motion in the curve, its frequency against the
 kinematic (Klingel) frequency at the curve's operating point, how it develops along a longer
 curve, and the linear critical speed at the conicity the wheelsets see there.
 

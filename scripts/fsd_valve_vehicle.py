@@ -1,5 +1,5 @@
 """The FSD with each valve model on the vehicle, over several track seeds: the measurement behind
-the choice of the default trigger (README, "The FSD's frequency valve").
+the choice of the default trigger (docs/guide/dampers.md, "The FSD's frequency valve").
 
 Runs :func:`loco.studies.fsd_comparison.run_fsd_comparison` (S_low and S_high, 200 km/h, 500 m
 after 500 m of lead-in) for YD1, YD2, FSD (rms-frequency trigger) and FSD-H (hydraulic valve) on

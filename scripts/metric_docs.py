@@ -8,8 +8,6 @@ returns, in column order, with their units and descriptions.
 
 from __future__ import annotations
 
-import argparse
-import sys
 from pathlib import Path
 
 from loco.channels import CHANNEL_KINDS, metric_table
@@ -60,17 +58,9 @@ def render() -> str:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    group = parser.add_mutually_exclusive_group(required=True)
-    group.add_argument("--write", action="store_true")
-    group.add_argument("--check", action="store_true")
-    args = parser.parse_args()
-    page = render()
-    if args.write:
-        PAGE.write_text(page, encoding="utf-8")
-    elif not PAGE.exists() or PAGE.read_text(encoding="utf-8") != page:
-        print(f"{PAGE} is out of date: run python scripts/metric_docs.py --write")
-        sys.exit(1)
+    from docs_page import run  # scripts/ is on the path when this file runs as a script
+
+    run(PAGE, lambda _page: render(), "scripts/metric_docs.py", __doc__.splitlines()[0])
 
 
 if __name__ == "__main__":

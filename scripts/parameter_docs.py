@@ -8,8 +8,6 @@ values, ranges and sources.
 
 from __future__ import annotations
 
-import argparse
-import sys
 from pathlib import Path
 
 import loco
@@ -93,18 +91,14 @@ def page_with(generated: str, page: str) -> str:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    group = parser.add_mutually_exclusive_group(required=True)
-    group.add_argument("--write", action="store_true")
-    group.add_argument("--check", action="store_true")
-    args = parser.parse_args()
-    page = PAGE.read_text(encoding="utf-8")
-    updated = page_with(render(), page)
-    if args.write:
-        PAGE.write_text(updated, encoding="utf-8")
-    elif updated != page:
-        print(f"{PAGE} is out of date: run python scripts/parameter_docs.py --write")
-        sys.exit(1)
+    from docs_page import run  # scripts/ is on the path when this file runs as a script
+
+    run(
+        PAGE,
+        lambda page: page_with(render(), page),
+        "scripts/parameter_docs.py",
+        __doc__.splitlines()[0],
+    )
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-"""A direct Saltelli design on the simulator, timed: issue 16's N = 1024 on both objectives.
+"""A direct Saltelli design on the simulator, timed: N = 1024 on both objectives.
 
 Runs the study's Sobol' analysis directly on the simulator (no surrogate): Saltelli's design of
 ``--base`` N base samples over the six SPEC §6 parameters, with the second-order rows by default

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs loco with its development tools and runs every check: formatting, lints, the Rust tests,
-# the type stubs against the native module, and pytest. This is the README's test command and what
+# the type stubs against the native module, the documentation build, and pytest. This is the README's test command and what
 # CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,6 +32,10 @@ python3 -m ruff format --check python tests scripts
 step "mypy"
 python3 -m mypy
 python3 -m mypy.stubtest loco._loco
+
+step "documentation (mkdocs, warnings and broken links are errors; into build/site/)"
+# (not --quiet: it hides the warnings that strict mode counts, so a broken link would pass)
+NO_MKDOCS_2_WARNING=1 python3 -m mkdocs build --strict
 
 step "pytest"
 python3 -m pytest tests

@@ -8,6 +8,7 @@ import subprocess
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import loco
@@ -222,3 +223,31 @@ def test_a_bad_curve_section_in_a_study_file_is_named_with_its_field(tmp_path: P
     study.write_text(head + "curve = 3\n", encoding="utf-8")
     done = _batch(study, samples, "--quiet")
     assert done.returncode != 0 and "`curve`" in done.stderr and "list of sections" in done.stderr
+
+
+def test_the_shipped_example_study_runs_as_the_guide_shows(tmp_path: Path) -> None:
+    """``examples/study.toml`` with ``examples/samples.csv``: every sample runs, with the numbers
+    of ``loco.run_batch`` on the same vehicle, scenario and samples."""
+    out = tmp_path / "metrics.csv"
+    study, samples = ROOT / "examples" / "study.toml", ROOT / "examples" / "samples.csv"
+    done = _batch(study, samples, "-o", out, "--threads", "2")
+    assert done.returncode == 0, done.stderr
+    with out.open(newline="") as f:
+        rows = list(csv.DictReader(f))
+    table = pd.read_csv(samples, comment="#")
+    names = list(table.columns)
+    params = table.to_numpy(dtype=float)
+    expected = loco.run_batch(
+        params,
+        names,
+        vehicle=loco.Locomotive.default().replace(C_sy=2.5e4),
+        scenario=loco.Scenario(
+            name="S_high", speed=200 / 3.6, distance=300.0, seed=1, yaw_damper="YD2"
+        ),
+        threads=1,
+        progress=False,
+    )
+    assert [r["status"] for r in rows] == ["ok"] * len(params)
+    got = [float(r["ayb_peak_lp"]) for r in rows]
+    assert got == expected.metric("ayb_peak_lp").tolist()
+    assert (tmp_path / "metrics_history_0.csv").is_file()

@@ -3,7 +3,6 @@ and the channel set behind a run's channel names and kinds."""
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 from types import ModuleType
 
@@ -11,6 +10,7 @@ import numpy as np
 
 import loco
 from loco.channels import CHANNEL_KINDS, METRIC_NAMES, ChannelKind, Metric, channel_table
+from script_modules import load_script
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -23,12 +23,7 @@ EXPECTED_METRICS = (
 
 
 def _docs_script() -> ModuleType:
-    path = ROOT / "scripts" / "metric_docs.py"
-    spec = importlib.util.spec_from_file_location("metric_docs", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_script("metric_docs")
 
 
 def test_metric_constants_are_the_tables_names_in_column_order() -> None:

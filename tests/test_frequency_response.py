@@ -158,3 +158,34 @@ def test_cli_writes_plots_and_data(tmp_path: Path) -> None:
     assert len(table) == 20 * 4 * 3
     summary = pd.read_csv(out / "frf_summary.csv")
     assert np.isfinite(summary["value"]).all()
+
+
+def test_figures_carry_each_outputs_unit_and_leave_the_symmetric_noise_out(
+    vehicle: loco.Locomotive,
+) -> None:
+    scenario = loco.Scenario(name="S_low", speed=SPEED, yaw_damper="YD2")
+    f = np.linspace(0.5, 15.0, 30)
+    h = loco.frequency_response(vehicle, scenario, frequencies=f)
+    assert h.units == {
+        "carbody_floor_ay_front": "m/s²",
+        "frame1_ay_wheelset1": "m/s²",
+        "wheelset1_y": "m",
+    }
+    for out in h.outputs:
+        # Left/right symmetry: vertical and gauge irregularities drive no lateral motion.
+        assert h.is_noise(out, "vertical") and h.is_noise(out, "gauge")
+        assert not h.is_noise(out, "alignment") and not h.is_noise(out, "cross_level")
+    fig = h.plot()
+    top = fig.axes[: len(h.outputs)]  # the |H| row (the phases below)
+    labels = [ax.get_ylabel() for ax in top]
+    assert labels == ["|H| ((m/s²)/m)", "|H| ((m/s²)/m)", "|H| (m/m)"]
+    for ax in top:
+        assert sorted(line.get_label() for line in ax.get_lines()) == ["alignment", "cross_level"]
+        assert "not drawn: vertical, gauge" in " ".join(t.get_text() for t in ax.texts)
+    psd = loco.response_psd(vehicle, scenario, frequencies=f)
+    fig = psd.plot()
+    assert [ax.get_ylabel() for ax in fig.axes] == [
+        "PSD ((m/s²)²/Hz)",
+        "PSD ((m/s²)²/Hz)",
+        "PSD (m²/Hz)",
+    ]

@@ -1,7 +1,6 @@
 """The parameter schema from Python: the one list of vehicle keys, ranges that contain the study
 box, the docs page generated from it, and bad vehicle input refused by name."""
 
-import importlib.util
 import re
 from pathlib import Path
 from types import ModuleType
@@ -10,18 +9,13 @@ import pytest
 
 import loco
 from loco.studies.parameters import STUDY_PARAMETERS
+from script_modules import load_script
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def _docs_script() -> ModuleType:
-    spec = importlib.util.spec_from_file_location(
-        "parameter_docs", ROOT / "scripts" / "parameter_docs.py"
-    )
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_script("parameter_docs")
 
 
 def test_the_schema_is_the_default_vehicles_key_list_with_values_inside_the_ranges() -> None:

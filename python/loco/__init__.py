@@ -23,6 +23,7 @@ from loco import (
     stability,
     track,
     track_response,
+    uncertainty,
     vehicle,
 )
 from loco._loco import (
@@ -96,5 +97,6 @@ __all__ = [
     "stability",
     "track",
     "track_response",
+    "uncertainty",
     "vehicle",
 ]

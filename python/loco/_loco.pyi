@@ -46,12 +46,14 @@ class InternalError(LocoError): ...
 # --- contact (contact.rs) -----------------------------------------------------------------------
 
 __all__ += [
+    "LINEAR_PARAMETERS_AMPLITUDE",
     "Profile",
     "WheelsetContact",
     "builtin_profile_named",
     "builtin_profile_names",
     "conical_profiles",
     "contact_setup_defaults",
+    "jm3_builtin_states",
     "jm3_tread_profile",
     "load_profile_file",
 ]
@@ -78,10 +80,13 @@ def load_profile_file(
 def builtin_profile_named(name: str) -> Profile: ...
 def builtin_profile_names() -> list[str]: ...
 def conical_profiles(conicity: float) -> tuple[Profile, Profile]: ...
+def jm3_builtin_states() -> list[tuple[str, float, float, float]]: ...
 def jm3_tread_profile(
     tread_slope: float, band_radius: float, flange_thickness: float
 ) -> Profile: ...
 def contact_setup_defaults() -> list[tuple[str, float]]: ...
+
+LINEAR_PARAMETERS_AMPLITUDE: float
 
 @final
 class WheelsetContact:
@@ -102,6 +107,9 @@ class WheelsetContact:
     ) -> WheelsetContact: ...
     def solve(self, ys: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]: ...
     def rolling_radius_difference(self, ys: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def linear_parameters(
+        self, amplitude: float = ..., axle_load: float | None = ...
+    ) -> list[tuple[str, float]]: ...
 
 # --- conicity (conicity.rs) ---------------------------------------------------------------------
 
@@ -494,6 +502,31 @@ class RunScenario:
     @property
     def output_rate(self) -> float: ...
 
+# --- mode rules (mode_rules.rs) -----------------------------------------------------------------
+
+__all__ += ["mode_rules", "select_mode"]
+
+def mode_rules() -> list[
+    tuple[str, tuple[float, float], tuple[float, float], float, float, float]
+]: ...
+def select_mode(
+    rule: str,
+    kinds: list[str],
+    frequencies: NDArray[np.float64],
+    damping_ratios: NDArray[np.float64],
+    shares: NDArray[np.float64],
+    motions: NDArray[np.float64],
+) -> int | None: ...
+
+# --- input ranges (input_ranges.rs) -------------------------------------------------------------
+
+__all__ += ["default_uncertainty_toml", "input_ranges"]
+
+def default_uncertainty_toml() -> str: ...
+def input_ranges(
+    vehicle: Vehicle, text: str | None = None, origin: str | None = None
+) -> list[tuple[str, float, float, float, str, str, str, str]]: ...
+
 # --- vehicle (vehicle.rs) -----------------------------------------------------------------------
 
 __all__ += [
@@ -535,6 +568,7 @@ class Vehicle:
     def __getitem__(self, key: str, /) -> float: ...
     def total_mass(self) -> float: ...
     def en14363_bogie_mass(self) -> float: ...
+    def mean_axle_load(self) -> float: ...
     def mass_matrix(self) -> NDArray[np.float64]: ...
     def __reduce__(self) -> tuple[type[Vehicle], tuple[str | None, str, dict[str, float]]]: ...
 

@@ -28,7 +28,16 @@ import numpy.typing as npt
 from loco import _loco
 from loco._loco import Profile
 
-__all__ = ["SETUP_DEFAULTS", "ContactGeometry", "geometry", "rolling_radius_difference"]
+__all__ = [
+    "LINEAR_PARAMETERS_AMPLITUDE",
+    "SETUP_DEFAULTS",
+    "ContactGeometry",
+    "LinearContactParameters",
+    "axle_load",
+    "geometry",
+    "linear_parameters",
+    "rolling_radius_difference",
+]
 
 _FloatArray = npt.NDArray[np.float64]
 
@@ -179,6 +188,83 @@ def rolling_radius_difference(
         nominal_radius,
     )
     return wheelset.rolling_radius_difference(ys)
+
+
+#: Default half step of the linear parameters' central differences, m (from the core).
+LINEAR_PARAMETERS_AMPLITUDE: float = _loco.LINEAR_PARAMETERS_AMPLITUDE
+
+
+@dataclass(frozen=True)
+class LinearContactParameters:
+    """The linear contact parameters of a wheelset on its rails, in Wickens' notation
+    (``loco_core::contact::linear_parameters``, where the definitions and the gravitational
+    stiffness's formula are documented): for a small lateral displacement ``y`` (m),
+    ``r_L − r_R = 2 λ y``, contact angles relative to the axle ``θ_L − θ_R = 2 ε y / l0``, roll
+    ``φ = σ y / l0``, and the gravitational stiffness ``K_g = W·d²h/dy²`` (h the wheelset's
+    rise, W its axle load), read from the model's rigid contact by central differences at
+    ±``amplitude``.
+
+    ``half_contact_spacing`` l0 (m), ``rolling_radius`` r0 (m) and ``contact_angle`` δ0 (rad)
+    are those of the centred pose; ``conicity`` λ, ``contact_angle_parameter`` ε and
+    ``roll_parameter`` σ are dimensionless; ``gravitational_stiffness_per_load`` is K_g/W (1/m)
+    and ``gravitational_stiffness`` K_g (N/m) under ``axle_load`` (N), NaN when no load was
+    given.
+    """
+
+    amplitude: float
+    half_contact_spacing: float
+    rolling_radius: float
+    contact_angle: float
+    conicity: float
+    contact_angle_parameter: float
+    roll_parameter: float
+    gravitational_stiffness_per_load: float
+    axle_load: float
+    gravitational_stiffness: float
+
+
+def axle_load(vehicle: Any = None) -> float:
+    """The mean axle load W (N) of ``vehicle`` (a :class:`loco.Locomotive`, default the study's):
+    its weight, its own wheelsets included, over its wheelsets (computed by the core)."""
+    from loco.vehicle import Locomotive
+
+    loco_ = vehicle if vehicle is not None else Locomotive.default()
+    return float(loco_.native.mean_axle_load())
+
+
+def linear_parameters(
+    wheel: Profile,
+    rail: Profile,
+    *,
+    amplitude: float = LINEAR_PARAMETERS_AMPLITUDE,
+    axle_load: float | None = None,
+    right_wheel: Profile | None = None,
+    right_rail: Profile | None = None,
+    gauge: float = SETUP_DEFAULTS["gauge"],
+    gauge_height: float = SETUP_DEFAULTS["gauge_height"],
+    inclination: float = SETUP_DEFAULTS["rail_inclination"],
+    back_to_back: float = SETUP_DEFAULTS["back_to_back"],
+    flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
+    nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
+) -> LinearContactParameters:
+    """The linear contact parameters λ, ε, σ and the gravitational stiffness of ``wheel`` on
+    ``rail`` (see :class:`LinearContactParameters`); ``axle_load`` (N, e.g. :func:`axle_load`)
+    gives the stiffness in N/m. A bad ``amplitude`` (m, in (0, 0.01]) or a non-positive
+    ``axle_load`` raises :class:`loco.ParameterError` naming it."""
+    wheelset = _wheelset(
+        wheel,
+        rail,
+        right_wheel,
+        right_rail,
+        gauge,
+        gauge_height,
+        inclination,
+        back_to_back,
+        flange_back_offset,
+        nominal_radius,
+    )
+    load = None if axle_load is None else float(axle_load)
+    return LinearContactParameters(**dict(wheelset.linear_parameters(float(amplitude), load)))
 
 
 # The contact API of the issue in one place: conicity (EN 15302) and Hertz/creep live in their own

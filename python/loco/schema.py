@@ -1,8 +1,9 @@
 """The vehicle's parameter schema: for every key of a vehicle file its SI unit, kind, physical
 range, what it affects and a description (the core's one list, ``vehicle/parameter_schema.toml``).
 
-A vehicle file must give exactly these keys (an optional one it may leave to the model); a value outside its range is refused with
-:class:`loco.ParameterRangeError` unless the file lists the key in ``allow_out_of_range``::
+A vehicle file must give exactly these keys (an optional one it may leave to the model); a
+value outside its range is refused with :class:`loco.ParameterRangeError` unless the file lists
+the key in ``allow_out_of_range``::
 
     allow_out_of_range = ["carbody.mass"]
     [carbody]

@@ -17,7 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.modes import Mode, mode_energies
+from loco.modes import MOTIONS, Mode, mode_energies
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
@@ -25,9 +25,12 @@ __all__ = [
     "CriticalSpeed",
     "Eigen",
     "Mode",
+    "ModeRule",
     "RampDown",
     "critical_speed",
+    "describe_rule",
     "eigen",
+    "mode_rules",
     "ramp_down",
     "with_conicity",
 ]
@@ -56,6 +59,84 @@ class Eigen:
         if not band:
             raise _loco.ParameterError("invalid parameter `band`: no mode in the frequency band")
         return band[0]
+
+    def carbody_mode(self) -> Mode:
+        """The carbody-coupled lateral mode (carbody hunting, the low-conicity problem).
+
+        Rule (the core's ``carbody`` mode rule, :func:`mode_rules`): among the modes of
+        0.3–3 Hz with at least 30 % of their kinetic energy in the carbody, at least 2 % in the
+        wheelsets (the contact drives it; the carbody's sway modes on its springs have 0–2 %) and
+        at least 80 % in lateral, roll and yaw motion, the least damped. Raises
+        :class:`loco.ParameterError` when no mode passes (at moderate and high conicity with low
+        yaw damping the kinematic mode lives in the bogies and the carbody only sways)."""
+        return self._pick("carbody")
+
+    def bogie_mode(self) -> Mode:
+        """The bogie mode (bogie and wheelset hunting, the high-conicity problem).
+
+        Rule (the core's ``bogie`` mode rule, :func:`mode_rules`): among the modes of 1–10 Hz
+        with at most 25 % of their kinetic energy in the carbody, at least 10 % in the bogie
+        frames (the motors' lateral modes on their mounts have 2–8 %), at least 2 % in the
+        wheelsets and at least 80 % in lateral, roll and yaw motion, the least damped. At low
+        conicity, where the kinematic motion lies in the carbody mode, this is the running gear's
+        least damped lateral mode. Raises :class:`loco.ParameterError` when no mode passes."""
+        return self._pick("bogie")
+
+    def _pick(self, rule: str) -> Mode:
+        """The mode the core's rule ``rule`` picks."""
+        if not self.modes:
+            raise _loco.ParameterError(f"invalid parameter `modes`: no modes for the {rule} rule")
+        names = list(self.modes[0].bodies)
+        kinds = [self.modes[0].kinds[n] for n in names]
+        index = _loco.select_mode(
+            rule,
+            kinds,
+            np.array([m.frequency for m in self.modes]),
+            np.array([m.damping_ratio for m in self.modes]),
+            np.array([[m.bodies[n] for n in names] for m in self.modes]),
+            np.array([[[m.motions[n][k] for k in MOTIONS] for n in names] for m in self.modes]),
+        )
+        if index is None:
+            raise _loco.ParameterError(
+                f"invalid parameter `{rule}_mode`: no mode at {self.speed:g} m/s passes the "
+                f"{rule} mode rule ({describe_rule(rule)})"
+            )
+        return self.modes[index]
+
+
+@dataclass(frozen=True)
+class ModeRule:
+    """A rule of the core that picks one mode: frequency band (Hz), the least and largest share
+    of the energy in the carbody, the least shares in the wheelsets, the frames and in lateral,
+    roll and yaw motion (all –)."""
+
+    name: str
+    band: tuple[float, float]
+    carbody_share: tuple[float, float]
+    min_wheelset_share: float
+    min_frame_share: float
+    min_lateral_share: float
+
+
+def mode_rules() -> dict[str, ModeRule]:
+    """The core's mode rules by name (``carbody``, ``bogie``)."""
+    return {r[0]: ModeRule(*r) for r in _loco.mode_rules()}
+
+
+def describe_rule(name: str) -> str:
+    """A rule in words: ``"0.3–3 Hz, carbody 30–100 %, wheelsets ≥ 2 %, …"``."""
+    r = mode_rules()[name]
+    pct = _percent
+    return (
+        f"{r.band[0]:g}–{r.band[1]:g} Hz, carbody {pct(r.carbody_share[0])}–"
+        f"{pct(r.carbody_share[1])} %, wheelsets ≥ {pct(r.min_wheelset_share)} %, frames ≥ "
+        f"{pct(r.min_frame_share)} %, lateral/roll/yaw ≥ {pct(r.min_lateral_share)} %"
+    )
+
+
+def _percent(share: float) -> str:
+    """A share (–) as a number of percent."""
+    return f"{100 * share:g}"
 
 
 def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:

@@ -1,4 +1,4 @@
-//! The frequency response of one case (issue 11 limit: 100 frequencies, 4 inputs, 10 outputs
+//! The frequency response of one case (the limit's case: 100 frequencies, 4 inputs, 10 outputs
 //! under 200 ms): the whole call (vehicle, contact table, static equilibrium, linearisation with
 //! the track as input, Hessenberg reduction, solves), and its parts.
 
@@ -10,7 +10,7 @@ use loco_core::vehicle::scenario::{PerfectTrackVehicle, Scenario};
 use loco_core::vehicle::track_input::{scenario_track_model, track_input_model};
 use std::hint::black_box;
 
-/// Ten recorded channels of the kinds issue 11 names.
+/// Ten recorded channels: accelerations, wheelset motion and damper forces.
 const OUTPUTS: [&str; 10] = [
     "carbody_floor_ay_front",
     "carbody_floor_ay_rear",

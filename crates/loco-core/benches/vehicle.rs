@@ -1,5 +1,5 @@
 //! One 500 m run of the full 90-DOF model at 200 km/h (9 s simulated), with FASTSIM (the study's
-//! creep model) and RK4 at 1 ms (the reference settings; the series the README's history
+//! creep model) and RK4 at 1 ms (the reference settings; the series the performance history
 //! follows), the same with the default exponential scheme at 2 ms (`integrator = "etdrk4"`), with
 //! FaStrip, with the FASTSIM table and with the table at 2 ms, the same FASTSIM run on a curved track
 //! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m

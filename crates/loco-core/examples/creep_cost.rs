@@ -1,6 +1,6 @@
 //! FaStrip's cost per contact against FASTSIM's, measured in alternating blocks so that both see
 //! the same machine load (criterion times one after the other, and on a shared machine the load
-//! changes between them). Issue 16's target: FaStrip at most 1.5× FASTSIM on the default grid.
+//! changes between them). The target: FaStrip at most 1.5× FASTSIM on the default grid.
 //!
 //! `cargo run --release -p loco-core --example creep_cost [-- rounds]` prints, per case and grid,
 //! the median time per call of each model over the rounds and the median of the per-round

@@ -3,7 +3,7 @@
 //! creep-force call's inputs are recorded (feature `record-contacts`), and the recorded calls are
 //! replayed through both models on the run's grid (the default 10 × 10) and material in alternating rounds, so that both
 //! see the same machine load. Prints the median time per call of each over the rounds and the
-//! median of the per-round ratios (issue 16's target: FaStrip at most 1.5× FASTSIM).
+//! median of the per-round ratios (the target: FaStrip at most 1.5× FASTSIM).
 //!
 //! `cargo run --release -p loco-core --features record-contacts --example creep_replay --
 //! [S_high|S_low] [rounds]`

@@ -1,4 +1,4 @@
-//! Issue 17's diagnosis: is every body at rest in a steady curve, and if not, what rings? Runs the
+//! A diagnosis: is every body at rest in a steady curve, and if not, what rings? Runs the
 //! S_norm locomotive on perfect track (the balanced reference curve, R = 1200 m with 100 mm cant,
 //! or straight) to `start` m, then records every step's accelerations over `window` m and prints
 //! per body group the largest, its coordinate and the three largest peaks of its spectrum.

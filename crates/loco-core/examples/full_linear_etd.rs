@@ -11,15 +11,15 @@
 //! product's etdrk4 at 2 ms, against RK4 at 0.25 ms, all recorded at 250 Hz (`RATE` to change;
 //! a step must divide the output period).
 //!
-//! Measured (stop 32, nominal vehicle, 500 m at 200 km/h): at 4 ms A_yb is 4.6 % (S_high) and
+//! Measured (nominal vehicle, 500 m at 200 km/h): at 4 ms A_yb is 4.6 % (S_high) and
 //! 10.7 % (S_low) off the reference, the A_yc PSD peak 2.2 % and 7.3 %; at 2 ms 0.27 % and
 //! 0.40 %, at 1 ms 0.025 % on S_low (fourth order: 16× per halving), against the product's
 //! etdrk4 at 2 ms, which keeps the creep forces explicit: 0.04 % and 0.02 %. What
 //! bounds the step is the contact's nonlinearity (the creep forces' saturation, the contact
 //! geometry), not a stiffness: a scheme that solved every linear part exactly would not keep
-//! issue 16's 0.5 % gate at twice today's step.
+//! the 0.5 % accuracy gate at twice today's step.
 //!
-//! Then with fewer right-hand sides per step (stop 35): the linear part without the wheelsets'
+//! Then with fewer right-hand sides per step: the linear part without the wheelsets'
 //! longitudinal, lateral, pitch and yaw accelerations, where the creep forces act, so that the
 //! Hertz springs, the bearings and the suspension are solved exactly and the creep forces stay
 //! explicit, as in the product. With it Cox and Matthews' three-stage ETD3RK is stable at 2 ms

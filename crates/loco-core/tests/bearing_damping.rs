@@ -7,7 +7,7 @@
 //! numerical damping at 1 ms made their modes decay. The traction rods' rubber nodes
 //! (`traction_rod.bushing_damping_time`, loss factor 0.1 at the rod modes): without it the rods'
 //! 49 Hz modes kept 0.13 % of damping from the frames, and the ringing a curve transition starts
-//! was still 3e-3 rad/s² in the frames' roll 200 m on (issue 17, `tests/curving.rs`).
+//! was still 3e-3 rad/s² in the frames' roll 200 m on (`tests/curving.rs`).
 
 use loco_core::vehicle::linearise::least_damped;
 use loco_core::vehicle::parameters::ParameterSet;

@@ -49,7 +49,7 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
     let speed = balanced_speed(cant);
     // 200 m of steady curve after the transition ends under the last wheelset, then a window of
     // 1.6 m (57 ms) sampled every 0.1 m: every body at rest at every instant, not on average.
-    // Issue 17: the traction rods' 49 Hz modes (rod yaw and pitch on their rubber nodes) had
+    // The traction rods' 49 Hz modes (rod yaw and pitch on their rubber nodes) had
     // 0.13 % damping while the nodes had none, so the transition's excitation rang for seconds
     // (e-fold in 2.4 s, 68 m): frame roll 3.1e-3 rad/s² and rod yaw 0.23 rad/s² here, the
     // same at table steps of 0.1, 0.05 and 0.025 mm (not the table's kinks) and with RK4 at
@@ -259,7 +259,7 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
             r.output.channel(&format!("wheel{w}_right_Q")).unwrap(),
         );
         // Judged by the rms difference; the peak is printed. Wheel 3's peak (45 N, rms 1.8 N
-        // at stop 32, the others < 5 N; 261 N for 8 samples when this test was written) is
+        // now, the others < 5 N; 261 N for 8 samples when this test was written) is
         // where the gauge-side second contact point of the leading outer wheel of bogie 2
         // comes into contact: at y = -7.70 mm its gap in
         // the contact table (9.6e-5 m) equals the tread's elastic approach. The normal force

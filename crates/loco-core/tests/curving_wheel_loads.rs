@@ -140,11 +140,12 @@ fn balanced_cant_wheel_loads_differ_by_the_roll_moment_of_the_outward_running_ve
             100.0 * measured / mean
         );
         // Measured within 0.6 % of the balance (5632 / 5617 N, 6464 / 6424 N, 1115 / 1113 N);
-        // the gyroscopic part (∝ V², 100 N to 900 N here) is in it. Until stop 23 the loads
-        // came out 11 % below the balance at every radius and speed: the contact forces' lever
-        // arms, already in track axes at the wheelset's pose, were turned by its roll again, a
-        // spurious roll moment r0·φ·ΣQ (434 N·m at 3000 m, ∝ κ through the roll φ of the
-        // outward-running wheelsets, 81 N·m at 15 km). Separating the wrench per wheelset found
+        // the gyroscopic part (∝ V², 100 N to 900 N here) is in it. Before the contact offsets
+        // were applied as the table gives them, the loads came out 11 % below the balance at
+        // every radius and speed: the contact forces' lever arms, already in track axes at the
+        // wheelset's pose, were turned by its roll again, a spurious roll moment r0·φ·ΣQ
+        // (434 N·m at 3000 m, ∝ κ through the roll φ of the outward-running wheelsets, 81 N·m
+        // at 15 km). Separating the wrench per wheelset found
         // it: the gap was r0·φ·ΣQ plus a 2 mm lever of ΣY within 1 %.
         assert!(measured > 0.0 && (measured - predicted).abs() < 0.02 * predicted);
         assert!((m.rails - m.bodies).abs() < 0.02 * m.bodies.abs(), "{m:?}");

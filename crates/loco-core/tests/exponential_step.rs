@@ -1,8 +1,8 @@
 //! The exponential integration (ETDRK4 at 2 ms) against the reference (RK4 at 1 ms) across the
 //! SPEC §6 parameter box, at the nominal vehicle, the two opposite corners of the six
-//! parameters and the four damper corners, the three scenarios (S_norm, the speed sweep's, since
-//! stop 27: 0.13 % at most), on the study's 500 m runs: W_y, A_yb
-//! and the A_yc PSD peak stay within issue 16's 0.5 % gate (0.42 % at most, at the corner C_sy
+//! parameters and the four damper corners, the three scenarios (S_norm, the speed sweep's:
+//! 0.13 % at most), on the study's 500 m runs: W_y, A_yb
+//! and the A_yc PSD peak stay within the 0.5 % gate (0.42 % at most, at the corner C_sy
 //! 10 kN·s/m, K_ncsy 50 kN/mm, where RK4 itself moves A_yb by 5.5 % between 0.25 and 1 ms, its
 //! lateral damper's series spring rigid at 1 ms and compliant at 0.25 ms).
 //!
@@ -23,7 +23,7 @@ use rayon::prelude::*;
 /// C_sy = 20 kN·s/m with K_ncsy = 40 kN/mm: k/c = 2000 1/s.
 const DAMPER_POLE_2000: [(&str, f64); 2] = [("C_sy", 20e3), ("K_ncsy", 40e6)];
 
-/// Issue 16's gate on W_y, A_yb and the A_yc PSD peak, relative.
+/// The accuracy gate on W_y, A_yb and the A_yc PSD peak, relative.
 const TOLERANCE: [f64; 3] = [5e-3; 3];
 
 fn metrics(overrides: &[(&str, f64)], name: &str, integrator: Integrator, step: f64) -> [f64; 3] {

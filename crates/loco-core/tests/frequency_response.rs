@@ -1,10 +1,10 @@
 //! The frequency response of the linearised vehicle against the time integration of the full
-//! model (issue 11, item 3b): a sinusoidal irregularity of one channel (0.2 mm), the steady-state
+//! model: a sinusoidal irregularity of one channel (0.2 mm), the steady-state
 //! amplitude and phase of a sinusoid fitted after the transient, against `H·U`.
 //!
 //! CI runs a representative subset; `sinusoidal_full_matrix` (ignored, run by
 //! `scripts/frf_verification.sh`) runs every scenario, damper, channel and wavelength and prints
-//! the table the README reports.
+//! the table docs/model/frequency_response.md reports.
 
 use loco_core::dampers::Damper;
 use loco_core::track::{Channel, TrackIrregularity};
@@ -22,7 +22,7 @@ use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
-/// Irregularity amplitude, m (issue 11: 0.2 mm).
+/// Irregularity amplitude, m (0.2 mm).
 const AMPLITUDE: f64 = 2e-4;
 /// Speed, m/s (200 km/h).
 const SPEED: f64 = 200.0 / 3.6;
@@ -34,7 +34,7 @@ const OUTPUTS: [&str; 3] = [
 ];
 /// Time run before the fit, s: the least damped body mode at 200 km/h decays by e^-4 or more.
 const SETTLE: f64 = 16.0;
-/// Amplitude and phase tolerances of issue 11.
+/// Amplitude and phase tolerances of the comparison.
 const AMPLITUDE_TOLERANCE: f64 = 0.05;
 const PHASE_TOLERANCE_DEG: f64 = 5.0;
 
@@ -239,8 +239,8 @@ fn cross_level_s_high_yd2_matches_the_linear_response() {
     lateral_channel_cases("S_high", "YD2", Channel::CrossLevel);
 }
 
-/// Before the rails' plane (issue 11), 0.2 mm of cross level at 40 m moved the S_low wheelsets
-/// by 3.5 mm (YD2) to 7.8 mm (YD1), far beyond the linear range (time domain 19–24 % below the
+/// Before the contact was read in the rails' plane, 0.2 mm of cross level at 40 m moved the
+/// S_low wheelsets by 3.5 mm (YD2) to 7.8 mm (YD1), far beyond the linear range (time domain 19–24 % below the
 /// linear response); rolled with the rails they move by about h0·θ.
 #[test]
 fn cross_level_s_low_yd2_matches_the_linear_response() {
@@ -306,7 +306,7 @@ fn wheelsets_follow_a_long_alignment_wave_with_their_delays() {
 /// `scripts/frf_verification.sh`). Vertical and gauge inputs move the vehicle symmetrically:
 /// their lateral responses are reported, not compared.
 #[test]
-#[ignore = "about 7 minutes on 2 cores: the full matrix of issue 11 item 3b, run by scripts/frf_verification.sh"]
+#[ignore = "about 7 minutes on 2 cores: the full matrix, run by scripts/frf_verification.sh"]
 fn sinusoidal_full_matrix() {
     // The linearisation steps: `FRF_STEP` and `FRF_CONTACT_STEP` if set, else the defaults.
     let defaults = LinearisationSettings::default();

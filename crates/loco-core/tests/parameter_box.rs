@@ -1,5 +1,5 @@
 //! The default integration settings across the SPEC §6 parameter box: every corner runs, and
-//! halving the step changes the study's metrics by less than 1 % (issue 5, "Integration").
+//! halving the step changes the study's metrics by less than 1 %.
 
 mod box_support;
 

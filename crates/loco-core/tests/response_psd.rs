@@ -1,4 +1,4 @@
-//! The linear stochastic method against a long time-domain run (issue 11, item 3c): the Welch
+//! The linear stochastic method against a long time-domain run: the Welch
 //! PSD of the carbody floor and bogie frame lateral accelerations on a synthetic track scaled
 //! down to small amplitude lies within its statistical band around the linear model's PSD.
 //!

@@ -1,4 +1,4 @@
-//! Rolled rails: a constant cross level on otherwise perfect track (issue 11), and how far a
+//! Rolled rails: a constant cross level on otherwise perfect track, and how far a
 //! running wheelset rolls relative to the rails beyond the contact table's rigid pose.
 //!
 //! Hand calculation. Rails whose heights differ by c are rolled by θ = atan(c / 2b) about the

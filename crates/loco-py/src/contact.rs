@@ -2,6 +2,7 @@
 //! geometry of a wheelset on a track.
 
 use crate::errors::run_detached;
+use loco_core::contact::linear_parameters::{linear_parameters, DEFAULT_AMPLITUDE};
 use loco_core::contact::{
     builtin_names, builtin_profile, load_profile, rolling_radius_difference, ContactGeometry,
     ContactPoint, ContactSearchParams, ContactWorkspace, Profile, ProfileKind, TrackSetup,
@@ -184,6 +185,16 @@ fn jm3_tread_profile(
     Ok(PyProfile { inner })
 }
 
+/// The built-in JM3 wheels' tread states as `(name, tread_slope (–), band_radius (m),
+/// flange_thickness (m))`, the core's one list.
+#[pyfunction]
+fn jm3_builtin_states() -> Vec<(&'static str, f64, f64, f64)> {
+    loco_core::contact::builtin::jm3::BUILTIN
+        .iter()
+        .map(|(n, s)| (*n, s.tread_slope, s.band_radius, s.flange_thickness))
+        .collect()
+}
+
 /// A wheelset's profiles on its rails with the track and wheelset set-up (gauge m, gauge_height
 /// m below the rail top, rail_inclination rad, back_to_back m, flange_back_offset m, nominal radii
 /// m), its contact search prepared once; every profile is given as a left-side profile.
@@ -292,6 +303,44 @@ impl PyWheelsetContact {
         let dr = run_detached(py, move || rolling_radius_difference(g, &ys))?;
         Ok(dr.into_pyarray(py))
     }
+
+    /// The linear contact parameters (`loco_core::contact::linear_parameters`) by central
+    /// differences at ±`amplitude` (m): a dict of `amplitude`, `half_contact_spacing` (m),
+    /// `rolling_radius` (m), `contact_angle` (rad), `conicity`, `contact_angle_parameter`,
+    /// `roll_parameter` (–), `gravitational_stiffness_per_load` (1/m), and `axle_load` (N) with
+    /// the `gravitational_stiffness` (N/m) under it (both NaN when no load is given).
+    #[pyo3(signature = (amplitude=DEFAULT_AMPLITUDE, axle_load=None))]
+    fn linear_parameters(
+        &self,
+        py: Python<'_>,
+        amplitude: f64,
+        axle_load: Option<f64>,
+    ) -> PyResult<Vec<(&'static str, f64)>> {
+        let g = &self.geometry;
+        let (p, stiffness) = run_detached(py, move || {
+            let p = linear_parameters(g, amplitude)?;
+            let stiffness = match axle_load {
+                Some(load) => p.gravitational_stiffness(load)?,
+                None => f64::NAN,
+            };
+            Ok((p, stiffness))
+        })?;
+        Ok(vec![
+            ("amplitude", p.amplitude),
+            ("half_contact_spacing", p.half_contact_spacing),
+            ("rolling_radius", p.rolling_radius),
+            ("contact_angle", p.contact_angle),
+            ("conicity", p.conicity),
+            ("contact_angle_parameter", p.contact_angle_parameter),
+            ("roll_parameter", p.roll_parameter),
+            (
+                "gravitational_stiffness_per_load",
+                p.gravitational_stiffness_per_load,
+            ),
+            ("axle_load", axle_load.unwrap_or(f64::NAN)),
+            ("gravitational_stiffness", stiffness),
+        ])
+    }
 }
 
 /// Names of the per-point quantities, in the order of [`point_values`].
@@ -349,6 +398,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(builtin_profile_names, m)?)?;
     m.add_function(wrap_pyfunction!(conical_profiles, m)?)?;
     m.add_function(wrap_pyfunction!(jm3_tread_profile, m)?)?;
+    m.add_function(wrap_pyfunction!(jm3_builtin_states, m)?)?;
     m.add_class::<PyWheelsetContact>()?;
+    // The default half step (m) of the linear contact parameters' central differences.
+    m.add("LINEAR_PARAMETERS_AMPLITUDE", DEFAULT_AMPLITUDE)?;
     Ok(())
 }

@@ -12,7 +12,9 @@ mod damper_bench;
 mod dampers;
 mod errors;
 mod frequency_response;
+mod input_ranges;
 mod metrics;
+mod mode_rules;
 mod names;
 mod scenario;
 mod schema;
@@ -38,6 +40,8 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     scenario::register(m)?;
     vehicle_handle::register(m)?;
     vehicle::register(m)?;
+    mode_rules::register(m)?;
+    input_ranges::register(m)?;
     schema::register(m)?;
     frequency_response::register(m)?;
     batch::register(m)?;

@@ -7,6 +7,7 @@ Each module listed here defines ``NAME`` (the subcommand), ``HELP`` (one line),
 COMMAND_MODULES: list[str] = [
     "contact_report",
     "info",
+    "simulate",
     "damper_bench",
     "frf",
     "reproduce",

@@ -113,5 +113,5 @@ def add_integrator_argument(parser: argparse.ArgumentParser) -> None:
         choices=INTEGRATORS,
         default=default,
         help=f"integration scheme of every run, at its own step ({steps}; default {default}); "
-        "etdrk4 stays within 0.5 %% of rk4 over the SPEC §6 box",
+        "etdrk4 stays within 0.5 %% of rk4 over the study's parameter box",
     )

@@ -3,7 +3,10 @@
 Writes to ``--out`` (default ``contact-report``): ``profiles.png``, ``delta_r.png``,
 ``contact_angle.png``, ``conicity.png`` and the table ``conicity.csv`` / ``conicity.md`` with the
 equivalent conicity at 3 mm (EN 15302 nonlinear method, and harmonic linearisation), the scenario
-targets of the study, the loco version and the track parameters used.
+targets of the study, the loco version and the track parameters used; and ``contact_pairs.csv`` /
+``contact_pairs.md``: every pair of :mod:`loco.contact_pairs` (the study's and the low-conicity
+pairs of its field problem) with its conicity and linear contact parameters (λ, ε, σ, the
+gravitational stiffness).
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import loco
-from loco import conicity, contact, profiles
+from loco import conicity, contact, contact_pairs, profiles
 from loco.commands.arguments import output_dir
 
 NAME = "contact-report"
@@ -118,6 +121,7 @@ def run(args: argparse.Namespace) -> int:
     _save(fig_ca, out / "contact_angle.png")
     _save(fig_c, out / "conicity.png")
     _write_tables(out, rows)
+    _write_pairs(out)
     print(f"contact report written to {out}")
     return 0
 
@@ -149,3 +153,22 @@ def _write_tables(out: Path, rows: list[dict[str, Any]]) -> None:
             f"| {r['tan_gamma_e_3mm']:.4f} | {r['tan_gamma_e_3mm_harmonic']:.4f} |"
         )
     (out / "conicity.md").write_text("\n".join(lines) + "\n")
+
+
+def _write_pairs(out: Path) -> None:
+    rows = contact_pairs.pair_rows()
+    params = {"loco_version": loco.__version__, "amplitude_m": contact_pairs.AMPLITUDE}
+    with (out / "contact_pairs.csv").open("w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=[*rows[0], *params])
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({**row, **params})
+    lines = [
+        "# Contact pairs: conicity and linear contact parameters",
+        "",
+        f"loco {loco.__version__}; EN 15302 at ŷ = {contact_pairs.AMPLITUDE * 1e3:g} mm; Wickens'"
+        f" λ, ε, σ; K_g under the mean axle load {rows[0]['axle_load_n'] / 1e3:.1f} kN.",
+        "",
+        *contact_pairs.markdown_table(rows),
+    ]
+    (out / "contact_pairs.md").write_text("\n".join(lines) + "\n")

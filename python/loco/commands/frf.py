@@ -1,10 +1,11 @@
 """``loco frf``: the frequency response of the linearised vehicle to track irregularities and its
 output PSDs on a random track (the linear stochastic method; :mod:`loco.track_response`).
 
-Writes ``frf.png`` (|H| and phase per output), ``frf_psd.png`` (output PSDs), ``frf.csv``
-(frequency, output, input, real and imaginary part, |H| and phase), ``frf_psd.csv`` (frequency,
-output, PSD), ``frf_summary.csv`` (rms per output and W_y) and ``frf_parameters.json`` (loco
-version and every setting).
+Writes ``frf.png`` (|H| and phase per output, each with its unit; couplings at the numerical
+noise of the symmetric model are left out of the figure and named on it), ``frf_psd.png``
+(output PSDs), ``frf.csv`` (frequency, output, input, real and imaginary part, |H| and phase),
+``frf_psd.csv`` (frequency, output, PSD), ``frf_summary.csv`` (rms per output and W_y, with
+units) and ``frf_parameters.json`` (loco version and every setting).
 """
 
 from __future__ import annotations
@@ -88,9 +89,14 @@ def run(args: argparse.Namespace) -> int:
         ),
         out / "frf_psd.csv",
     )
-    summary = [{"quantity": f"rms_{o}", "value": v} for o, v in psd.rms.items()]
-    summary.append({"quantity": "W_y", "value": psd.sperling_lateral})
-    summary.append({"quantity": "least_damping_ratio", "value": psd.least_damping_ratio})
+    summary = [
+        {"quantity": f"rms_{o}", "value": v, "unit": psd.units.get(o, "")}
+        for o, v in psd.rms.items()
+    ]
+    summary.append({"quantity": "W_y", "value": psd.sperling_lateral, "unit": "–"})
+    summary.append(
+        {"quantity": "least_damping_ratio", "value": psd.least_damping_ratio, "unit": "–"}
+    )
     save_table(pd.DataFrame(summary), out / "frf_summary.csv")
     save_json(
         {
@@ -107,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
         out / "frf_parameters.json",
     )
     for row in summary:
-        print(f"{row['quantity']}: {row['value']:.4g}")
+        print(f"{row['quantity']}: {row['value']:.4g} {row['unit']}")
     if not psd.stable:
         print("warning: the linear model is unstable here; the spectra are not a steady state")
     print(f"written to {out}")

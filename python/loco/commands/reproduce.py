@@ -89,7 +89,7 @@ from loco.studies.stages import DataFile, Demand, Runtime, Stage, StageRunner
 from loco.studies.verdict import verdict_from_csv
 
 NAME = "reproduce"
-HELP = "run the whole SPEC §6 study (every figure and table) and write a Markdown report"
+HELP = "run the whole reference study (every figure and table) and write a Markdown report"
 
 
 @dataclass(frozen=True)
@@ -156,14 +156,14 @@ FULL = Sizes(
     n_tracks=8,
     curving_sizes=curving.FULL_SIZES,
 )
-#: The README's main job: 4 min 24 s on the idle 2-core machine (stop 35; 7 min 12 s at stop 23,
-#: before the exponential integrator) for the ~2 260 runs of 500 m that ``QUICK.runs()`` counts
-#: (the surrogate's 300 extra and 200 fresh samples included). It keeps SPEC's
-#: distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate costs seconds); the
-#: direct Sobol' indices use 32 Saltelli base samples (256 runs per scenario) and the speed sweep
-#: steps 25 km/h. The sweep and the damper comparison run on 4 tracks (3 is the least issue 11
-#: allows; on 2 cores a batch of 3 tracks takes as long as one of 4): 12-18 % more CPU time than
-#: on one track (two before/after pairs on the shared machine: 307 -> 345 s and 330 -> 389 s).
+#: The README's main job: about 4.5 min on an idle 2-core machine for the ~2 260 runs of 500 m
+#: that ``QUICK.runs()`` counts (the surrogate's 300 extra and 200 fresh samples included). It
+#: keeps SPEC's distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate
+#: costs seconds); the direct Sobol' indices use 32 Saltelli base samples (256 runs per
+#: scenario) and the speed sweep steps 25 km/h. The sweep and the damper comparison run on 4
+#: tracks (3 is the least the study's statistics allow; on 2 cores a batch of 3 tracks takes as
+#: long as one of 4): 12-18 % more CPU time than on one track (two before/after pairs on the
+#: shared machine: 307 -> 345 s and 330 -> 389 s).
 QUICK = dataclasses.replace(
     FULL,
     name="quick",
@@ -211,7 +211,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         dest="preset",
         action="store_const",
         const="full",
-        help=f"the sizes of SPEC §6 (~{FULL.runs()} runs)",
+        help=f"the reference study's own sizes (~{FULL.runs()} runs)",
     )
     size.add_argument(
         "--tiny", dest="preset", action="store_const", const="tiny", help=argparse.SUPPRESS

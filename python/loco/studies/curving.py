@@ -1,4 +1,4 @@
-"""The curving study (issue 17): guiding forces of YD1, YD2 and the FSD in curves.
+"""The curving study: guiding forces of YD1, YD2 and the FSD in curves.
 
 Each case is a designed curve (a straight, a clothoid transition with a linear cant run-off, a
 circular curve with cant) run at the speeds that give the cant deficiencies asked for; the

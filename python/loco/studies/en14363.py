@@ -14,7 +14,7 @@ run's core metrics are one fixed row per run that every batch and campaign file 
 assessment per section does not fit it). Nothing here is a new physical quantity: every signal
 is a core channel (``loco.wheel_channels()``).
 
-Limit values, each with its source. What the searched public texts confirm (issue 17; the
+Limit values, each with its source. What the searched public texts confirm (the
 standard's own text was not among them, so its clause numbers are not cited here):
 
 - ΣY (track shift, Prud'homme): ``(ΣY_2m)lim = α·(10 + 2·Q0/3)`` kN with 2·Q0 the static axle

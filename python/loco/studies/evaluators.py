@@ -64,7 +64,7 @@ def simulator_evaluator(
     executor: Any = None,
     store: Any = None,
 ) -> Evaluator:
-    """An evaluator that runs the locomotive model through ``loco.run_batch`` (issue 6).
+    """An evaluator that runs the locomotive model through ``loco.run_batch``.
 
     Parameters
     ----------
@@ -77,7 +77,7 @@ def simulator_evaluator(
         unknown name raises :class:`loco.ParameterError` listing the available ones.
     vehicle, threads, seed, progress
         Passed unchanged to ``loco.run_batch``. With the same ``seed`` the batch is
-        bit-identical for any thread count (issue 6), so a study is reproducible.
+        bit-identical for any thread count, so a study is reproducible.
     executor, store
         Passed unchanged to ``loco.run_batch``: where the samples run (local threads, a Dask
         cluster: :mod:`loco.executors`) and where finished samples are kept (:mod:`loco.store`).

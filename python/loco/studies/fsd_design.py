@@ -1,4 +1,4 @@
-"""FSD design study (issue 14): NSGA-II on the simulator over the FSD's own design.
+"""FSD design study: NSGA-II on the simulator over the FSD's own design.
 
 Design variables (:data:`VARIABLES`, SI units): low damping c1 and high damping c2 (N·s/m),
 cut-off frequency f_p (Hz), switching delay (s) and the valve's amplitude threshold, the
@@ -6,7 +6,8 @@ reference stroke amplitude (m) at which the hydraulic valve (trigger ``"hydrauli
 ``loco_core::dampers::frequency_valve``) is derived to cut off at f_p. The hydraulic valve is
 the mechanism SPEC §4 describes; its threshold is a real design quantity (the orifice and spring
 follow from it), where the rms-frequency estimator of the spec's FSD stays closed on both
-scenarios whatever c1 (README, "The FSD's frequency valve"), so only its c2 would matter.
+scenarios whatever c1 (docs/guide/dampers.md, "The FSD's frequency valve"), so only its c2
+would matter.
 
 Objectives (minimised): W_y on S_low (metric ``wy_max``) and A_yb on S_high (``ayb_peak_lp``),
 at the study's speed, after :data:`loco.studies.fsd_comparison.LEAD_IN` of lead-in (the valve
@@ -66,7 +67,7 @@ VARIABLES: dict[str, tuple[float, float]] = {
 }
 #: The valve the study designs (``dampers.TRIGGERS``).
 TRIGGER = "hydraulic"
-#: The constraint: linear critical speed on S_high ≥ this × the running speed (issue 14).
+#: The constraint: linear critical speed on S_high ≥ this × the running speed.
 SPEED_MARGIN = 1.1
 #: Top of the linear critical speed search, m/s (540 km/h): ``inf`` above.
 SEARCH_HIGH = 150.0

@@ -5,8 +5,9 @@ scenarios, one figure.
 
 Sizes per preset (:data:`SIZES`): ``full`` is population 16 × 6 generations (96 designs, each
 two 1 000 m runs and one linear critical speed) and 7 conicities × 3 tracks for up to 6 dampers
-(README, "FSD design study", for its measured time); ``quick`` a small version, ``tiny`` the
-test's (300 m, no lead-in). The stage's JSON records the time of each part and its run counts.
+(docs/study_results.md, "FSD design study", for its measured time); ``quick`` a small
+version, ``tiny`` the test's (300 m, no lead-in). The stage's JSON records the time of each part
+and its run counts.
 """
 
 from __future__ import annotations
@@ -211,7 +212,7 @@ def run_fsd_design(
     ]
     return StudyRecord(
         name=out.name,
-        title="FSD design study: NSGA-II on the simulator, conicity sweep (issue 14)",
+        title="FSD design study: NSGA-II on the simulator, conicity sweep",
         figures=[figure],
         tables=tables,
         parameters={k: v for k, v in settings.items() if k != "references"},

@@ -1,4 +1,4 @@
-//! Registry of built-in profiles: the CN60 rail and the JM3-type wheel states of the study, and
+//! Registry of built-in profiles: the CN60 rail (as rolled, and ground at the gauge corner) and the JM3-type wheel states of the study, and
 //! ([`conical`]) a conical wheel on a knife-edge rail of any equivalent conicity.
 //!
 //! The geometry and its sources are documented next to each profile ([`cn60`], [`jm3`]); the
@@ -13,16 +13,23 @@ use crate::error::{LocoError, Result};
 
 /// Names accepted by [`builtin_profile`].
 pub fn builtin_names() -> &'static [&'static str] {
-    &["cn60", "jm3-new", "jm3-thin-flange", "jm3-worn"]
+    &[
+        "cn60",
+        "cn60-gauge-ground",
+        "jm3-new",
+        "jm3-thin-flange",
+        "jm3-worn",
+    ]
 }
 
 /// The built-in profile called `name`; the error lists the available names.
 pub fn builtin_profile(name: &str) -> Result<Profile> {
+    if let Some(state) = jm3::builtin_state(name) {
+        return jm3::jm3(name, &state);
+    }
     match name {
         "cn60" => cn60::cn60(),
-        "jm3-new" => jm3::jm3(name, &jm3::NEW),
-        "jm3-thin-flange" => jm3::jm3(name, &jm3::THIN_FLANGE),
-        "jm3-worn" => jm3::jm3(name, &jm3::WORN),
+        "cn60-gauge-ground" => cn60::cn60_gauge_ground(),
         _ => Err(LocoError::param(
             "name",
             format!(

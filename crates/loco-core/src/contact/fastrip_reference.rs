@@ -1,7 +1,7 @@
-//! FaStrip's strips as they ran until stop 33 (twelve strips per pass in three registers, the
-//! slip-zone sums from the pass's first slipping element), kept as the bit-for-bit reference of
+//! FaStrip's strips as they ran before their passes of ten (twelve strips per pass in three
+//! registers, the slip-zone sums from the pass's first slipping element), kept as the bit-for-bit reference of
 //! [`super::super::fastrip_lanes`], which must give the same forces for any grid and input. One
-//! change: the segment's arc cosine is the lanes' vectorised one (stop 34), not libm's.
+//! change: the segment's arc cosine is the lanes' vectorised one, not libm's.
 
 use super::super::fastrip::{Call, Fastrip};
 use super::super::fastrip_lanes::{acos, Element, LANES as NEW_LANES};

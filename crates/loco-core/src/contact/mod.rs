@@ -7,6 +7,8 @@
 //! - [`delta_r`]: a sampled rolling radius difference Δr(y); [`conicity`]: equivalent conicity by
 //!   the nonlinear kinematic method of EN 15302; [`conicity_harmonic`]: by harmonic
 //!   linearisation.
+//! - [`linear_parameters`]: the linear contact parameters λ, ε, σ and the gravitational
+//!   stiffness (Wickens).
 //! - [`hertz`], [`kalker`], [`creepage`], [`fastsim`] and their tables, [`fastrip`]: normal and
 //!   creep forces.
 
@@ -27,6 +29,7 @@ pub mod geometry;
 pub mod hertz;
 pub mod hertz_table;
 pub mod kalker;
+pub mod linear_parameters;
 pub mod profile;
 pub mod profile_builder;
 pub mod profile_io;

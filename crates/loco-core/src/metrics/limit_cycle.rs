@@ -63,7 +63,10 @@ pub fn limit_cycle(x: &[f64], fs: f64, params: &StabilityParams) -> Result<Limit
     let dominant = psd.dominant(params.f0_min, params.f0_max).ok_or_else(|| {
         LocoError::param(
             "f0_max",
-            format!("no PSD bin between {} and {} Hz", params.f0_min, params.f0_max),
+            format!(
+                "no PSD bin between {} and {} Hz",
+                params.f0_min, params.f0_max
+            ),
         )
     })?;
     let f0 = dominant.frequency;
@@ -134,7 +137,11 @@ fn mean_and_variation(peaks: &[f64]) -> (f64, f64) {
     let k = peaks.len() as f64;
     let mean = peaks.iter().sum::<f64>() / k;
     let var = peaks.iter().map(|p| (p - mean).powi(2)).sum::<f64>() / (k - 1.0);
-    let cv = if mean > 0.0 { var.sqrt() / mean } else { f64::NAN };
+    let cv = if mean > 0.0 {
+        var.sqrt() / mean
+    } else {
+        f64::NAN
+    };
     (mean, cv)
 }
 

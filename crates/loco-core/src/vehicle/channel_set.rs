@@ -143,7 +143,7 @@ impl Channel {
 /// The damper channels, in order: the force of the yaw and secondary lateral dampers, the valve
 /// of the yaw dampers, then the force of the primary and secondary vertical dampers (added
 /// later, so appended to keep the positions of the older channels), then the strokes of the
-/// yaw and secondary lateral dampers (the frequency response's outputs, issue 11).
+/// yaw and secondary lateral dampers (the frequency response's outputs).
 const DAMPER_CHANNELS: [(&[DamperRole], ChannelKind); 4] = [
     (
         &[DamperRole::Yaw, DamperRole::SecondaryLateral],

@@ -7,8 +7,8 @@
 //! decay `e^(−λh)` to 4e-4 per step at `λ h` = 0.5 and to 2 % at 1.
 //!
 //! A step beyond the reference is taken only where `λ h ≤` [`CREEP_RESOLVED`]
-//! ([`super::stiffest_mode::stable_step`]). Measured before that rule (stop 27,
-//! 300 m, nominal vehicle and 3 Latin-hypercube samples, etdrk4 at 2 ms against RK4 at 1 ms):
+//! ([`super::stiffest_mode::stable_step`]). Measured without that rule
+//! (300 m, nominal vehicle and 3 Latin-hypercube samples, etdrk4 at 2 ms against RK4 at 1 ms):
 //! S_low at 80 km/h (λh 1.05) A_yb −9.3 %, A_yc PSD peak 40 %; at 100 km/h (0.84) 1.6 % and 33 %;
 //! S_norm at 80 km/h (0.99) 8.1 % and 19 %; within 0.1 % at λh 0.70 (S_low, 120 km/h), 0.79
 //! (S_norm, 100 km/h) and 0.75 (S_high, 80 km/h). The long step's errors set in between 0.8 and

@@ -1,4 +1,4 @@
-//! Nonlinear critical speed by a speed ramp-down after a disturbance (issue 5, "Analyses").
+//! Nonlinear critical speed by a speed ramp-down after a disturbance.
 //!
 //! The vehicle runs on perfect track at the scenario's speed V0 with every wheelset displaced
 //! laterally by `disturbance` at t = 0, on its rails: rise and roll follow the contact table, so a

@@ -30,8 +30,8 @@
 //!   span several cells and its creepages (about 1e-4) that structure, so these would take
 //!   `contact_step` = [`HALF_TABLE_CELL`] (5e-5: one table cell, a creepage of 1e-6 at 200 km/h).
 //!
-//! Measured against the time domain (0.2 mm sinusoids, `tests/frequency_response.rs`, README
-//! "Frequency response"): one step of 1e-7 for everything puts S_norm + YD1 alignment at 20 m at
+//! Measured against the time domain (0.2 mm sinusoids, `tests/frequency_response.rs`,
+//! docs/model/frequency_response.md): one step of 1e-7 for everything puts S_norm + YD1 alignment at 20 m at
 //! −11.4 % / −5.4° (carbody); one step of 5e-5 for everything passes it but takes S_low cross
 //! level at 150 m to +5.7 % (the Hertz secant of the roll columns: a roll step of 5e-5 alone gives
 //! +15 %). The two groups ([`LinearisationSettings::two_groups`]) pass both (+1.2 % / +2.5°,
@@ -44,7 +44,7 @@
 //! where a contact slot present at only one neighbouring grid point switches on (the lookup's
 //! lone-slot rule), so a step of 5e-5 may be reading a second contact point, which is physics at
 //! 0.9 mm of amplitude but an accident of the step. So the default stays one step of 1e-7 (the
-//! README's linear results), and `two_groups` is the candidate.
+//! documentation's linear results), and `two_groups` is the candidate.
 
 use super::integrator::OdeSystem;
 use super::layout::{wheelset, N_DOF, N_WHEELSETS, Y, YAW};

@@ -1,12 +1,12 @@
 //! Where the time loop keeps its long step: the lateral range of smooth contact geometry.
 //!
-//! The exponential scheme's 2 ms step keeps the reference's metrics (issue 16's gate) while the
-//! contact point moves smoothly over the tread. Where it jumps (the flange taking over, 45–70°
-//! within one 0.1 mm table node, or a second tread point) the wheel-rail force changes direction
-//! within a millimetre, and on the flange the contact's lateral stiffness (Hertz stiffness times
-//! sin²γ, 10⁸–10⁹ N/m against a wheelset's 2 t) makes a mode the long step follows poorly; there
-//! the step is cut into parts no longer than the reference. Each wheel is measured against its
-//! own rail (a gauge deviation moves the flanges).
+//! The exponential scheme's 2 ms step keeps the reference's metrics (within the 0.5 % gate)
+//! while the contact point moves smoothly over the tread. Where it jumps (the flange taking
+//! over, 45–70° within one 0.1 mm table node, or a second tread point) the wheel-rail force
+//! changes direction within a millimetre, and on the flange the contact's lateral stiffness
+//! (Hertz stiffness times sin²γ, 10⁸–10⁹ N/m against a wheelset's 2 t) makes a mode the long
+//! step follows poorly; there the step is cut into parts no longer than the reference. Each
+//! wheel is measured against its own rail (a gauge deviation moves the flanges).
 //!
 //! The range is the pair's own: from the table, the first jump of a touching point's contact
 //! angle less [`FLANGE_APPROACH`], but never below EN 15302's 3 mm reference amplitude
@@ -14,7 +14,7 @@
 //! the worn wheel's tread jump at 1.7 mm included. On CN60: 13.1 mm for the thin flange (jump to
 //! the flange at 15.1 mm; its wheelsets wander 3–8 mm on a low-conicity tread that stays linear
 //! there), 5.9 mm for the new wheel (flange at 7.9 mm), 3 mm for the worn one (jump at 1.7 mm).
-//! Until stop 27 the range was 3 mm for every pair: S_low runs then took 28 % more steps.
+//! With 3 mm for every pair, S_low runs took 28 % more steps.
 //!
 //! The long step itself is taken only where it resolves the creep forces' decay
 //! ([`super::stiffest_mode::stable_step`], [`super::creep_decay`]): at 10 m/s (`λ h` = 1.82 at

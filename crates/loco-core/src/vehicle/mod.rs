@@ -13,7 +13,8 @@
 //! - [`integrator`]: fixed-step RK4.
 //! - [`linearise`]: the state matrix about equilibrium, its eigenvalues (nalgebra) and the
 //!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
-//! - [`modes`]: which bodies and motions carry a mode's kinetic energy.
+//! - [`modes`]: which bodies and motions carry a mode's kinetic energy; [`mode_rules`]: which
+//!   mode is the carbody mode and which the bogie mode.
 //! - [`track_input`], [`shifted_hessenberg`], [`frequency_response`], [`response_psd`]: the model
 //!   linearised with the track as input, its transfer functions to every recorded channel and the
 //!   output spectra on a random track.
@@ -47,12 +48,14 @@ pub mod decaying_states;
 pub mod elements;
 pub mod exponential_rk4;
 pub mod frequency_response;
+pub mod input_ranges;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
 pub mod linearise;
 pub mod long_step_range;
 pub mod mass;
+pub mod mode_rules;
 pub mod modes;
 pub mod parameter_schema;
 pub mod parameters;

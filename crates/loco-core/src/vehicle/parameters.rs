@@ -335,7 +335,7 @@ fn describe(value: &toml::Value) -> String {
 }
 
 /// The 1-based line of `name` in `[section]` (None: a top-level key) of `text`, or 0.
-fn line_of(text: &str, section: Option<&str>, name: &str) -> usize {
+pub(crate) fn line_of(text: &str, section: Option<&str>, name: &str) -> usize {
     let mut current: Option<&str> = None;
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();

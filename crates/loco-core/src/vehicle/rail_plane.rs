@@ -19,7 +19,7 @@
 //!   frame: the normals lean by θ, so a wheel load W gets the downhill component `W θ`;
 //! - the creepages are formed in the track frame with the wheel's true angular velocity (its spin
 //!   axis rolled by the full φ) and the rotated contact offsets, so the rails' roll no longer
-//!   appears as a spurious rolling-radius difference `θ·l/r0` (the error of issue 11: the spin
+//!   appears as a spurious rolling-radius difference `θ·l/r0` (the error this corrects: the spin
 //!   vector was rolled by φ while the offsets kept the table's level pose);
 //! - the rail surface's velocity at the contact point, the proxy for the contact point's
 //!   longitudinal lead on a sloping rail (see `wheel_rail`), is that of the rolling rail plane:

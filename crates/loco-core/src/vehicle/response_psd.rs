@@ -20,7 +20,7 @@
 //!   power-weighted mean), and combined with the GB/T 5599-2019 weighting. The expected spectrum
 //!   is smooth, so its lines are its resolved peaks; a recorded segment's random spectrum splits
 //!   the same energy into more, smaller lines, and because A enters cubed its index is lower
-//!   (see the README's verification of the linear stochastic method for the measured ratio).
+//!   (see docs/model/frequency_response.md, the linear stochastic method, for the measured ratio).
 
 use super::frequency_response::{check_frequencies, FrequencyResponse, ResponseSolver};
 use super::linearise::{least_damped, LinearSearch};

@@ -30,7 +30,7 @@ pub const EXPONENTIAL_STEP: f64 = 2e-3;
 /// Settings of the time integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RunSettings {
-    /// Integration step, s (fixed; see the convergence study in the README); by default the
+    /// Integration step, s (fixed; see the convergence study in docs/model/integrator.md); by default the
     /// scheme's [`Integrator::default_step`].
     pub step: f64,
     /// The scheme that takes the steps.

@@ -84,6 +84,12 @@ impl VehicleStructure {
         self.bodies.iter().map(|b| b.mass).sum()
     }
 
+    /// Mean axle load, N: the vehicle's weight (its wheelsets included) over its wheelsets, the
+    /// `W` of the linear contact theory's gravitational stiffness.
+    pub fn mean_axle_load(&self) -> f64 {
+        self.total_mass() * self.gravity / super::layout::N_WHEELSETS as f64
+    }
+
     /// Body motions and velocities from coordinates `q` (m, rad) and velocities `qd`.
     pub fn body_states(&self, q: &[f64], qd: &[f64], out: &mut BodyStates) {
         for (i, body) in self.bodies.iter().enumerate() {

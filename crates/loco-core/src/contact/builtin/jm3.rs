@@ -110,6 +110,19 @@ pub const WORN: TreadState = TreadState {
     band_radius: 0.124,
 };
 
+/// The built-in JM3 wheels by name and tread state, the one list the profile names, the
+/// uncertainty ranges and the bindings read.
+pub const BUILTIN: [(&str, TreadState); 3] = [
+    ("jm3-new", NEW),
+    ("jm3-thin-flange", THIN_FLANGE),
+    ("jm3-worn", WORN),
+];
+
+/// The tread state of the built-in JM3 wheel called `name`, `None` for another name.
+pub fn builtin_state(name: &str) -> Option<TreadState> {
+    BUILTIN.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)
+}
+
 /// Largest slope of [`conical_tread`] (–): steeper cones meet the flange face above the depth
 /// where the flange thickness is measured, so the JM3 flange no longer fits (about 0.28).
 pub const MAX_CONE_SLOPE: f64 = 0.25;
