@@ -14,7 +14,7 @@
 //! [`super::accelerometer`]). Channels added later are appended so every older channel keeps its
 //! position.
 
-use super::accelerometer::specific_force;
+use super::accelerometer::BodyAxes;
 use super::kinematics::point_motion;
 use super::layout::*;
 use super::simulation::VehicleSystem;
@@ -346,6 +346,9 @@ impl ChannelSet {
     pub fn sample(&self, system: &VehicleSystem, y: &[f64], dy: &[f64], mut push: impl FnMut(f64)) {
         let s = &system.structure;
         let acc = &dy[N_DOF..2 * N_DOF];
+        // The accelerometers of one body follow each other: its acceleration and axes are formed
+        // once for them.
+        let mut axes: Option<(usize, [f64; 6], BodyAxes)> = None;
         for probe in &self.probes {
             push(match *probe {
                 Probe::Acceleration {
@@ -377,8 +380,19 @@ impl ChannelSet {
                     point,
                     component,
                 } => {
-                    let relative = point_motion(&s.bodies[body].map.apply(acc), point);
-                    specific_force(system, y, body, relative)[component]
+                    let (_, motion, frame) = match axes {
+                        Some(cached) if cached.0 == body => cached,
+                        _ => {
+                            let fresh = (
+                                body,
+                                s.bodies[body].map.apply(acc),
+                                BodyAxes::of(system, y, body),
+                            );
+                            axes = Some(fresh);
+                            fresh
+                        }
+                    };
+                    frame.reading(point_motion(&motion, point))[component]
                 }
             });
         }
