@@ -6,6 +6,7 @@ disturbance decays and nothing is reported, although the EN 14363 dominant frequ
 same mode's."""
 
 import loco
+from loco.assessment import stability_quantities
 from loco.channels import Metric
 
 DISTURBANCE = 0.005
@@ -25,7 +26,9 @@ def _run(speed: float) -> tuple[dict[str, float], float]:
     return loco.simulate(vehicle, scenario).metrics, mode.frequency
 
 
-def test_hunting_above_the_linear_critical_speed_is_a_limit_cycle_and_a_decay_below_is_not() -> None:
+def test_hunting_above_the_linear_critical_speed_is_a_limit_cycle_and_a_decay_below_is_not() -> (
+    None
+):
     vehicle = loco.Locomotive.default()
     critical = loco.critical_speed(
         vehicle, loco.Scenario(name="S_high", yaw_damper=loco.dampers.YD1), tolerance=1.0
@@ -43,6 +46,10 @@ def test_hunting_above_the_linear_critical_speed_is_a_limit_cycle_and_a_decay_be
     # linearisation's.
     assert abs(above[Metric.AYB_CYCLE_HZ] - linear_hz) < 0.12 * linear_hz
     assert above[Metric.AYB_CYCLE_AMPLITUDE] > 1.0
+    # The assessment calls it hunting, whichever side of the EN 14363 limit its rms is on.
+    sliding_rms, cycle = stability_quantities(above)
+    assert cycle.note.startswith(f"hunts: limit cycle {above[Metric.AYB_CYCLE_HZ]:.1f} Hz")
+    assert sliding_rms.passed == (above[Metric.AYB_EN_UNSTABLE] == 0.0)
     below, _ = _run(0.9 * critical)
     print(
         f"at 0.9×: cycle {below[Metric.AYB_LIMIT_CYCLE]}, dominant {below[Metric.AYB_F0_HZ]:.3f} "
@@ -50,3 +57,4 @@ def test_hunting_above_the_linear_critical_speed_is_a_limit_cycle_and_a_decay_be
     )
     assert below[Metric.AYB_LIMIT_CYCLE] == 0.0
     assert below[Metric.AYB_CYCLE_AMPLITUDE] < 0.05 * above[Metric.AYB_CYCLE_AMPLITUDE]
+    assert stability_quantities(below)[1].note == "no sustained limit cycle"

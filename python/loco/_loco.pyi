@@ -333,6 +333,9 @@ class Metric:
     AYB_EN_RMS: ClassVar[str]
     AYB_EN_LIMIT: ClassVar[str]
     AYB_EN_UNSTABLE: ClassVar[str]
+    AYB_LIMIT_CYCLE: ClassVar[str]
+    AYB_CYCLE_HZ: ClassVar[str]
+    AYB_CYCLE_AMPLITUDE: ClassVar[str]
 
 @final
 class ChannelKind:
