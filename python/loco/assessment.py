@@ -47,6 +47,7 @@ __all__ = [
     "Quantity",
     "Zone",
     "assess",
+    "hunts",
     "stability_quantities",
     "wheelset_offsets",
     "zones",
@@ -206,20 +207,26 @@ def _row(
     return Quantity(key, quantity, zone, value, limit, unit, passed, SOURCES[key], True, note)
 
 
+def hunts(run_metrics: Mapping[str, float]) -> bool | None:
+    """Whether the run's bogie frame settled into a sustained limit cycle (the core's
+    ``ayb_limit_cycle``; ``None``: undefined, a record too short for it)."""
+    cycle = float(run_metrics[Metric.AYB_LIMIT_CYCLE])
+    return None if math.isnan(cycle) else cycle == 1.0
+
+
 def stability_quantities(
     run_metrics: Mapping[str, float], zone: str = "whole run"
 ) -> list[Quantity]:
     """The bogie frame's stability by the simplified method and its limit cycle, from a run's
     core metrics (the verdict reads these per track)."""
     rms, limit = run_metrics[Metric.AYB_EN_RMS], run_metrics[Metric.AYB_EN_LIMIT]
-    cycle = run_metrics[Metric.AYB_LIMIT_CYCLE]
     hz, amplitude = run_metrics[Metric.AYB_CYCLE_HZ], run_metrics[Metric.AYB_CYCLE_AMPLITUDE]
-    hunting = cycle == 1.0
-    note = (
-        f"hunts: limit cycle {hz:.1f} Hz, ±{amplitude:.1f} m/s²"
-        if hunting
-        else ("no sustained limit cycle" if cycle == 0.0 else "undefined (record too short)")
-    )
+    hunting = hunts(run_metrics)
+    note = {
+        True: f"hunts: limit cycle {hz:.1f} Hz, ±{amplitude:.1f} m/s²",
+        False: "no sustained limit cycle",
+        None: "undefined (record too short)",
+    }[hunting]
     return [
         _row("stability", "bogie frame sliding rms (f0 ± 2 Hz)", zone, rms, limit, "m/s²"),
         Quantity(

@@ -13,7 +13,8 @@ Per scenario (:data:`loco.studies.fsd_comparison.JUDGED_BY`: W_y on S_low, A_yb 
   (W_y below 2.75, the locomotive band of GB/T 5599-2019, ``loco.metrics``); on S_high no
   instability flag of the bogie frame (EN 14363 sliding rms over its limit, or the GB/T 8 m/s²
   peaks in 6 cycles; metrics ``ayb_en_unstable``, ``ayb_gbt_unstable``) and no sustained limit
-  cycle of the frame (metric ``ayb_limit_cycle``, the rule of the core's ``metrics::limit_cycle``).
+  cycle of the frame (:func:`loco.assessment.hunts`, the rule of the core's
+  ``metrics::limit_cycle``).
   A damper whose bogie settles into a limit cycle *hunts*, whether or not the EN 14363 sliding
   rms exceeds its limit: the verdict names its frequency and amplitude and which side of the
   limit it is on (:class:`Hunting`). A table without those columns (written by an older loco)
@@ -29,7 +30,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from loco import _loco
+from loco import _loco, assessment
 from loco.channels import Metric
 from loco.studies.fsd_comparison import JUDGED_BY, LIMIT_CYCLE_COLUMNS, STABILITY_FLAGS
 from loco.studies.statistics import ALPHA, Ranking, rank
@@ -83,7 +84,7 @@ def hunting(frame: pd.DataFrame) -> Hunting | None:
     """The limit cycles in the finished rows of one damper's per-track table (``None``: on no
     track; columns :data:`loco.studies.fsd_comparison.LIMIT_CYCLE_COLUMNS`)."""
     done = frame[frame["status"] == 0]
-    cycling = done[done[Metric.AYB_LIMIT_CYCLE] == 1.0]
+    cycling = done[[assessment.hunts(row) is True for _, row in done.iterrows()]]
     if cycling.empty:
         return None
     return Hunting(
@@ -205,10 +206,11 @@ def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
         columns = [*STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS]
         if not all(f in done.columns for f in columns):
             return None
-        flags = done[[*STABILITY_FLAGS, Metric.AYB_LIMIT_CYCLE]].to_numpy(dtype=np.float64)
-        if not np.isfinite(flags).all():
+        flags = done[list(STABILITY_FLAGS)].to_numpy(dtype=np.float64)
+        hunting = [assessment.hunts(row) for _, row in done.iterrows()]
+        if not np.isfinite(flags).all() or None in hunting:
             return None
-        return bool((flags == 0.0).all())
+        return bool((flags == 0.0).all()) and not any(hunting)
     return None
 
 
