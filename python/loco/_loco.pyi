@@ -336,6 +336,9 @@ class Metric:
     AYB_LIMIT_CYCLE: ClassVar[str]
     AYB_CYCLE_HZ: ClassVar[str]
     AYB_CYCLE_AMPLITUDE: ClassVar[str]
+    AYC_LIMIT_CYCLE: ClassVar[str]
+    AYC_CYCLE_HZ: ClassVar[str]
+    AYC_CYCLE_AMPLITUDE: ClassVar[str]
 
 @final
 class ChannelKind:

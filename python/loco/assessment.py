@@ -41,6 +41,7 @@ from loco.vehicle import Locomotive
 
 __all__ = [
     "COMFORT_CLASSES",
+    "LIMIT_CYCLES",
     "SOURCES",
     "VEHICLE_CLASSES",
     "Assessment",
@@ -207,40 +208,54 @@ def _row(
     return Quantity(key, quantity, zone, value, limit, unit, passed, SOURCES[key], True, note)
 
 
-def hunts(run_metrics: Mapping[str, float]) -> bool | None:
-    """Whether the run's bogie frame settled into a sustained limit cycle (the core's
-    ``ayb_limit_cycle``; ``None``: undefined, a record too short for it)."""
-    cycle = float(run_metrics[Metric.AYB_LIMIT_CYCLE])
+#: The limit-cycle metrics of each body: (flag, frequency, amplitude).
+LIMIT_CYCLES: dict[str, tuple[str, str, str]] = {
+    "bogie frame": (Metric.AYB_LIMIT_CYCLE, Metric.AYB_CYCLE_HZ, Metric.AYB_CYCLE_AMPLITUDE),
+    "carbody": (Metric.AYC_LIMIT_CYCLE, Metric.AYC_CYCLE_HZ, Metric.AYC_CYCLE_AMPLITUDE),
+}
+
+
+def hunts(run_metrics: Mapping[str, float], body: str = "bogie frame") -> bool | None:
+    """Whether the run's ``body`` (a key of :data:`LIMIT_CYCLES`) settled into a sustained limit
+    cycle (the core's limit-cycle flag; ``None``: undefined, a record too short for it)."""
+    cycle = float(run_metrics[LIMIT_CYCLES[body][0]])
     return None if math.isnan(cycle) else cycle == 1.0
 
 
-def stability_quantities(
-    run_metrics: Mapping[str, float], zone: str = "whole run"
-) -> list[Quantity]:
-    """The bogie frame's stability by the simplified method and its limit cycle, from a run's
-    core metrics (the verdict reads these per track)."""
-    rms, limit = run_metrics[Metric.AYB_EN_RMS], run_metrics[Metric.AYB_EN_LIMIT]
-    hz, amplitude = run_metrics[Metric.AYB_CYCLE_HZ], run_metrics[Metric.AYB_CYCLE_AMPLITUDE]
-    hunting = hunts(run_metrics)
+def _cycle_quantity(run_metrics: Mapping[str, float], body: str, zone: str) -> Quantity:
+    _, hz_key, amplitude_key = LIMIT_CYCLES[body]
+    hz, amplitude = run_metrics[hz_key], run_metrics[amplitude_key]
+    hunting = hunts(run_metrics, body)
     note = {
         True: f"hunts: limit cycle {hz:.1f} Hz, ±{amplitude:.1f} m/s²",
         False: "no sustained limit cycle",
         None: "undefined (record too short)",
     }[hunting]
+    value = amplitude if hunting else 0.0
+    source = SOURCES["limit_cycle"]
+    return Quantity(
+        "limit_cycle",
+        f"{body} limit cycle amplitude",
+        zone,
+        value,
+        math.nan,
+        "m/s²",
+        None,
+        source,
+        False,
+        note,
+    )
+
+
+def stability_quantities(
+    run_metrics: Mapping[str, float], zone: str = "whole run"
+) -> list[Quantity]:
+    """The bogie frame's stability by the simplified method and the limit cycles of the frame
+    and the carbody, from a run's core metrics (the verdict reads these per track)."""
+    rms, limit = run_metrics[Metric.AYB_EN_RMS], run_metrics[Metric.AYB_EN_LIMIT]
     return [
         _row("stability", "bogie frame sliding rms (f0 ± 2 Hz)", zone, rms, limit, "m/s²"),
-        Quantity(
-            "limit_cycle",
-            "bogie frame limit cycle amplitude",
-            zone,
-            amplitude if hunting else 0.0,
-            math.nan,
-            "m/s²",
-            None,
-            SOURCES["limit_cycle"],
-            False,
-            note,
-        ),
+        *(_cycle_quantity(run_metrics, body, zone) for body in LIMIT_CYCLES),
     ]
 
 

@@ -1,5 +1,7 @@
 //! A sustained limit cycle of the bogie frame's lateral acceleration: hunting named by its
-//! frequency and amplitude, whether or not its level exceeds a standard's limit.
+//! frequency and amplitude, whether or not its level exceeds a standard's limit. The run metrics
+//! apply the same rule to the carbody floor's lateral acceleration, its dominant frequency
+//! sought in the carbody band ([`super::summary`]).
 //!
 //! The rule, on the record `x` of the frame's lateral acceleration:
 //!
