@@ -615,6 +615,7 @@ def linear_critical_speed(
     high: float | None = None,
     tolerance: float | None = None,
     band: tuple[float, float] | None = None,
+    guess: float | None = None,
 ) -> tuple[float, str, float, float]: ...
 def ramp_down(
     vehicle: Vehicle,

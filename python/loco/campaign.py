@@ -308,22 +308,19 @@ def _frame(
     inputs: dict[str, Any],
     key: str,
 ) -> pd.DataFrame:
-    frame = pd.DataFrame({"sample": idx})
-    for j, name in enumerate(names):
-        frame[name] = x[idx, j]
-    frame["seed"] = seed
-    for j, name in enumerate(result.metric_names):
-        frame[name] = result.metrics[new, j]
+    # Built from one dict of columns (a column at a time fragments a frame of many inputs).
     codes = result.status[new]
-    frame["status"] = [STATUS_NAMES[int(c)] for c in codes]
-    frame["status_code"] = codes.astype(np.int32)
-    frame["message"] = [m for m, k in zip(result.messages, new, strict=True) if k]
-    frame["loco_version"] = inputs["loco_version"]
-    frame["build"] = inputs["build"]
-    frame["vehicle_hash"] = inputs["vehicle_hash"]
-    frame["scenario_hash"] = inputs["scenario_hash"]
-    frame["campaign"] = key
-    return frame
+    columns: dict[str, Any] = {"sample": idx}
+    columns.update({name: x[idx, j] for j, name in enumerate(names)})
+    columns["seed"] = seed
+    columns.update({name: result.metrics[new, j] for j, name in enumerate(result.metric_names)})
+    columns["status"] = [STATUS_NAMES[int(c)] for c in codes]
+    columns["status_code"] = codes.astype(np.int32)
+    columns["message"] = [m for m, k in zip(result.messages, new, strict=True) if k]
+    for name in ("loco_version", "build", "vehicle_hash", "scenario_hash"):
+        columns[name] = inputs[name]
+    columns["campaign"] = key
+    return pd.DataFrame(columns)
 
 
 class _Bar:

@@ -40,13 +40,13 @@ class ModeEnergies:
 
     def bodies(self, k: int) -> dict[str, float]:
         """Each body's share (–) of mode ``k``'s kinetic energy."""
-        return {n: float(v) for n, v in zip(self.names, self.shares[k], strict=True)}
+        return dict(zip(self.names, self.shares[k].tolist(), strict=True))
 
     def body_motions(self, k: int) -> dict[str, dict[str, float]]:
         """Per body, the share (–) of its energy in mode ``k`` in each of :data:`MOTIONS`."""
         return {
-            n: {m: float(v) for m, v in zip(MOTIONS, row, strict=True)}
-            for n, row in zip(self.names, self.motions[k], strict=True)
+            n: dict(zip(MOTIONS, row, strict=True))
+            for n, row in zip(self.names, self.motions[k].tolist(), strict=True)
         }
 
 

@@ -23,6 +23,8 @@ import pandas as pd
 from threadpoolctl import threadpool_limits
 
 from loco import _loco
+from loco.dampers import PRESETS, Damper, maxwell
+from loco.elementary_effects import elementary_effects
 from loco.profiles import jm3
 from loco.schema import parameter_schema
 from loco.simulation import SCENARIOS, Scenario
@@ -32,6 +34,7 @@ from loco.vehicle import Locomotive
 __all__ = [
     "OUTPUTS",
     "Output",
+    "analyse",
     "evaluate",
     "morris",
     "plot_morris",
@@ -136,12 +139,23 @@ def _checked_outputs(outputs: Iterable[str]) -> list[str]:
 
 
 def evaluate(
-    vehicle: Locomotive, keys: Sequence[str], values: Sequence[float], outputs: Sequence[str]
+    vehicle: Locomotive,
+    keys: Sequence[str],
+    values: Sequence[float],
+    outputs: Sequence[str],
+    guesses: dict[str, float] | None = None,
 ) -> list[float]:
     """The ``outputs`` of ``vehicle`` with the inputs ``keys`` set to ``values`` (vehicle
     parameters as overrides, ``scenario.rail_inclination`` on every scenario, a JM3 wheel's
-    field on the scenarios that run on it). An output the model cannot give (no mode passes
-    the rule, no equilibrium) is NaN."""
+    field on the scenarios that run on it). The yaw damper's damping and series stiffness are
+    tolerances on a given damper: an output with a preset damper (YD1, YD2) takes the preset
+    scaled by the same factor as the file's damper (value over the file's nominal), since the
+    preset replaces the file's damper in that scenario. A critical speed named in ``guesses``
+    (m/s, such as the nominal vehicle's) starts its search there (:func:`loco.critical_speed`'s
+    ``guess``: the same speed within its tolerance, in about half the time). An output the
+    model cannot give (no mode passes the rule, no equilibrium, no JM3 tread for the wheel's
+    construction values) is NaN; a vehicle stable up to the critical speed search's upper limit
+    (110 m/s) takes that limit as its critical speed (censored)."""
     overrides: dict[str, float] = {}
     scenario_settings: dict[str, Any] = {}
     wheels: dict[str, dict[str, float]] = {}
@@ -153,6 +167,7 @@ def evaluate(
             wheels.setdefault(wheel, dict(_JM3_STATES[wheel]))[field] = float(value)
         else:
             overrides[key] = float(value)
+    damper_factors = _yaw_damper_factors(vehicle, overrides)
     varied = vehicle.replace(overrides)
     out = []
     with threadpool_limits(limits=1):
@@ -161,19 +176,58 @@ def evaluate(
             settings = dict(scenario_settings)
             wheel = _SCENARIO_WHEELS[o.scenario]
             if wheel in wheels:
-                settings["wheel"] = jm3(**wheels[wheel])
+                try:
+                    settings["wheel"] = jm3(**wheels[wheel])
+                except _loco.ParameterError:
+                    # The ranges are per field: a corner of them can give no JM3 tread (the
+                    # band and the flange root overlap); the model has no vehicle there.
+                    out.append(math.nan)
+                    continue
                 settings["rail"] = SCENARIOS[o.scenario][1]
             else:
                 settings["name"] = o.scenario
-            scenario = Scenario(speed=SPEED, yaw_damper=o.damper, **settings)
-            out.append(_output(varied, scenario, o.quantity))
+            damper = _scaled_preset(o.damper, damper_factors)
+            scenario = Scenario(speed=SPEED, yaw_damper=damper, **settings)
+            out.append(_output(varied, scenario, o.quantity, (guesses or {}).get(name)))
     return out
 
 
-def _output(vehicle: Locomotive, scenario: Scenario, quantity: str) -> float:
+#: The file's yaw damper keys a preset damper takes as factors, with the preset's field.
+_YAW_DAMPER_FIELDS = {
+    "secondary.yaw_damper_damping": "damping",
+    "secondary.yaw_damper_series_stiffness": "series_stiffness",
+}
+
+
+def _yaw_damper_factors(vehicle: Locomotive, overrides: dict[str, float]) -> dict[str, float]:
+    """Each overridden yaw damper key's value over the vehicle's own, by the preset's field."""
+    return {
+        field: overrides[key] / vehicle[key]
+        for key, field in _YAW_DAMPER_FIELDS.items()
+        if key in overrides
+    }
+
+
+def _scaled_preset(name: str, factors: dict[str, float]) -> Damper | str:
+    """The preset damper ``name`` with its fields scaled by ``factors`` (the name itself when
+    none is)."""
+    if not factors:
+        return name
+    preset = PRESETS[name].parameters()
+    return maxwell(
+        float(preset["damping"] or 0.0) * factors.get("damping", 1.0),
+        float(preset["series_stiffness"] or 0.0) * factors.get("series_stiffness", 1.0),
+    )
+
+
+def _output(
+    vehicle: Locomotive, scenario: Scenario, quantity: str, guess: float | None = None
+) -> float:
     try:
         if quantity == "critical_speed":
-            return float(critical_speed(vehicle, scenario))
+            speed = critical_speed(vehicle, scenario, guess=guess)
+            # Stable up to the search limit: the speed is censored there (the limit, not inf).
+            return speed.limit if speed.outcome == "stable_at_high" else float(speed)
         modes = eigen(vehicle, scenario)
         mode = modes.carbody_mode() if quantity == "carbody_zeta" else modes.bogie_mode()
         return mode.damping_ratio
@@ -181,8 +235,51 @@ def _output(vehicle: Locomotive, scenario: Scenario, quantity: str) -> float:
         return math.nan
 
 
-def _evaluate_row(args: tuple[Locomotive, list[str], list[float], list[str]]) -> list[float]:
-    return evaluate(*args)
+def _evaluate_trajectory(
+    args: tuple[Locomotive, list[str], list[list[float]], list[str], dict[str, float]],
+) -> list[list[float]]:
+    """The outputs of one Morris trajectory's points, in order: each point's critical speeds
+    start from the previous point's (one input apart: close), the first from ``guesses``."""
+    vehicle, keys, points, names, guesses = args
+    out = []
+    guess = dict(guesses)
+    for values in points:
+        row = evaluate(vehicle, keys, values, names, guess)
+        guess.update(
+            (n, v) for n, v in zip(names, row, strict=True) if n in guess and math.isfinite(v)
+        )
+        out.append(row)
+    return out
+
+
+def _problem(table: pd.DataFrame) -> dict[str, Any]:
+    """The SALib problem of a :func:`screened_inputs` table: each input uniform over its range."""
+    return {
+        "num_vars": len(table),
+        "names": list(table["key"]),
+        "bounds": [[lo, hi] for lo, hi in zip(table["low"], table["high"], strict=True)],
+    }
+
+
+def morris_samples(
+    vehicle: Locomotive | None = None,
+    outputs: Iterable[str] = tuple(OUTPUTS),
+    trajectories: int = 20,
+    seed: int = 0,
+    levels: int = 4,
+    ranges_file: str | Path | None = None,
+) -> np.ndarray:
+    """The points :func:`morris` evaluates with these settings, one row per point (columns:
+    the inputs of :func:`screened_inputs`, SI), ``trajectories`` runs of ``inputs + 1`` points."""
+    from SALib.sample import morris as sample
+
+    if not (isinstance(trajectories, int) and trajectories >= 2):
+        raise _loco.ParameterError(
+            f"invalid parameter `trajectories`: must be a whole number ≥ 2, got {trajectories!r}"
+        )
+    table = screened_inputs(ranges(vehicle, ranges_file), _checked_outputs(outputs))
+    x: np.ndarray = sample.sample(_problem(table), trajectories, num_levels=levels, seed=seed)
+    return x
 
 
 def morris(
@@ -203,60 +300,68 @@ def morris(
     :data:`OUTPUTS`. Returns one row per input and output: ``mu_star`` (mean absolute
     elementary effect, in the output's unit for a step across the whole range), ``mu``,
     ``sigma`` (their spread: interactions and nonlinearity), ``mu_star_conf`` (95 % bootstrap),
-    and ``trajectories_used``; a trajectory with a NaN output (the rule picks no mode there) is
-    left out of that output. ``executor`` is any :class:`concurrent.futures.Executor` (a process
+    and ``effects`` (the steps that gave one: a step touching a point with a NaN output, where
+    the rule picks no mode, gives none; :mod:`loco.elementary_effects`). ``executor`` is any
+    :class:`concurrent.futures.Executor` (a process
     pool, or ``distributed.Client.get_executor()`` for a Dask cluster); default: this process,
-    one row after the other. Results are the same whichever executor runs the rows."""
-    from SALib.analyze import morris as analyze
-    from SALib.sample import morris as sample
-
+    one trajectory after the other (a trajectory is one task: its points run in order, each
+    critical speed searched from the previous point's). Results are the same whichever executor
+    runs the trajectories."""
     vehicle = vehicle or Locomotive.default()
     names = _checked_outputs(outputs)
-    if not (isinstance(trajectories, int) and trajectories >= 2):
-        raise _loco.ParameterError(
-            f"invalid parameter `trajectories`: must be a whole number ≥ 2, got {trajectories!r}"
-        )
     table = screened_inputs(ranges(vehicle, ranges_file), names)
     keys = list(table["key"])
-    problem = {
-        "num_vars": len(keys),
-        "names": keys,
-        "bounds": [[lo, hi] for lo, hi in zip(table["low"], table["high"], strict=True)],
+    x = morris_samples(vehicle, names, trajectories, seed, levels, ranges_file)
+    # The nominal vehicle's critical speeds start each sample's search (same result within
+    # the search's tolerance, in about half the linearisations).
+    nominal = evaluate(vehicle, keys, [float(v) for v in table["nominal"]], names)
+    guesses = {
+        n: v
+        for n, v in zip(names, nominal, strict=True)
+        if OUTPUTS[n].quantity == "critical_speed" and math.isfinite(v)
     }
-    x = sample.sample(problem, trajectories, num_levels=levels, seed=seed)
-    tasks = [(vehicle, keys, [float(v) for v in row], names) for row in x]
-    rows: Iterable[list[float]]
-    rows = executor.map(_evaluate_row, tasks) if executor else map(_evaluate_row, tasks)
+    per = len(keys) + 1
+    points = [[float(v) for v in row] for row in x]
+    tasks = [
+        (vehicle, keys, points[t * per : (t + 1) * per], names, guesses)
+        for t in range(trajectories)
+    ]
+    done: Iterable[list[list[float]]]
+    if executor:
+        done = executor.map(_evaluate_trajectory, tasks)
+    else:
+        done = map(_evaluate_trajectory, tasks)
+    bar = None
     if progress:
         from tqdm import tqdm
 
-        rows = tqdm(rows, total=len(tasks), desc="morris", unit="sample")
-    y = np.full((len(tasks), len(names)), np.nan)
-    for i, values in enumerate(rows):
-        y[i] = values
-        if on_row is not None:
-            on_row(i, values)
-    per = len(keys) + 1
+        bar = tqdm(total=len(points), desc="morris", unit="sample")
+    y = np.full((len(points), len(names)), np.nan)
+    for t, rows in enumerate(done):
+        for k, values in enumerate(rows):
+            y[t * per + k] = values
+            if on_row is not None:
+                on_row(t * per + k, values)
+        if bar is not None:
+            bar.update(len(rows))
+    if bar is not None:
+        bar.close()
+    return analyse(table, x, y, names, seed)
+
+
+def analyse(
+    table: pd.DataFrame, x: np.ndarray, y: np.ndarray, outputs: Sequence[str], seed: int = 0
+) -> pd.DataFrame:
+    """The screening table of :func:`morris` from its points ``x`` (the inputs of ``table``,
+    :func:`screened_inputs`) and outputs ``y`` (one column per output, NaN where the model
+    gives none): :func:`loco.elementary_effects.elementary_effects` per output."""
     frames = []
-    for j, name in enumerate(names):
-        complete = np.isfinite(y[:, j].reshape(trajectories, per)).all(axis=1)
-        used = np.repeat(complete, per)
-        result = analyze.analyze(
-            problem, x[used], y[used, j], num_levels=levels, seed=seed, print_to_console=False
+    for j, name in enumerate(outputs):
+        frame = elementary_effects(
+            x, y[:, j], table["low"], table["high"], list(table["key"]), seed=seed
         )
-        frames.append(
-            pd.DataFrame(
-                {
-                    "output": name,
-                    "input": keys,
-                    "mu_star": result["mu_star"],
-                    "mu": result["mu"],
-                    "sigma": result["sigma"],
-                    "mu_star_conf": result["mu_star_conf"],
-                    "trajectories_used": int(complete.sum()),
-                }
-            )
-        )
+        frame.insert(0, "output", name)
+        frames.append(frame)
     return pd.concat(frames, ignore_index=True)
 
 

@@ -15,68 +15,68 @@ use std::sync::Mutex;
 use std::time::Duration;
 
 create_exception!(
-    _loco,
+    loco._loco,
     LocoError,
     PyException,
     "Base class of every error raised by loco."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     ParameterError,
     LocoError,
     "A parameter or input array is not physical or has the wrong shape; the message names it."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     ParameterRangeError,
     ParameterError,
     "A vehicle parameter is outside its physical range (the message names it, its value and the \
      range; list it in the vehicle file's `allow_out_of_range` to study it anyway)."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     ProfileFormatError,
     LocoError,
     "A profile, track or study file is malformed; the message names the file and line."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     LocoIOError,
     LocoError,
     "A file could not be read or written."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     ContactError,
     LocoError,
     "The wheel-rail contact search failed."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     SimulationError,
     LocoError,
     "A time integration failed; subclasses say how."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     DivergenceError,
     SimulationError,
     "The integration produced non-finite states or runaway amplitudes."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     DerailmentError,
     SimulationError,
     "A wheel climbed past its flange."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     EquilibriumError,
     SimulationError,
     "The static equilibrium a run or linearisation starts from was not found (Newton search)."
 );
 create_exception!(
-    _loco,
+    loco._loco,
     InternalError,
     LocoError,
     "A bug in loco (a Rust panic caught at the boundary); please report it."

@@ -227,14 +227,15 @@ fn linearise<'py>(
     Ok(matrix.into_pyarray(py))
 }
 
-/// Linear critical speed (m/s) by bisection of the linearisation on perfect track (see
+/// Linear critical speed (m/s) by bisection of the linearisation on perfect track, or from a
+/// `guess` (m/s) by a bracket around it and interpolation (see
 /// `loco.critical_speed(..., method="linear")`) and how the search ended: `"found"`,
 /// `"stable_at_high"` (speed `inf`: none below the search limit `high`) or `"unstable_at_low"`
 /// (speed `low`: at or below it); and the bracket (low, high) searched, m/s. Each setting left as
 /// None takes the core's default.
 #[pyfunction]
 #[pyo3(signature = (
-    vehicle, scenario, *, low=None, high=None, tolerance=None, band=None
+    vehicle, scenario, *, low=None, high=None, tolerance=None, band=None, guess=None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn linear_critical_speed(
@@ -245,6 +246,7 @@ fn linear_critical_speed(
     high: Option<f64>,
     tolerance: Option<f64>,
     band: Option<(f64, f64)>,
+    guess: Option<f64>,
 ) -> PyResult<(f64, &'static str, f64, f64)> {
     let scenario = scenario.inner.clone();
     let structure = Arc::clone(&vehicle.structure);
@@ -254,6 +256,7 @@ fn linear_critical_speed(
         high: high.unwrap_or(default.high),
         tolerance: tolerance.unwrap_or(default.tolerance),
         band: band.unwrap_or(default.band),
+        guess,
         ..default
     };
     let (searched_low, searched_high) = (search.low, search.high);
@@ -264,8 +267,8 @@ fn linear_critical_speed(
         linear_critical_speed_cancellable(structure, &scenario, &search, Some(&worker_cancel))
     };
     let speed = run_detached_monitored(py, work, &cancel, |_| Ok(()))?;
-    // The core returns exactly `inf` and `low` for the two ends of the bracket; a bisection
-    // result lies strictly inside it.
+    // The core returns exactly `inf` and `low` for the two ends of the bracket; a found
+    // critical speed lies strictly inside it.
     let outcome = if speed.is_infinite() {
         "stable_at_high"
     } else if speed == searched_low {

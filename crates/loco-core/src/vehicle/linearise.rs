@@ -3,7 +3,8 @@
 //!
 //! The state matrix is formed by central finite differences of the full nonlinear right-hand side
 //! (contact table, Hertz, FASTSIM, dampers' internal states), so it is the Jacobian of exactly the
-//! model that the time integration runs. [`least_damped`] and [`linear_critical_speed`] take its
+//! model that the time integration runs. [`least_damped`] and [`linear_critical_speed`] (in
+//! [`super::linear_critical_speed`]) take its
 //! eigenvalues from nalgebra's real Schur decomposition ([`eigenvalues`]; frequencies `|Im λ|/2π`,
 //! damping ratios `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses
 //! numpy/LAPACK.
@@ -48,14 +49,15 @@
 
 use super::integrator::OdeSystem;
 use super::layout::{wheelset, N_DOF, N_WHEELSETS, Y, YAW};
-use super::scenario::{PerfectTrackVehicle, Scenario};
 use super::simulation::VehicleSystem;
 use super::statics::{static_equilibrium, StaticsSettings};
-use super::structure::IntoVehicle;
-use crate::error::{check_cancel, check_positive, LocoError, Result};
+use crate::error::{check_positive, LocoError, Result};
 use nalgebra::linalg::balancing::balance_parlett_reinsch;
 use nalgebra::{Complex, DMatrix, Schur};
-use std::sync::atomic::AtomicBool;
+
+pub use super::linear_critical_speed::{
+    linear_critical_speed, linear_critical_speed_cancellable, LinearSearch,
+};
 
 /// Half the default contact table's grid step, m (5e-5): a central difference of this half-width
 /// spans one table cell; the default `contact_step`.
@@ -215,94 +217,6 @@ pub fn least_damped(a: &[f64], n: usize, band: (f64, f64)) -> Result<Option<Leas
         })
         .filter(|m| (band.0..=band.1).contains(&m.frequency));
     Ok(modes.min_by(|a, b| a.damping_ratio.total_cmp(&b.damping_ratio)))
-}
-
-/// Search settings of the linear critical speed.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LinearSearch {
-    /// Bracket of the bisection, m/s.
-    pub low: f64,
-    pub high: f64,
-    /// Width of the final bracket, m/s.
-    pub tolerance: f64,
-    /// Frequency band of the modes considered, Hz (hunting and body modes, not drift).
-    pub band: (f64, f64),
-    /// How the model is linearised at each speed.
-    pub linearisation: LinearisationSettings,
-}
-
-impl Default for LinearSearch {
-    /// The defaults of `loco.critical_speed`: 20–110 m/s, 0.5 m/s, 0.3–20 Hz.
-    fn default() -> Self {
-        Self {
-            low: 20.0,
-            high: 110.0,
-            tolerance: 0.5,
-            band: (0.3, 20.0),
-            linearisation: LinearisationSettings::default(),
-        }
-    }
-}
-
-/// Linear critical speed (m/s): where the least damped mode in the band loses its damping, by
-/// bisection of the linearisation about equilibrium on perfect track. `+∞` when the vehicle is
-/// stable at `high`, `low` when it is already unstable there.
-pub fn linear_critical_speed(
-    vehicle: impl IntoVehicle,
-    scenario: &Scenario,
-    search: &LinearSearch,
-) -> Result<f64> {
-    linear_critical_speed_cancellable(vehicle, scenario, search, None)
-}
-
-/// As [`linear_critical_speed`]; `cancel`, when set from another thread, stops the search with
-/// `Interrupted` before its next linearisation.
-pub fn linear_critical_speed_cancellable(
-    vehicle: impl IntoVehicle,
-    scenario: &Scenario,
-    search: &LinearSearch,
-    cancel: Option<&AtomicBool>,
-) -> Result<f64> {
-    scenario.validate()?;
-    let low = check_positive("low", search.low)?;
-    let high = check_positive("high", search.high)?;
-    let tolerance = check_positive("tolerance", search.tolerance)?;
-    if high <= low {
-        return Err(LocoError::param(
-            "high",
-            format!("must exceed low ({low} m/s), got {high} m/s"),
-        ));
-    }
-    let vehicle = PerfectTrackVehicle::new(vehicle, scenario)?;
-    let zeta = |speed: f64| -> Result<f64> {
-        check_cancel(cancel)?;
-        let mut system = vehicle.system(speed)?;
-        let (a, _) = linearise_with(&mut system, &search.linearisation)?;
-        let mode = least_damped(&a, system.len_states(), search.band)?;
-        mode.map(|m| m.damping_ratio)
-            .ok_or_else(|| LocoError::param("band", "no mode in the frequency band"))
-    };
-    let (mut low, mut high) = (low, high);
-    if zeta(high)? > 0.0 {
-        return Ok(f64::INFINITY);
-    }
-    if zeta(low)? <= 0.0 {
-        return Ok(low);
-    }
-    while high - low > tolerance {
-        let mid = 0.5 * (low + high);
-        // A tolerance below the spacing of floats near the speed: the bracket cannot shrink
-        // further (`mid` is one of its ends), and the loop would never end.
-        if mid <= low || mid >= high {
-            break;
-        }
-        if zeta(mid)? > 0.0 {
-            low = mid;
-        } else {
-            high = mid;
-        }
-    }
-    Ok(0.5 * (low + high))
 }
 
 #[cfg(test)]

@@ -52,6 +52,7 @@ pub mod input_ranges;
 pub mod integrator;
 pub mod kinematics;
 pub mod layout;
+pub mod linear_critical_speed;
 pub mod linearise;
 pub mod long_step_range;
 pub mod mass;
