@@ -40,11 +40,14 @@ def render() -> str:
     sections: dict[str, list[str]] = {}
     for key, spec in schema.items():
         sec, name = key.split(".", 1)
-        p = values[key]
+        p = values.get(key)
+        # An optional key the default vehicle leaves out: the model computes it.
+        value = "computed" if p is None else _number(p.value)
+        source = "optional, left out: computed by the model" if p is None else _short(p.source)
         sections.setdefault(sec, []).append(
-            f"| `{name}` | {_number(p.value)} | {spec.unit} | "
+            f"| `{name}` | {value} | {spec.unit} | "
             f"{_number(spec.min)} – {_number(spec.max)} | {spec.kind} | "
-            f"{', '.join(spec.affects)} | {_cell(spec.description)} | {_short(p.source)} |"
+            f"{', '.join(spec.affects)} | {_cell(spec.description)} | {source} |"
         )
     for sec, rows in sections.items():
         lines += [

@@ -18,7 +18,8 @@ ROOT = Path(__file__).resolve().parents[1]
 EXPECTED_METRICS = (
     "wy_mean wy_max wz_mean wz_max ayc_rms ayc_peak ayc_dominant_hz ayc_psd_peak ayc_wd_p95 "
     "azc_wb_p95 nmv ayb_rms ayb_peak_lp ayb_gbt_cycles ayb_gbt_unstable ayb_f0_hz ayb_psd_peak "
-    "ayb_en_rms ayb_en_limit ayb_en_unstable"
+    "ayb_en_rms ayb_en_limit ayb_en_unstable ayb_limit_cycle ayb_cycle_hz ayb_cycle_amplitude "
+    "ayc_limit_cycle ayc_cycle_hz ayc_cycle_amplitude"
 ).split()
 
 
@@ -33,7 +34,7 @@ def test_metric_constants_are_the_tables_names_in_column_order() -> None:
         assert getattr(Metric, name.upper()) == name
     assert loco.Metric is Metric
     flags = [m.name for m in loco.channels.metric_table() if m.flag]
-    assert flags == ["ayb_gbt_unstable", "ayb_en_unstable"]
+    assert flags == ["ayb_gbt_unstable", "ayb_en_unstable", "ayb_limit_cycle", "ayc_limit_cycle"]
 
 
 def test_committed_metrics_page_is_the_generated_one() -> None:

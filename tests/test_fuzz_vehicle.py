@@ -110,6 +110,16 @@ def file_cases() -> list[dict[str, Any]]:
     out = []
     for key, spec in loco.parameter_schema().items():
         section, name = key.split(".")
+        if f"[{section}]" not in lines:
+            # An optional key the default file leaves out: fuzzed in a section of its own, which
+            # the other keys' cases keep at a value inside its range.
+            middle = 0.5 * (spec.min + spec.max)
+            lines = [
+                *lines,
+                "",
+                f"[{section}]",
+                f'{name} = {{ value = {middle!r}, unit = "{spec.unit}", source = "fuzz" }}',
+            ]
         header = lines.index(f"[{section}]")
         row = next(
             i for i in range(header + 1, len(lines)) if lines[i].startswith(f"{name} = {{ value = ")
@@ -143,8 +153,18 @@ def run_cases() -> list[dict[str, Any]]:
 
     schema = loco.parameter_schema()
     allowed = ", ".join(f'"{k}"' for k in schema)
+    # The optional keys the default file leaves out, stated at the middle of their ranges so
+    # that every row of the batch has a value for them.
+    optional = "".join(
+        f"\n[{k.split('.')[0]}]\n{k.split('.')[1]} = {{ value = {0.5 * (s.min + s.max)!r}, "
+        f'unit = "{s.unit}", source = "fuzz" }}\n'
+        for k, s in schema.items()
+        if s.optional
+    )
     research = loco.Locomotive(
-        toml_text=f"allow_out_of_range = [{allowed}]\n" + loco.Locomotive.default().default_toml(),
+        toml_text=f"allow_out_of_range = [{allowed}]\n"
+        + loco.Locomotive.default().default_toml()
+        + optional,
         origin="research.toml",
     )
     scenario = loco.Scenario(name="S_norm", speed=200 / 3.6, distance=1.0, track="perfect")

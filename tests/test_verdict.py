@@ -10,7 +10,7 @@ import pandas as pd
 from scipy import stats
 
 from loco.metrics import run_metric_names
-from loco.studies.fsd_comparison import JUDGED_BY, STABILITY_FLAGS
+from loco.studies.fsd_comparison import JUDGED_BY, LIMIT_CYCLE_COLUMNS, STABILITY_FLAGS
 from loco.studies.report import StudyRecord, write_report
 from loco.studies.verdict import verdict, verdict_from_csv
 
@@ -34,7 +34,9 @@ def tracks_frame() -> pd.DataFrame:
             rows.append({"scenario": scenario, "damper": damper, "track": i, "status": 0,
                          "wy_max": v if scenario == "S_low" else 1.0,
                          "ayb_peak_lp": v if scenario == "S_high" else 0.5,
-                         "ayb_en_unstable": flag, "ayb_gbt_unstable": 0.0})  # fmt: skip
+                         "ayb_en_unstable": flag, "ayb_gbt_unstable": 0.0,
+                         "ayb_limit_cycle": 0.0, "ayb_cycle_hz": 6.0, "ayb_cycle_amplitude": 0.3,
+                         "ayb_en_rms": 0.2, "ayb_en_limit": 4.34})  # fmt: skip
     return pd.DataFrame(rows)
 
 
@@ -85,13 +87,37 @@ def test_failed_runs_are_left_out_and_missing_flags_are_said(tmp_path: Path) -> 
     high = verdict(frame).scenarios[1]
     assert high.failed["FSD"] == 1 and high.holds["FSD"] is True
     assert "Failed runs, left out: FSD 1." in "\n".join(high.lines())
-    old = frame.drop(columns=["ayb_en_unstable", "ayb_gbt_unstable"])
+    old = frame.drop(columns=["ayb_en_unstable", "ayb_gbt_unstable", "ayb_limit_cycle"])
     old.to_csv(tmp_path / "fsd_tracks.csv", index=False)
     result = verdict_from_csv(tmp_path / "fsd_tracks.csv")
     assert all(h is None for h in result.scenarios[1].holds.values())
     text = "\n".join(result.markdown())
     assert "is not judged: the table has no instability flags" in text
     assert "Every scenario is held by" not in text
+
+
+def test_a_limit_cycle_is_called_hunting_within_or_beyond_the_limit() -> None:
+    # FSD on S_high: a sustained 3.9 Hz cycle of ±7.5 m/s² on tracks 1 and 3 whose sliding rms
+    # stays below the limit; YD1's track 2 (EN flag raised) cycles too, beyond it.
+    frame = tracks_frame()
+    high = frame.scenario == "S_high"
+    fsd = high & (frame.damper == "FSD") & frame.track.isin([1, 3])
+    frame.loc[fsd, ["ayb_limit_cycle", "ayb_cycle_hz", "ayb_cycle_amplitude", "ayb_en_rms"]] = [
+        1.0, 3.9, 7.5, 4.0]  # fmt: skip
+    yd1 = high & (frame.damper == "YD1") & (frame.track == 2)
+    frame.loc[yd1, ["ayb_limit_cycle", "ayb_cycle_hz", "ayb_cycle_amplitude", "ayb_en_rms"]] = [
+        1.0, 4.1, 9.0, 5.1]  # fmt: skip
+    result = verdict(frame)
+    high_verdict = result.scenarios[1]
+    assert high_verdict.holds == {"YD1": False, "YD2": True, "FSD": False}
+    assert high_verdict.hunts["YD2"] is None
+    text = "\n".join(high_verdict.lines())
+    assert (
+        "FSD hunts (limit cycle 3.9 Hz, ±7.5 m/s², on 2 of 6 tracks), within the EN 14363 limit"
+        in text
+    )
+    assert "YD1 hunts (limit cycle 4.1 Hz, ±9.0 m/s², on 1 of 6 tracks), beyond" in text
+    assert "Every scenario is held by: no damper." in "\n".join(result.markdown())
 
 
 def test_the_verdict_is_the_first_section_of_the_report(tmp_path: Path) -> None:
@@ -106,4 +132,4 @@ def test_the_verdict_is_the_first_section_of_the_report(tmp_path: Path) -> None:
 def test_the_columns_it_reads_are_the_cores_run_metrics() -> None:
     # The judging metrics and the instability flags by the core's names, so that a renamed
     # metric fails here and not as a missing column of a finished study.
-    assert {*JUDGED_BY.values(), *STABILITY_FLAGS} <= set(run_metric_names())
+    assert {*JUDGED_BY.values(), *STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS} <= set(run_metric_names())

@@ -9,6 +9,7 @@ vehicle API re-exported here: :class:`Locomotive`, :class:`Scenario`, :func:`sim
 # The submodules, so that `import loco` is enough for `loco.contact.…`, `loco.metrics.…`
 # (`loco.studies` pulls in the study dependencies and is imported on its own).
 from loco import (
+    assessment,
     batch,
     channels,
     conicity,
@@ -43,6 +44,7 @@ from loco._loco import (
     VehicleFormatError,
     __version__,
 )
+from loco.assessment import Assessment, assess
 from loco.batch import BatchResult, run_batch
 from loco.channels import ChannelKind, Metric
 from loco.schema import ParameterSpec, parameter_schema, retired_parameters
@@ -57,6 +59,7 @@ from loco.track_response import (
 from loco.vehicle import Locomotive
 
 __all__ = [
+    "Assessment",
     "BatchResult",
     "ChannelKind",
     "ContactError",
@@ -81,6 +84,8 @@ __all__ = [
     "TrackFormatError",
     "VehicleFormatError",
     "__version__",
+    "assess",
+    "assessment",
     "batch",
     "channels",
     "conicity",

@@ -1,8 +1,9 @@
 """The vehicle's parameter schema: for every key of a vehicle file its SI unit, kind, physical
 range, what it affects and a description (the core's one list, ``vehicle/parameter_schema.toml``).
 
-A vehicle file must give exactly these keys; a value outside its range is refused with
-:class:`loco.ParameterRangeError` unless the file lists the key in ``allow_out_of_range``::
+A vehicle file must give exactly these keys (an optional one it may leave to the model); a
+value outside its range is refused with :class:`loco.ParameterRangeError` unless the file lists
+the key in ``allow_out_of_range``::
 
     allow_out_of_range = ["carbody.mass"]
     [carbody]
@@ -47,6 +48,8 @@ class ParameterSpec:
         One line.
     why : str
         The reasoning behind the range.
+    optional : bool
+        A vehicle file may leave it out; the model then computes it (the description says how).
     """
 
     key: str
@@ -57,6 +60,7 @@ class ParameterSpec:
     affects: tuple[Affects, ...]
     description: str
     why: str
+    optional: bool = False
 
     def contains(self, value: float) -> bool:
         """True when ``value`` (SI) is inside the physical range."""
@@ -75,6 +79,7 @@ def parameter_schema() -> dict[str, ParameterSpec]:
             affects=tuple(cast(Affects, a) for a in row[5]),
             description=row[6],
             why=row[7],
+            optional=row[8],
         )
         for row in _loco.parameter_schema()
     }

@@ -44,6 +44,7 @@ __all__ = [
     "WHEELSET_FIGURE",
     "SimulationOutput",
     "load_histories",
+    "load_result",
     "write_simulation",
 ]
 
@@ -213,3 +214,33 @@ def load_histories(directory: str | Path) -> xarray.Dataset:
     """The time histories a run wrote into ``directory``, from its NetCDF file."""
     with xarray.open_dataset(Path(directory) / HISTORIES_NETCDF, engine=NETCDF_ENGINE) as ds:
         return ds.load()
+
+
+def load_result(directory: str | Path) -> tuple[SimulationResult, dict[str, Any]]:
+    """The run a ``loco simulate`` wrote into ``directory`` as a :class:`SimulationResult`
+    (channels from the NetCDF file, metrics from ``metrics.json``, NaN where undefined, kinds
+    from ``run.json``), with the ``run.json`` record (its ``scenario`` settings as run)."""
+    path = Path(directory)
+    for name in (HISTORIES_NETCDF, METRICS_JSON, RUN_JSON):
+        if not (path / name).is_file():
+            raise _loco.LocoIOError(
+                f"{path / name}: missing: not the output directory of `loco simulate`"
+            )
+    record = json.loads((path / RUN_JSON).read_text())
+    values = json.loads((path / METRICS_JSON).read_text())["metrics"]
+    ds = load_histories(path)
+    names = [c["name"] for c in record["channels"]]
+    result = SimulationResult(
+        time=ds["time"].to_numpy(),
+        channel_names=names,
+        channels=np.stack([ds[n].to_numpy() for n in names]),
+        metrics={k: math.nan if v is None else float(v) for k, v in values.items()},
+        sampling_rate=float(ds.attrs["sampling_rate_hz"]),
+        parameters={
+            "speed": record["scenario"]["speed"],
+            "distance": record["scenario"]["distance"],
+        },
+        statistics=dict(record.get("statistics", {})),
+        channel_kinds={c["name"]: c["kind"] for c in record["channels"]},
+    )
+    return result, record

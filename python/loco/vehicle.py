@@ -110,6 +110,15 @@ class Locomotive:
         """Mass of the 25 bodies, kg."""
         return self.native.total_mass()
 
+    def en14363_bogie_mass(self) -> float:
+        """The bogie mass m⁺ of the EN 14363 stability limit ``(12 − m⁺/5)/2`` m/s², kg.
+
+        ``assessment.bogie_mass`` when the vehicle file or an override states it; otherwise the
+        heavier bogie's frame, wheelsets, axle boxes, frame-hung motors and hollow shafts (see
+        ``docs/assessment.md``).
+        """
+        return self.native.en14363_bogie_mass()
+
     def mass_matrix(self) -> npt.NDArray[np.float64]:
         """The 90 × 90 mass matrix (kg, kg·m, kg·m²) in coordinate order (:func:`dof_names`)."""
         return self.native.mass_matrix()

@@ -161,7 +161,7 @@ fn run_full_linear(
         names,
         channels,
     };
-    let bogie_mass = system.structure.parameters.get("bogie_frame.mass").ok()?;
+    let bogie_mass = loco_core::vehicle::bogie_mass::en14363_bogie_mass(&system.structure).ok()?;
     Some((run_metrics(&output, speed, bogie_mass).ok()?, rhs))
 }
 

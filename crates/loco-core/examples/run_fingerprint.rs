@@ -11,10 +11,13 @@
 //!
 //! `fingerprint` hashes the channels recorded before the curving channels were added (so the
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
-//! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution.
+//! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution;
+//! `accelerometer_fingerprint` the channels of kind `accelerometer`, outputs only too.
 
+use loco_core::vehicle::channel_set::{ChannelKind, ChannelSet};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::run::Recorded;
+use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::vehicle::wheel_channels::{
     wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
 };
@@ -60,14 +63,22 @@ fn main() {
             }
         }
     }
+    let structure = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
+    let accelerometers: HashSet<String> = ChannelSet::new(&structure)
+        .unwrap()
+        .names_of_kind(ChannelKind::Accelerometer)
+        .into_iter()
+        .collect();
     let out = &result.output;
     let is_curving = |i: &usize| curving.contains(&out.names[*i]);
+    let is_accelerometer = |i: &usize| accelerometers.contains(&out.names[*i]);
     let all = 0..out.channels.len();
     let hash = fnv(all
         .clone()
-        .filter(|i| !is_curving(i))
+        .filter(|i| !is_curving(i) && !is_accelerometer(i))
         .map(|i| &out.channels[i]));
-    let curving_hash = fnv(all.filter(is_curving).map(|i| &out.channels[i]));
+    let curving_hash = fnv(all.clone().filter(is_curving).map(|i| &out.channels[i]));
+    let accelerometer_hash = fnv(all.filter(is_accelerometer).map(|i| &out.channels[i]));
     let m = &result.metrics;
     println!("creep {} scenario {name}", scenario.creep.name());
     println!("wy_max {:.17e}", m.wy_max);
@@ -76,4 +87,5 @@ fn main() {
     println!("rhs_evaluations {}", result.statistics.rhs_evaluations);
     println!("fingerprint {hash:016x}");
     println!("curving_fingerprint {curving_hash:016x}");
+    println!("accelerometer_fingerprint {accelerometer_hash:016x}");
 }

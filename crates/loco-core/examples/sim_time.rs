@@ -5,7 +5,10 @@
 //! whole `run_fingerprint` or `loco-batch` process also times.
 //!
 //! `cargo run --release -p loco-core --example sim_time -- [fastsim|fastrip|table]
-//! [S_high|S_low] [straight|curve|study_curve] [repeats]`
+//! [S_high|S_low] [straight|curve|study_curve] [repeats] [metrics|every]`
+//!
+//! `metrics` (the default) records the metrics' channels only, as a batch sample does; `every`
+//! records every channel at the output rate, as `simulate` does for a time history.
 //!
 //! To compare two versions of the code on a shared machine, build this example in both and run
 //! them alternately several times (the minimum is the least disturbed run); the machine's speed
@@ -41,11 +44,16 @@ fn main() {
         track_kind,
     );
     let repeats: usize = args.get(4).map_or(9, |r| r.parse().expect("repeats"));
+    let recorded = match args.get(5).map_or("metrics", String::as_str) {
+        "metrics" => Recorded::Metrics,
+        "every" => Recorded::Every,
+        other => panic!("unknown recording `{other}`: metrics or every"),
+    };
     let prepared = study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     let mut times = Vec::with_capacity(repeats);
     for _ in 0..repeats {
         let start = thread_cpu_seconds();
-        let result = prepared.run(&scenario, Recorded::Metrics).unwrap();
+        let result = prepared.run(&scenario, recorded).unwrap();
         times.push(thread_cpu_seconds() - start);
         std::hint::black_box(result);
     }

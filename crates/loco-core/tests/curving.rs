@@ -123,6 +123,17 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         speed
     );
     assert!(lateral.abs() < 0.01, "{lateral}");
+    // What accelerometers read on the floor and the frames: no lateral specific force either.
+    for name in [
+        "carbody_floor_accelerometer_y_front",
+        "carbody_floor_accelerometer_y_rear",
+        "frame1_accelerometer_y_centre",
+        "frame2_accelerometer_y_wheelset4",
+    ] {
+        let sensed = last(r, name);
+        println!("balanced: {name} {sensed:.2e} m/s²");
+        assert!(sensed.abs() < 0.01, "{name} {sensed}");
+    }
     // The resultant of gravity and the centripetal force is normal to the track plane, so the
     // guiding forces of the wheelsets cancel in sum (ΣY over the vehicle ≈ 0 against the
     // ±5 kN each wheelset carries). The wheel loads are printed, not checked here: the outer
@@ -180,6 +191,27 @@ fn cant_deficiency_gives_its_lateral_acceleration_and_load_transfer() {
     let coefficient = roll / (deficiency / (2.0 * B));
     println!("carbody roll {roll:.5} rad, roll coefficient {coefficient:.3}");
     assert!(roll > 0.0);
+    // An accelerometer on the floor reads g·d/2b in the track plane (its reading turned back
+    // by the carbody's roll) and g·d/2b·(1 + roll coefficient) in the carbody's rolled axes.
+    let (sensed_y, sensed_z) = (
+        last(&r, "carbody_floor_accelerometer_y_front"),
+        last(&r, "carbody_floor_accelerometer_z_front"),
+    );
+    let in_track_plane = sensed_y - roll * sensed_z;
+    let in_carbody = expected * (1.0 + coefficient);
+    println!(
+        "floor accelerometer: {sensed_y:.4} m/s² (g·d/2b·(1 + s) = {in_carbody:.4}), \
+         in the track plane {in_track_plane:.4} (g·d/2b = {expected:.4}), vertical {sensed_z:.3}"
+    );
+    assert!((in_track_plane - expected).abs() < 0.02 * expected);
+    assert!((sensed_y - in_carbody).abs() < 0.02 * in_carbody);
+    assert!((sensed_z - G).abs() < 0.01 * G, "{sensed_z}");
+    // A frame rolls on its primary springs only: its accelerometer by the frame's own roll.
+    let frame_roll = r.y[frame(0) + ROLL];
+    let frame_sensed = last(&r, "frame1_accelerometer_y_centre");
+    let frame_expected = expected * (1.0 + frame_roll / (deficiency / (2.0 * B)));
+    println!("frame 1 accelerometer: {frame_sensed:.4} m/s² (expected {frame_expected:.4})");
+    assert!((frame_sensed - frame_expected).abs() < 0.02 * frame_expected);
     // The outer (right) wheels carry more.
     for w in 1..=4 {
         assert!(

@@ -3,7 +3,7 @@
 use loco_core::vehicle::parameter_schema::{schema, RETIRED};
 use pyo3::prelude::*;
 
-/// One schema row: key, SI unit, kind, min, max, affects, description, why.
+/// One schema row: key, SI unit, kind, min, max, affects, description, why, optional.
 type SchemaRow = (
     &'static str,
     &'static str,
@@ -13,6 +13,7 @@ type SchemaRow = (
     Vec<&'static str>,
     &'static str,
     &'static str,
+    bool,
 );
 
 /// Every vehicle parameter of the schema, in key order.
@@ -30,6 +31,7 @@ fn parameter_schema() -> Vec<SchemaRow> {
                 s.affects.iter().map(|a| a.name()).collect(),
                 s.description.as_str(),
                 s.why.as_str(),
+                s.optional,
             )
         })
         .collect()

@@ -5,6 +5,7 @@
 
 use crate::errors::{run_detached, to_py_err};
 use loco_core::vehicle::layout::N_DOF;
+use loco_core::vehicle::parameter_schema::spec;
 use loco_core::vehicle::parameters::{resolve_name, ParameterSet};
 use loco_core::vehicle::structure::VehicleStructure;
 use loco_core::LocoError;
@@ -126,8 +127,14 @@ impl PyVehicle {
 
     /// The value (SI) of a parameter by file key or study alias (`K_px`, ...).
     fn __getitem__(&self, name: &str) -> PyResult<f64> {
-        match self.parameters().parameter(resolve_name(name)) {
+        let key = resolve_name(name);
+        match self.parameters().parameter(key) {
             Some(p) => Ok(p.value),
+            None if spec(key).is_some_and(|s| s.optional) => Err(to_py_err(LocoError::param(
+                name,
+                "optional and not given by this vehicle: the model computes it (its description \
+                 in the parameter schema says how)",
+            ))),
             None => Err(to_py_err(LocoError::param(
                 name,
                 "unknown vehicle parameter",
@@ -138,6 +145,12 @@ impl PyVehicle {
     /// Total mass of the 25 bodies, kg.
     fn total_mass(&self) -> f64 {
         self.structure.total_mass()
+    }
+
+    /// The bogie mass m⁺ of the EN 14363 stability limit, kg: `assessment.bogie_mass` when the
+    /// file or an override states it, else the heavier bogie's bodies.
+    fn en14363_bogie_mass(&self) -> PyResult<f64> {
+        loco_core::vehicle::bogie_mass::en14363_bogie_mass(&self.structure).map_err(to_py_err)
     }
 
     /// Mean axle load, N: the weight over the wheelsets.

@@ -8,6 +8,7 @@ COMMAND_MODULES: list[str] = [
     "contact_report",
     "info",
     "simulate",
+    "assess",
     "damper_bench",
     "frf",
     "reproduce",

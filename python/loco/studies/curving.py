@@ -34,7 +34,7 @@ import numpy as np
 import pandas as pd
 
 import loco
-from loco import _loco, dampers
+from loco import _loco, assessment, dampers
 from loco.studies import en14363, fsd_comparison
 from loco.studies.report import StudyRecord, save_json
 from loco.studies.stages import Demand, Runtime, Stage
@@ -51,7 +51,11 @@ __all__ = [
     "run_curving",
     "save_curving",
     "speed_for_deficiency",
+    "wheelset_offsets",
 ]
+
+#: How far each wheelset runs behind the leading one (:func:`loco.assessment.wheelset_offsets`).
+wheelset_offsets = assessment.wheelset_offsets
 
 #: The per-wheel and per-wheelset channel names, by quantity, from the core.
 WHEEL = _loco.wheel_channels()
@@ -150,14 +154,6 @@ def speed_for_deficiency(
     g = vehicle["track.gravity"]
     two_b0 = 2.0 * vehicle["track.contact_point_half_distance"]
     return math.sqrt(g * radius * (cant_mm + deficiency_mm) * 1e-3 / two_b0)
-
-
-def wheelset_offsets(vehicle: loco.Locomotive) -> list[float]:
-    """How far each wheelset runs behind the leading one, m (0, 2·b, 2·a, 2·a + 2·b with a the
-    half bogie distance and b the half wheelbase)."""
-    a = vehicle["layout.bogie_half_distance"]
-    b = vehicle["layout.half_wheelbase"]
-    return [0.0, 2 * b, 2 * a, 2 * a + 2 * b]
 
 
 @dataclass
@@ -265,35 +261,28 @@ class CurvingStage(Stage):
 
 def _assess(
     result: loco.SimulationResult,
+    vehicle: loco.Locomotive,
     case: CurveCase,
     straight: float,
     lead_in: float,
     speed: float,
-    offsets: Sequence[float],
 ) -> dict[str, float]:
-    """The EN 14363 values of one run in the circular curve."""
-    start = straight + case.transition_m
-    end = start + case.curve_m
+    """The EN 14363 values of one run in the circular curve (:func:`loco.assessment.assess`),
+    and the angle of attack, flange contact, wear number and load transfer there."""
+    sections = case.sections(straight)
+    found = assessment.assess(result, vehicle, curve=sections, lead_in=lead_in, speed=speed)
+    curve = next(z for z in assessment.zones(sections, math.inf) if z.curved)
+    start, end = curve.start, curve.end
     lead = lead_in + speed * result.time
-    sum_y, yq, yqst = [], [], []
-    for w, offset in enumerate(offsets):
-        s = lead - offset
-        sum_y.append(
-            en14363.section_values(s, result.channel(WHEELSET["sumY"][w]), start, end).extreme
-        )
-        for side in range(2):
-            i = 2 * w + side
-            yq.append(en14363.section_values(s, result.channel(WHEEL["YQ"][i]), start, end).extreme)
-            yqst.append(
-                abs(en14363.section_values(s, result.channel(WHEEL["Y"][i]), start, end).median)
-            )
     inside = (lead >= start) & (lead <= end)
     # The outer wheel of a left curve is the right one.
     outer = 1 if case.direction == "left" else 0
     return {
-        "sumY_kN": max(sum_y) / 1e3,
-        "YQ": max(yq),
-        "Yqst_kN": max(yqst) / 1e3,
+        "sumY_kN": found.get("sumY", curve.name).value / 1e3,
+        "YQ": found.get("YQ", curve.name).value,
+        "Yqst_kN": found.get("Yqst", curve.name).value / 1e3,
+        "Qqst_kN": found.get("Qqst", curve.name).value / 1e3,
+        "yqst_carbody": found.get("yqst", curve.name).value,
         "aoa_lead_mrad": float(np.median(result.channel(WHEELSET["yaw"][0])[inside])) * 1e3,
         "flange_lead_outer": float(np.mean(result.channel(WHEEL["flange"][outer])[inside])),
         "Tgamma_lead_outer_N": float(np.median(result.channel(WHEEL["Tgamma"][outer])[inside])),
@@ -307,7 +296,6 @@ def run_curving(stage: CurvingStage, runtime: Runtime | None = None) -> CurvingS
     runtime = runtime or Runtime(progress=False)
     started = time.perf_counter()
     vehicle = stage.locomotive()
-    offsets = wheelset_offsets(vehicle)
     lead_in = stage.lead_in
     straight = lead_in + RUN_IN
     rows: list[dict[str, Any]] = []
@@ -352,7 +340,7 @@ def run_curving(stage: CurvingStage, runtime: Runtime | None = None) -> CurvingS
                         "deficiency_mm": d,
                         "speed_kmh": v * 3.6,
                         "damper": name,
-                        **_assess(batch.histories[i], case, straight, lead_in, v, offsets),
+                        **_assess(batch.histories[i], vehicle, case, straight, lead_in, v),
                     }
                 )
     axle_load = vehicle_axle_load(vehicle)

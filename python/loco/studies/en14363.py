@@ -40,6 +40,15 @@ standard's own text was not among them, so its clause numbers are not cited here
   **not confirmed** by the searched texts; they are as recalled. For the larger radii studied
   here it is a reference line, not a verdict.
 
+- Q_max, Q_qst and ÿ*_qst (track loading and the carbody's quasi-static lateral acceleration):
+  the maximum wheel force ``(Q_max)lim = 90 kN + Q0``, at most 200 kN up to 160 km/h, 190 kN to
+  200 km/h, 180 kN to 250 km/h, 170 kN to 300 km/h and 160 kN above; the quasi-static wheel force
+  ``(Q_qst)lim = 145 kN``; ``(ÿ*_qst)lim = 1.5 m/s²`` in the carbody. These are the values as
+  commonly quoted from UIC 518 / EN 14363 in the vehicle-dynamics literature, **not confirmed**
+  by the searched texts (which give the processing: Q at its 99.85 % percentile, Q_qst and
+  ÿ*_qst at 50 %, the GENSYS notes above); like α they are secondary and said so wherever
+  they are shown (:mod:`loco.assessment`).
+
 EN 14363:2016 supersedes EN 14363:2005 and EN 15686/15687:2010 (BS EN 14363:2016's national
 foreword); the 2 m / 0.5 m / 0.15 % / 99.85 % / 50 % processing above is as the GENSYS notes give
 it for UIC 518 and EN 14363.
@@ -58,11 +67,19 @@ __all__ = [
     "ALPHA_LOCOMOTIVE",
     "MIN_ASSESSED_RADIUS",
     "PERCENTILES",
+    "QQST_LIMIT",
+    "QST_RADII",
+    "Q_MAX_CAPS",
+    "Q_MAX_CAP_ABOVE",
+    "Q_PERCENTILE",
     "SAMPLE_SPACING",
     "WINDOW",
+    "YDD_QST_LIMIT",
     "YQST_LIMIT",
     "YQ_LIMIT",
     "SectionValues",
+    "q_max_limit",
+    "quasi_static_assessed",
     "section_bounds",
     "section_values",
     "sliding_mean",
@@ -91,12 +108,39 @@ MIN_ASSESSED_RADIUS = 250.0
 #: Quasi-static guiding force limit, N, 250 m ≤ R < 400 m (as recalled; the TSI LOC&PAS sets a
 #: Y_qst limit, its value is not confirmed, module docstring).
 YQST_LIMIT = 60e3
+#: Radii (m) of the small-radius zone where Y_qst and Q_qst are assessed: [250, 400).
+QST_RADII = (250.0, 400.0)
+#: Quasi-static wheel force limit, N (as commonly quoted; not confirmed, module docstring).
+QQST_LIMIT = 145e3
+#: Quasi-static lateral acceleration limit in the carbody, m/s² (as commonly quoted; not
+#: confirmed, module docstring).
+YDD_QST_LIMIT = 1.5
+#: Percentile of the maximum wheel force Q_max, % (GENSYS notes: F2 = 99.85 %).
+Q_PERCENTILE = 99.85
+#: The cap of Q_max's limit by speed: (highest speed in m/s, cap in N), in increasing speed; above
+#: the last, :data:`Q_MAX_CAP_ABOVE` (as commonly quoted; not confirmed, module docstring).
+Q_MAX_CAPS = ((160 / 3.6, 200e3), (200 / 3.6, 190e3), (250 / 3.6, 180e3), (300 / 3.6, 170e3))
+#: Cap of Q_max's limit above the last speed of :data:`Q_MAX_CAPS`, N.
+Q_MAX_CAP_ABOVE = 160e3
 
 
 def sum_y_limit(axle_load: float, alpha: float = ALPHA_LOCOMOTIVE) -> float:
     """Prud'homme's track-shift limit ``α·(10 + 2Q0/3)`` kN, in N, for a static axle load
     ``axle_load`` = 2·Q0 (N)."""
     return alpha * (10e3 + axle_load / 3.0)
+
+
+def q_max_limit(speed: float, wheel_load: float) -> float:
+    """The maximum wheel force's limit ``90 kN + Q0`` (N) for a static wheel load ``wheel_load``
+    = Q0 (N), capped by the speed ``speed`` (m/s, :data:`Q_MAX_CAPS`)."""
+    cap = next((c for v, c in Q_MAX_CAPS if speed <= v), Q_MAX_CAP_ABOVE)
+    return min(90e3 + wheel_load, cap)
+
+
+def quasi_static_assessed(radius: float) -> bool:
+    """Whether Y_qst and Q_qst are assessed on a curve of ``radius`` (m): the small-radius zone
+    :data:`QST_RADII`."""
+    return QST_RADII[0] <= abs(radius) < QST_RADII[1]
 
 
 def yq_limit(radius: float) -> float:

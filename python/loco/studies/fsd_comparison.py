@@ -40,6 +40,7 @@ __all__ = [
     "CASES",
     "DAMPERS",
     "JUDGED_BY",
+    "LIMIT_CYCLE_COLUMNS",
     "STABILITY_FLAGS",
     "FsdComparison",
     "FsdComparisonStage",
@@ -64,13 +65,22 @@ JUDGED_BY: dict[str, str] = {"S_low": Metric.WY_MAX, "S_high": Metric.AYB_PEAK_L
 #: The bogie instability flags (core run metrics, 0/1): EN 14363 sliding rms over its limit, GB/T
 #: 8 m/s² peaks in 6 cycles.
 STABILITY_FLAGS: tuple[str, ...] = (Metric.AYB_EN_UNSTABLE, Metric.AYB_GBT_UNSTABLE)
+#: The bogie frame's limit cycle (core run metrics: the flag, its frequency and amplitude) and the
+#: EN 14363 sliding rms with its limit, which say whether a hunting bogie is within that limit.
+LIMIT_CYCLE_COLUMNS: tuple[str, ...] = (
+    Metric.AYB_LIMIT_CYCLE,
+    Metric.AYB_CYCLE_HZ,
+    Metric.AYB_CYCLE_AMPLITUDE,
+    Metric.AYB_EN_RMS,
+    Metric.AYB_EN_LIMIT,
+)
 #: Fraction of the record the valves were closed (from the valve channels, not a core metric).
 VALVE_FRACTION = "valve_closed_fraction"
 #: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
 #: core's run metrics of the case's quantity (:data:`RMS_METRICS`, :data:`PEAK_METRICS`), then two
 #: run metrics under their own names, the valve fraction (:meth:`FsdComparison.values`) and the
-#: two bogie instability flags (0/1 per track, their mean the fraction of tracks flagged; the
-#: report's verdict, :mod:`loco.studies.verdict`, reads them).
+#: two bogie instability flags (0/1 per track, their mean the fraction of tracks flagged), then
+#: the limit-cycle columns (the report's verdict, :mod:`loco.studies.verdict`, reads both).
 SUMMARY_COLUMNS: tuple[str, ...] = (
     "rms",
     "dominant_hz",
@@ -78,6 +88,7 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     *JUDGED_BY.values(),
     VALVE_FRACTION,
     *STABILITY_FLAGS,
+    *LIMIT_CYCLE_COLUMNS,
 )
 
 

@@ -12,30 +12,90 @@ Per scenario (:data:`loco.studies.fsd_comparison.JUDGED_BY`: W_y on S_low, A_yb 
 - which dampers *hold* it, on every track that finished: on S_low an excellent ride
   (W_y below 2.75, the locomotive band of GB/T 5599-2019, ``loco.metrics``); on S_high no
   instability flag of the bogie frame (EN 14363 sliding rms over its limit, or the GB/T 8 m/s²
-  peaks in 6 cycles; metrics ``ayb_en_unstable``, ``ayb_gbt_unstable``). A table without those
-  flags (written by an older loco) leaves the S_high criterion unjudged, and says so.
+  peaks in 6 cycles; metrics ``ayb_en_unstable``, ``ayb_gbt_unstable``) and no sustained limit
+  cycle of the frame (:func:`loco.assessment.hunts`, the rule of the core's
+  ``metrics::limit_cycle``).
+  A damper whose bogie settles into a limit cycle *hunts*, whether or not the EN 14363 sliding
+  rms exceeds its limit: the verdict names its frequency and amplitude and which side of the
+  limit it is on (:class:`Hunting`). A table without those columns (written by an older loco)
+  leaves the S_high criterion unjudged, and says so.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from loco import _loco
-from loco.studies.fsd_comparison import JUDGED_BY, STABILITY_FLAGS
+from loco import _loco, assessment
+from loco.channels import Metric
+from loco.studies.fsd_comparison import JUDGED_BY, LIMIT_CYCLE_COLUMNS, STABILITY_FLAGS
 from loco.studies.statistics import ALPHA, Ranking, rank
 
-__all__ = ["HOLD_CRITERIA", "ScenarioVerdict", "Verdict", "verdict", "verdict_from_csv"]
+__all__ = [
+    "HOLD_CRITERIA",
+    "Hunting",
+    "ScenarioVerdict",
+    "Verdict",
+    "hunting",
+    "verdict",
+    "verdict_from_csv",
+]
 
 #: The criterion each scenario is held by, in words.
 HOLD_CRITERIA: dict[str, str] = {
     "S_low": "an excellent ride, W_y < 2.75 (GB/T 5599-2019, locomotive), on every track",
-    "S_high": "no bogie instability flag (EN 14363 sliding rms, GB/T peaks) on any track",
+    "S_high": "no bogie instability flag (EN 14363 sliding rms, GB/T peaks) and no sustained "
+    "limit cycle of the bogie frame on any track",
 }
+
+
+@dataclass(frozen=True)
+class Hunting:
+    """The tracks on which one damper's bogie frame settled into a limit cycle.
+
+    ``frequency`` (Hz) and ``amplitude`` (m/s², a cycle of ± this; the band-passed frame
+    acceleration's mean cycle peak) are the means over those tracks; ``beyond_en`` whether the
+    EN 14363 sliding rms exceeded its limit on any of them, ``en_rms`` the largest sliding rms
+    there and ``en_limit`` the limit (m/s²)."""
+
+    tracks: int
+    of: int
+    frequency: float
+    amplitude: float
+    en_rms: float
+    en_limit: float
+    beyond_en: bool
+
+    def statement(self) -> str:
+        """``hunts (limit cycle 3.9 Hz, ±7.5 m/s² …), within the EN 14363 limit`` and so on."""
+        side = "beyond" if self.beyond_en else "within"
+        return (
+            f"hunts (limit cycle {self.frequency:.1f} Hz, ±{self.amplitude:.1f} m/s², on "
+            f"{self.tracks} of {self.of} tracks), {side} the EN 14363 limit (sliding rms up to "
+            f"{self.en_rms:.2f} against {self.en_limit:.2f} m/s²)"
+        )
+
+
+def hunting(frame: pd.DataFrame) -> Hunting | None:
+    """The limit cycles in the finished rows of one damper's per-track table (``None``: on no
+    track; columns :data:`loco.studies.fsd_comparison.LIMIT_CYCLE_COLUMNS`)."""
+    done = frame[frame["status"] == 0]
+    cycling = done[[assessment.hunts(row) is True for _, row in done.iterrows()]]
+    if cycling.empty:
+        return None
+    return Hunting(
+        tracks=len(cycling),
+        of=len(done),
+        frequency=float(cycling[Metric.AYB_CYCLE_HZ].mean()),
+        amplitude=float(cycling[Metric.AYB_CYCLE_AMPLITUDE].mean()),
+        en_rms=float(cycling[Metric.AYB_EN_RMS].max()),
+        en_limit=float(cycling[Metric.AYB_EN_LIMIT].max()),
+        beyond_en=bool((cycling[Metric.AYB_EN_UNSTABLE] == 1.0).any()),
+    )
 
 
 @dataclass(frozen=True)
@@ -48,6 +108,7 @@ class ScenarioVerdict:
     ranking: Ranking
     holds: dict[str, bool | None]
     failed: dict[str, int]
+    hunts: dict[str, Hunting | None] = field(default_factory=dict)
 
     @property
     def best(self) -> str:
@@ -66,14 +127,19 @@ class ScenarioVerdict:
         if any(h is None for h in self.holds.values()):
             holding = (
                 f"Holding ({HOLD_CRITERIA.get(self.scenario, '')}) is not judged: the table has "
-                "no instability flags (rerun the damper comparison stage with --force)."
+                "no instability flags or limit-cycle columns (rerun the damper comparison stage "
+                "with --force)."
             )
         else:
+            hunting_text = "".join(
+                f" {d} {h.statement()}." for d, h in self.hunts.items() if h is not None
+            )
             holding = (
                 f"Held ({HOLD_CRITERIA.get(self.scenario, '')}) by "
                 f"{', '.join(held) or 'no damper'}"
                 + (f"; not by {', '.join(not_held)}" if not_held else "")
                 + "."
+                + hunting_text
             )
         strength = (
             f"significantly better than {self.ranking.order[1]}"
@@ -137,13 +203,22 @@ def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
         ratings = [_loco.locomotive_ride_rating(float(w)) for w in done[JUDGED_BY["S_low"]]]
         return all(r == "excellent" for r in ratings)
     if scenario == "S_high":
-        if not all(f in done.columns for f in STABILITY_FLAGS):
+        columns = [*STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS]
+        if not all(f in done.columns for f in columns):
             return None
         flags = done[list(STABILITY_FLAGS)].to_numpy(dtype=np.float64)
-        if not np.isfinite(flags).all():
+        hunting = [assessment.hunts(row) for _, row in done.iterrows()]
+        if not np.isfinite(flags).all() or None in hunting:
             return None
-        return bool((flags == 0.0).all())
+        return bool((flags == 0.0).all()) and not any(hunting)
     return None
+
+
+def _hunts(scenario: str, frame: pd.DataFrame) -> Hunting | None:
+    """The limit cycles of one (scenario, damper), on S_high where the bogie frame is judged."""
+    if scenario != "S_high" or not all(c in frame.columns for c in LIMIT_CYCLE_COLUMNS):
+        return None
+    return hunting(frame)
 
 
 def verdict(tracks: pd.DataFrame, judged_by: Mapping[str, str] = JUDGED_BY) -> Verdict:
@@ -167,6 +242,7 @@ def verdict(tracks: pd.DataFrame, judged_by: Mapping[str, str] = JUDGED_BY) -> V
                 ranking=rank(values, label=scenario, metric=metric),
                 holds={d: _holds(scenario, f) for d, f in per.items()},
                 failed={d: int((f["status"] != 0).sum()) for d, f in per.items()},
+                hunts={d: _hunts(scenario, f) for d, f in per.items()},
             )
         )
     return Verdict(tuple(out))

@@ -31,6 +31,12 @@ macro_rules! metric_table {
             AYB_EN_RMS ayb_en_rms: f64, "m/s²", "Largest EN 14363 sliding rms of A_yb";
             AYB_EN_LIMIT ayb_en_limit: f64, "m/s²", "EN 14363 limit of the sliding rms";
             AYB_EN_UNSTABLE ayb_en_unstable: Option<bool>, "–", "EN 14363 instability flag (0/1, NaN undefined)";
+            AYB_LIMIT_CYCLE ayb_limit_cycle: Option<bool>, "–", "Sustained limit cycle (hunting) of A_yb: narrow-band, not decaying, of steady amplitude (0/1, NaN undefined; rule in metrics::limit_cycle)";
+            AYB_CYCLE_HZ ayb_cycle_hz: f64, "Hz", "Frequency of A_yb's dominant oscillation in the record's last half";
+            AYB_CYCLE_AMPLITUDE ayb_cycle_amplitude: f64, "m/s²", "Mean cycle peak of A_yb band-passed to that frequency ± 2 Hz in the last half (a cycle of ± this)";
+            AYC_LIMIT_CYCLE ayc_limit_cycle: Option<bool>, "–", "Sustained limit cycle of A_yc, the carbody floor's lateral acceleration (the same rule, its dominant frequency sought in the carbody band; 0/1, NaN undefined)";
+            AYC_CYCLE_HZ ayc_cycle_hz: f64, "Hz", "Frequency of A_yc's dominant oscillation in the record's last half (carbody band)";
+            AYC_CYCLE_AMPLITUDE ayc_cycle_amplitude: f64, "m/s²", "Mean cycle peak of A_yc band-passed to that frequency ± 2 Hz in the last half (a cycle of ± this)";
         }
     };
 }

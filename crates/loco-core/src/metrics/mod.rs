@@ -14,6 +14,7 @@
 
 pub mod comfort;
 pub mod filters;
+pub mod limit_cycle;
 pub mod metric_table;
 pub mod spectral;
 pub mod sperling;

@@ -1,6 +1,7 @@
 //! Every metric of one simulated run as a row of named values, for the batch engine.
 
 use super::comfort::{weighted_rms, ComfortWeighting};
+use super::limit_cycle::limit_cycle;
 use super::metric_table::MetricValue;
 use super::spectral::{check_record, dominant_frequency, WelchParams, MIN_SAMPLES};
 use super::sperling::{sperling, Direction, SperlingParams};
@@ -104,7 +105,15 @@ impl RunMetrics {
         let dominant = dominant_frequency(ayc, fs, lo, hi, &params.welch)?;
         let ayc_wd_p95 = weighted_rms(ayc, fs, ComfortWeighting::Wd)?.p95;
         let nmv = 6.0 * (ayc_wd_p95.powi(2) + azc_wb_p95.max(0.0).powi(2)).sqrt();
+        // The carbody's limit cycle by the frame's rule, its frequency sought in the carbody band.
+        let carbody_search = StabilityParams {
+            f0_min: lo,
+            f0_max: hi,
+            ..params.stability
+        };
+        let carbody_cycle = limit_cycle(ayc, fs, &carbody_search)?;
         let ayb = records.bogie_lateral;
+        let cycle = limit_cycle(ayb, fs, &params.stability)?;
         let stability = bogie_stability(
             ayb,
             fs,
@@ -133,6 +142,12 @@ impl RunMetrics {
             ayb_en_rms: stability.sliding_rms_max,
             ayb_en_limit: stability.limit,
             ayb_en_unstable: Some(stability.en_unstable),
+            ayb_limit_cycle: Some(cycle.detected),
+            ayb_cycle_hz: cycle.frequency,
+            ayb_cycle_amplitude: cycle.amplitude,
+            ayc_limit_cycle: Some(carbody_cycle.detected),
+            ayc_cycle_hz: carbody_cycle.frequency,
+            ayc_cycle_amplitude: carbody_cycle.amplitude,
         })
     }
 
@@ -174,6 +189,13 @@ mod tests {
         assert!((m.ayb_f0_hz - 6.0).abs() < 0.03);
         assert!((m.ayb_en_limit - 0.5 * (12.0 - 2.4)).abs() < 1e-12);
         assert_eq!(values[14], 0.0);
+        // Two steady sinusoids: limit cycles of the frame and the carbody at their frequencies
+        // and amplitudes.
+        assert_eq!(m.ayb_limit_cycle, Some(true));
+        assert!((m.ayb_cycle_hz - 6.0).abs() < 0.1 && (m.ayb_cycle_amplitude - 2.0).abs() < 0.05);
+        assert_eq!(m.ayc_limit_cycle, Some(true));
+        // Under six cycles of 1.3 Hz in the last half: the band-passed peaks read 4 % high.
+        assert!((m.ayc_cycle_hz - 1.3).abs() < 0.1 && (m.ayc_cycle_amplitude - 0.3).abs() < 0.015);
         let bad = RunRecords { fs: 0.0, ..records };
         assert!(RunMetrics::compute(&bad, &RunMetricsParams::default()).is_err());
     }

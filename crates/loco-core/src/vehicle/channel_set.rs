@@ -9,9 +9,12 @@
 //! acceleration at the frame centre and above each wheelset, wheelset lateral displacement and
 //! yaw, wheel-rail forces Q, Y and Y/Q of all eight wheels, the damper channels
 //! ([`DAMPER_CHANNELS`]), then the curving channels (per wheel ΔQ/Q0, T·γ, contact angle, flange
-//! contact; per wheelset ΣY; named in [`super::wheel_channels`]). Channels added later are
-//! appended so every older channel keeps its position.
+//! contact; per wheelset ΣY; named in [`super::wheel_channels`]), then what accelerometers at
+//! the carbody floor and frame points read (`…_accelerometer_y_…`, kind `accelerometer`,
+//! [`super::accelerometer`]). Channels added later are appended so every older channel keeps its
+//! position.
 
+use super::accelerometer::BodyAxes;
 use super::kinematics::point_motion;
 use super::layout::*;
 use super::simulation::VehicleSystem;
@@ -38,6 +41,7 @@ macro_rules! channel_kind_table {
             DAMPER_FORCE DamperForce "damper_force", "Force of a damper, N.";
             DAMPER_VALVE DamperValve "damper_valve", "Frequency-valve scale factor of a yaw damper, – (0 open, 1 closed).";
             DAMPER_STROKE DamperStroke "damper_stroke", "Stroke of a damper (elongation from its static length), m.";
+            ACCELEROMETER Accelerometer "accelerometer", "What an accelerometer fixed to a carbody floor point or a bogie frame reads: specific force in the body's own axes (gravity from the body's roll and the cant included), m/s².";
         }
     };
 }
@@ -93,6 +97,13 @@ pub enum Probe {
     DamperValve(usize),
     /// Stroke of damper `i`.
     DamperStroke(usize),
+    /// Component `component` of the specific force an accelerometer at `point` (m, from the
+    /// centre of gravity) of body `body` reads, in the body's axes ([`super::accelerometer`]).
+    Accelerometer {
+        body: usize,
+        point: [f64; 3],
+        component: usize,
+    },
 }
 
 impl Probe {
@@ -106,6 +117,7 @@ impl Probe {
             Probe::DamperForce(_) => ChannelKind::DamperForce,
             Probe::DamperValve(_) => ChannelKind::DamperValve,
             Probe::DamperStroke(_) => ChannelKind::DamperStroke,
+            Probe::Accelerometer { .. } => ChannelKind::Accelerometer,
         }
     }
 }
@@ -166,31 +178,36 @@ impl ChannelSet {
         let side = p.get("carbody.sperling_point_lateral_offset")?;
         let along = p.get("carbody.sperling_point_longitudinal_offset")?;
         let mut channels = Vec::new();
-        let mut acceleration = |name: String, body: usize, point: [f64; 3], component: usize| {
-            channels.push(Channel {
-                name,
-                unit: "m/s²",
-                probe: Probe::Acceleration {
-                    body,
-                    point,
-                    component,
-                },
-            })
-        };
+        // The measuring points: (name's body part, axis letter, place tag, body, point, component),
+        // the carbody floor's lateral and vertical at the two Sperling points, the frames'
+        // lateral at the centre and above each wheelset.
+        let mut points = Vec::new();
         for (x, tag) in [(along, "front"), (-along, "rear")] {
-            for (axis, component) in [("ay", Y), ("az", Z)] {
-                let name = format!("carbody_floor_{axis}_{tag}");
-                acceleration(name, BODY_CARBODY, [x, side, floor], component);
+            for (axis, component) in [("y", Y), ("z", Z)] {
+                let place = (tag.to_string(), BODY_CARBODY, [x, side, floor], component);
+                points.push(("carbody_floor".to_string(), axis, place));
             }
         }
         for b in 0..N_BOGIES {
+            let frame = format!("frame{}", b + 1);
             let body = body_frame(b);
-            acceleration(format!("frame{}_ay_centre", b + 1), body, [0.0; 3], Y);
+            points.push((frame.clone(), "y", ("centre".into(), body, [0.0; 3], Y)));
             for w in 2 * b..2 * b + 2 {
                 let dx = s.layout.wheelset_x[w] - s.layout.bogie_x[b];
-                let name = format!("frame{}_ay_wheelset{}", b + 1, w + 1);
-                acceleration(name, body, [dx, 0.0, 0.0], Y);
+                let place = (format!("wheelset{}", w + 1), body, [dx, 0.0, 0.0], Y);
+                points.push((frame.clone(), "y", place));
             }
+        }
+        for (at, axis, (tag, body, point, component)) in &points {
+            channels.push(Channel {
+                name: format!("{at}_a{axis}_{tag}"),
+                unit: "m/s²",
+                probe: Probe::Acceleration {
+                    body: *body,
+                    point: *point,
+                    component: *component,
+                },
+            });
         }
         for w in 0..N_WHEELSETS {
             for q in WHEELSET_MOTION_QUANTITIES {
@@ -249,6 +266,18 @@ impl ChannelSet {
                 name: wheelset_channel(w, WheelsetQuantity::GuidingForce),
                 unit: "N",
                 probe: Probe::GuidingForce(w),
+            });
+        }
+        // What accelerometers at the same points read, appended after the older channels.
+        for (at, axis, (tag, body, point, component)) in points {
+            channels.push(Channel {
+                name: format!("{at}_accelerometer_{axis}_{tag}"),
+                unit: "m/s²",
+                probe: Probe::Accelerometer {
+                    body,
+                    point,
+                    component,
+                },
             });
         }
         Ok(Self {
@@ -317,6 +346,9 @@ impl ChannelSet {
     pub fn sample(&self, system: &VehicleSystem, y: &[f64], dy: &[f64], mut push: impl FnMut(f64)) {
         let s = &system.structure;
         let acc = &dy[N_DOF..2 * N_DOF];
+        // The accelerometers of one body follow each other: its acceleration and axes are formed
+        // once for them.
+        let mut axes: Option<(usize, [f64; 6], BodyAxes)> = None;
         for probe in &self.probes {
             push(match *probe {
                 Probe::Acceleration {
@@ -343,60 +375,30 @@ impl ChannelSet {
                     };
                     system.dampers[i].stroke(states).0
                 }
+                Probe::Accelerometer {
+                    body,
+                    point,
+                    component,
+                } => {
+                    let (_, motion, frame) = match axes {
+                        Some(cached) if cached.0 == body => cached,
+                        _ => {
+                            let fresh = (
+                                body,
+                                s.bodies[body].map.apply(acc),
+                                BodyAxes::of(system, y, body),
+                            );
+                            axes = Some(fresh);
+                            fresh
+                        }
+                    };
+                    frame.reading(point_motion(&motion, point))[component]
+                }
             });
         }
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::vehicle::parameters::ParameterSet;
-    use std::collections::HashSet;
-
-    #[test]
-    fn names_are_unique_and_kinds_follow_the_probes() {
-        let s = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
-        let set = ChannelSet::new(&s).unwrap();
-        let names = set.names();
-        assert_eq!(names.iter().collect::<HashSet<_>>().len(), names.len());
-        for c in set.channels() {
-            // The name suffixes the front ends used to guess the kind agree with the probe.
-            let by_suffix = c.name.ends_with("_valve");
-            assert_eq!(
-                by_suffix,
-                c.kind() == ChannelKind::DamperValve,
-                "{}",
-                c.name
-            );
-            if let Probe::DamperValve(i) = c.probe {
-                assert_eq!(s.suspension.dampers[i].role, DamperRole::Yaw, "{}", c.name);
-            }
-        }
-        let yaw = s
-            .suspension
-            .dampers
-            .iter()
-            .filter(|d| d.role == DamperRole::Yaw);
-        assert_eq!(
-            set.names_of_kind(ChannelKind::DamperValve).len(),
-            yaw.count()
-        );
-        let kinds: HashSet<_> = set.channels().iter().map(Channel::kind).collect();
-        assert_eq!(kinds, ChannelKind::ALL.iter().copied().collect());
-        assert_eq!(set.channels()[0].unit, "m/s²");
-    }
-
-    #[test]
-    fn a_subset_keeps_the_recording_order_and_refuses_unknown_names() {
-        let s = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
-        let all = ChannelSet::new(&s).unwrap().names();
-        // Asked in another order than recorded: recorded in the set's order.
-        let asked = [all[5].as_str(), all[1].as_str()];
-        let only = ChannelSet::new(&s).unwrap().only(&asked).unwrap();
-        assert_eq!(only.names(), vec![all[1].clone(), all[5].clone()]);
-        assert_eq!(only.probes.len(), 2);
-        let e = ChannelSet::new(&s).unwrap().only(&["no_such_channel"]);
-        assert!(e.unwrap_err().to_string().contains("no_such_channel"));
-    }
-}
+#[path = "channel_set_tests.rs"]
+mod tests;

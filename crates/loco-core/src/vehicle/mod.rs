@@ -32,7 +32,9 @@
 //! - [`wheel_channels`]: the per-wheel and per-wheelset channels (Q, Y, Y/Q, ΔQ/Q0, T·γ, contact
 //!   angle, flange contact, ΣY), named once.
 
+pub mod accelerometer;
 pub mod bodies;
+pub mod bogie_mass;
 mod bushing_lanes;
 pub mod channel_set;
 #[cfg(feature = "record-contacts")]

@@ -90,6 +90,8 @@ pub struct ParameterSpec {
     pub description: String,
     /// Why the range is what it is.
     pub why: String,
+    /// A file may leave it out: the model then computes it (the description says how).
+    pub optional: bool,
 }
 
 #[derive(Deserialize)]
@@ -101,6 +103,8 @@ struct RawSpec {
     affects: Vec<Affects>,
     description: String,
     why: String,
+    #[serde(default)]
+    optional: bool,
 }
 
 impl ParameterSpec {
@@ -237,6 +241,7 @@ fn parse(text: &str) -> std::result::Result<Vec<ParameterSpec>, String> {
                 affects: raw.affects,
                 description: raw.description,
                 why: raw.why,
+                optional: raw.optional,
             });
         }
     }

@@ -164,6 +164,7 @@ impl ParameterSet {
         }
         let missing: Vec<&str> = schema()
             .iter()
+            .filter(|s| !s.optional)
             .map(|s| s.key.as_str())
             .filter(|k| !entries.contains_key(*k))
             .collect();
@@ -187,6 +188,12 @@ impl ParameterSet {
             .get(key)
             .map(|p| p.value)
             .ok_or_else(|| LocoError::param(key, "missing from the vehicle parameter file"))
+    }
+
+    /// The value of an optional `key` when the file or an override gives it (`None`: the model
+    /// computes it).
+    pub fn get_optional(&self, key: &str) -> Option<f64> {
+        self.entries.get(key).map(|p| p.value)
     }
 
     /// The full record of `key`.
@@ -226,6 +233,17 @@ impl ParameterSet {
                 LocoError::InvalidParameter { reason, .. } => LocoError::param(&label, reason),
                 other => other,
             })?;
+        if s.optional && !self.entries.contains_key(key) {
+            self.entries.insert(
+                key.to_string(),
+                Parameter {
+                    value,
+                    unit: s.unit.clone(),
+                    source: "override".to_string(),
+                },
+            );
+            return Ok(());
+        }
         let p = self
             .entries
             .get_mut(key)

@@ -39,7 +39,7 @@ pub fn simulate_prepared(
     scenario.validate()?;
     TrackLimits::of(&wheel_rail).check(&track)?;
     let start = start_distance(&structure);
-    let bogie_mass = structure.parameters.get("bogie_frame.mass")?;
+    let bogie_mass = super::bogie_mass::en14363_bogie_mass(&structure)?;
     let design = if scenario.curve.is_empty() {
         None
     } else {

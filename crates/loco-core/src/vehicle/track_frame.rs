@@ -264,6 +264,22 @@ impl CurvedTrack {
         let k = self.station_of[body_wheelset(w)];
         speed * slot.station_points[k].curvature * slot.station_roll[k].1
     }
+
+    /// What an accelerometer fixed to `body`'s track frame reads (the frame's acceleration less
+    /// gravity, in the frame's axes, m/s²) from the last [`Self::prepare`]: laterally
+    /// g sin θ + V²κ cos θ, vertically g cos θ − V²κ sin θ (θ the frame's roll on the cant, the
+    /// same terms the frame forces are formed of; the clothoid's small longitudinal and
+    /// yaw-acceleration terms are left out).
+    pub fn frame_specific_force(&self, work: &FrameWork, body: usize) -> [f64; 3] {
+        let slot = work.slot();
+        // The slot's key holds the bits of the speed it was prepared for.
+        let speed = slot.key.map_or(0.0, |(_, _, v)| f64::from_bits(v));
+        let k = self.station_of[body];
+        let a = speed * speed * slot.station_points[k].curvature;
+        let (s, c) = slot.station_roll[k];
+        let g = self.gravity;
+        [0.0, g * s + a * c, g * c - a * s]
+    }
 }
 
 /// `sum = own + offset`, every position and velocity (one IEEE addition each, in any order:

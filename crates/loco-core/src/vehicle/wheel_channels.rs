@@ -205,7 +205,13 @@ mod tests {
         // The older channels keep their places: the wheel forces right after the wheelsets.
         let first_wheel = names.iter().position(|n| n == "wheel1_left_Q").unwrap();
         assert_eq!(names[first_wheel - 1], "wheelset4_yaw");
-        assert_eq!(names.last().unwrap(), "wheelset4_sumY");
+        // The curving channels end where the accelerometer channels, appended after them, begin.
+        let first_accelerometer = names
+            .iter()
+            .position(|n| n == "carbody_floor_accelerometer_y_front")
+            .unwrap();
+        assert_eq!(names[first_accelerometer - 1], "wheelset4_sumY");
+        assert_eq!(names.last().unwrap(), "frame2_accelerometer_y_wheelset4");
     }
 
     #[test]
