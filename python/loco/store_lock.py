@@ -20,12 +20,12 @@ import fcntl
 import json
 import os
 import socket
-import tempfile
 import time
 from pathlib import Path
 from typing import IO, Any
 
 from loco import _loco
+from loco.directories import directory_problem
 
 __all__ = [
     "LOCK_FILE",
@@ -125,18 +125,12 @@ def check_store_root(root: str | Path) -> Path:
     """``root`` as the directory of campaign stores, checked before any work: not a file, not
     under a file, and writable (a probe file is written and removed). Errors name ``store``."""
     out = Path(root)
-    for parent in (out, *out.parents):
-        if parent.exists() and not parent.is_dir():
-            where = "is a file" if parent == out else f"is under the file {parent}"
-            raise _loco.ParameterError(f"invalid parameter `store`: {out} {where}, not a directory")
-        if parent.exists():
-            break
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        with tempfile.TemporaryFile(dir=out):
-            pass
-    except OSError as e:
+    problem = directory_problem(out)
+    if problem is not None:
+        kind, reason = problem
+        if kind == "file":
+            raise _loco.ParameterError(f"invalid parameter `store`: {reason}")
         raise _loco.LocoIOError(
-            f"cannot access `{out}` (the `store`): cannot write into it: {e.strerror or e}"
-        ) from None
+            f"cannot access `{out}` (the `store`): cannot write into it: {reason}"
+        )
     return out

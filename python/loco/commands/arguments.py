@@ -11,9 +11,9 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import tempfile
 from pathlib import Path
 
+from loco.directories import directory_problem
 from loco.field_types import MAX_WHOLE
 from loco.simulation import INTEGRATOR_STEPS, INTEGRATORS, Scenario
 
@@ -85,19 +85,12 @@ def output_dir(path: str | Path, option: str = "--out") -> Path:
     be created or written (read-only place, no permission). The check writes and removes a probe
     file, so it holds for any user (root included) and any file system (read-only mounts)."""
     out = Path(path)
-    for parent in (out, *out.parents):
-        if parent.exists() and not parent.is_dir():
-            where = "is a file" if parent == out else f"is under the file {parent}"
-            raise UsageError(f"argument {option}: {out} {where}, not a directory")
-        if parent.exists():
-            break
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        with tempfile.TemporaryFile(dir=out):
-            pass
-    except OSError as e:
-        reason = e.strerror or str(e)
-        raise UsageError(f"argument {option}: cannot write into {out}: {reason}") from None
+    problem = directory_problem(out)
+    if problem is not None:
+        kind, reason = problem
+        if kind == "file":
+            raise UsageError(f"argument {option}: {reason}")
+        raise UsageError(f"argument {option}: cannot write into {out}: {reason}")
     if not os.access(out, os.W_OK | os.X_OK):
         raise UsageError(f"argument {option}: cannot write into {out}: permission denied")
     return out

@@ -64,6 +64,7 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import loco
 from loco import campaign, dampers
@@ -300,6 +301,14 @@ def stages(
     training = surrogate_validation.Training(tables, kfold=sizes.kfold, seed=seed)
     # A preset of its own name, else (a hand-made Sizes) the quick study.
     design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
+    comparison: dict[str, Any] = {
+        "speed_kmh": sizes.speed_kmh,
+        "distance": sizes.distance,
+        "lead_in": fsd_comparison.LEAD_IN,
+        "seed": seed,
+        "n_tracks": sizes.n_tracks,
+        "integrator": integrator,
+    }
     out_stages: list[Stage] = [
         speed_sweep.SpeedSweepStage(
             speeds_kmh=sizes.sweep_speeds_kmh,
@@ -327,25 +336,12 @@ def stages(
             setup, training, seed, sizes.pop_size, sizes.n_gen, sizes.n_verify
         ),
         damper_bench.DamperBenchStage(),
-        fsd_comparison.FsdComparisonStage(
-            speed_kmh=sizes.speed_kmh,
-            distance=sizes.distance,
-            lead_in=fsd_comparison.LEAD_IN,
-            seed=seed,
-            n_tracks=sizes.n_tracks,
-            integrator=integrator,
-        ),
+        fsd_comparison.FsdComparisonStage(**comparison),
         fsd_design_stage.FsdDesignStage(
             design_sizes, speed_kmh=sizes.speed_kmh, seed=seed, integrator=integrator
         ),
-        premise_case.PremiseCaseStage.chosen(
-            speed_kmh=sizes.speed_kmh,
-            distance=sizes.distance,
-            lead_in=fsd_comparison.LEAD_IN,
-            seed=seed,
-            n_tracks=sizes.n_tracks,
-            integrator=integrator,
-        ),
+        # The same comparison where the premise holds.
+        premise_case.PremiseCaseStage.chosen(**comparison),
     ]
     c = sizes.curving_sizes
     if c is not None:

@@ -27,7 +27,7 @@
 use super::filters::Filter;
 use super::spectral::{check_record, welch_psd, WelchParams, MIN_SAMPLES};
 use super::stability::{rms, StabilityParams};
-use crate::error::{LocoError, Result};
+use crate::error::Result;
 
 /// Least share of the fluctuation's power in the f0 band (rule 3).
 pub const NARROW_BAND_SHARE: f64 = 0.5;
@@ -62,15 +62,7 @@ pub fn limit_cycle(x: &[f64], fs: f64, params: &StabilityParams) -> Result<Limit
     let (half, quarter) = (n / 2, n / 4);
     let last_half = &x[n - half..];
     let psd = welch_psd(last_half, fs, &WelchParams::default())?;
-    let dominant = psd.dominant(params.f0_min, params.f0_max).ok_or_else(|| {
-        LocoError::param(
-            "f0_max",
-            format!(
-                "no PSD bin between {} and {} Hz",
-                params.f0_min, params.f0_max
-            ),
-        )
-    })?;
+    let dominant = psd.dominant_in(params.f0_min, params.f0_max, "f0_max")?;
     let f0 = dominant.frequency;
     if !f0.is_finite() {
         // No power in the band: nothing oscillates.

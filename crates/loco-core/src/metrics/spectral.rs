@@ -156,6 +156,22 @@ fn default_segment_len(len: usize) -> usize {
 }
 
 impl Psd {
+    /// [`Self::dominant`], or an error naming `field` (the setting that gave `f_max`) when no
+    /// bin lies in the range.
+    pub fn dominant_in(&self, f_min: f64, f_max: f64, field: &str) -> Result<Dominant> {
+        self.dominant(f_min, f_max).ok_or_else(|| {
+            let resolution = self.frequency.get(1).copied().unwrap_or(0.0);
+            let nyquist = self.frequency.last().copied().unwrap_or(0.0);
+            LocoError::param(
+                field,
+                format!(
+                    "no PSD bin between {f_min} and {f_max} Hz (resolution {resolution} Hz, \
+                     Nyquist {nyquist} Hz)"
+                ),
+            )
+        })
+    }
+
     /// The peak of the PSD between `f_min` and `f_max` (Hz, inclusive), DC excluded; `None`
     /// when no bin lies in the range.
     pub fn dominant(&self, f_min: f64, f_max: f64) -> Option<Dominant> {
@@ -197,17 +213,7 @@ pub fn dominant_frequency(
     f_max: f64,
     params: &WelchParams,
 ) -> Result<Dominant> {
-    let psd = welch_psd(x, fs, params)?;
-    psd.dominant(f_min, f_max).ok_or_else(|| {
-        LocoError::param(
-            "f_max",
-            format!(
-                "no PSD bin between {f_min} and {f_max} Hz (resolution {} Hz, Nyquist {} Hz)",
-                psd.frequency.get(1).copied().unwrap_or(0.0),
-                0.5 * fs
-            ),
-        )
-    })
+    welch_psd(x, fs, params)?.dominant_in(f_min, f_max, "f_max")
 }
 
 /// Splits a one-sided power spectrum (`power[k]` at `k·df`, k ≥ 1; DC ignored) into lines:

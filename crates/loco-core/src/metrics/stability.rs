@@ -114,15 +114,7 @@ pub fn bogie_stability(
     let max_consecutive_cycles = longest_run_of_cycles(&low, params.gbt_limit);
 
     let psd = super::spectral::welch_psd(acc, fs, &WelchParams::default())?;
-    let dominant = psd.dominant(params.f0_min, params.f0_max).ok_or_else(|| {
-        LocoError::param(
-            "f0_max",
-            format!(
-                "no PSD bin between {} and {} Hz",
-                params.f0_min, params.f0_max
-            ),
-        )
-    })?;
+    let dominant = psd.dominant_in(params.f0_min, params.f0_max, "f0_max")?;
     let f0 = dominant.frequency;
     let f_lo = (f0 - params.band_half_width).max(params.band_floor);
     let band = Filter::bandpass(f_lo, f0 + params.band_half_width, fs, params.filter_order)?;
