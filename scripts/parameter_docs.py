@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import loco
+from loco import uncertainty
 
 ROOT = Path(__file__).resolve().parents[1]
 PAGE = ROOT / "docs" / "vehicle_parameters.md"
@@ -36,6 +37,11 @@ def render() -> str:
     """The generated part of the page (between ``BEGIN`` and ``END``, markers included)."""
     schema = loco.parameter_schema()
     values = loco.Locomotive.default().parameters()
+    # The plausible range of each uncertain input (the embedded ranges file), with its kind.
+    plausible = {
+        r["key"]: f"{_number(r['low'])} – {_number(r['high'])} ({r['kind']})"
+        for _, r in uncertainty.ranges().iterrows()
+    }
     lines = [BEGIN, ""]
     sections: dict[str, list[str]] = {}
     for key, spec in schema.items():
@@ -44,18 +50,19 @@ def render() -> str:
         # An optional key the default vehicle leaves out: the model computes it.
         value = "computed" if p is None else _number(p.value)
         source = "optional, left out: computed by the model" if p is None else _short(p.source)
+        likely = plausible.get(key, "–")
         sections.setdefault(sec, []).append(
             f"| `{name}` | {value} | {spec.unit} | "
-            f"{_number(spec.min)} – {_number(spec.max)} | {spec.kind} | "
+            f"{_number(spec.min)} – {_number(spec.max)} | {likely} | {spec.kind} | "
             f"{', '.join(spec.affects)} | {_cell(spec.description)} | {source} |"
         )
     for sec, rows in sections.items():
         lines += [
             f"### [{sec}]",
             "",
-            "| name | value | unit | range | kind | affects | description "
-            "| source (short; full text in the TOML) |",
-            "|---|---|---|---|---|---|---|---|",
+            "| name | value | unit | valid range | plausible range (why: the ranges file) | kind "
+            "| affects | description | source (short; full text in the TOML) |",
+            "|---|---|---|---|---|---|---|---|---|",
             *rows,
             "",
         ]
