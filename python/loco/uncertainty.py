@@ -33,6 +33,7 @@ from loco.vehicle import Locomotive
 
 __all__ = [
     "OUTPUTS",
+    "PRESET_DAMPER_KEYS",
     "Output",
     "analyse",
     "evaluate",
@@ -193,7 +194,7 @@ def evaluate(
 
 
 #: The file's yaw damper keys a preset damper takes as factors, with the preset's field.
-_YAW_DAMPER_FIELDS = {
+PRESET_DAMPER_KEYS = {
     "secondary.yaw_damper_damping": "damping",
     "secondary.yaw_damper_series_stiffness": "series_stiffness",
 }
@@ -203,7 +204,7 @@ def _yaw_damper_factors(vehicle: Locomotive, overrides: dict[str, float]) -> dic
     """Each overridden yaw damper key's value over the vehicle's own, by the preset's field."""
     return {
         field: overrides[key] / vehicle[key]
-        for key, field in _YAW_DAMPER_FIELDS.items()
+        for key, field in PRESET_DAMPER_KEYS.items()
         if key in overrides
     }
 

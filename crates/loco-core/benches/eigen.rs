@@ -3,7 +3,8 @@
 //! critical speed (a bisection of such analyses). Limit: one analysis at most 100 ms on one core.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use loco_core::vehicle::linearise::{eigenvalues, linear_critical_speed, linearise, LinearSearch};
+use loco_core::vehicle::linear_critical_speed::{linear_critical_speed, LinearSearch};
+use loco_core::vehicle::linearise::{eigenvalues, linearise};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{PerfectTrackVehicle, Scenario};
 use std::hint::black_box;

@@ -4,9 +4,8 @@
 
 use loco_core::dampers::Damper;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
-use loco_core::vehicle::linearise::{
-    least_damped, linear_critical_speed, LinearSearch, LinearisationSettings,
-};
+use loco_core::vehicle::linear_critical_speed::{linear_critical_speed, LinearSearch};
+use loco_core::vehicle::linearise::{least_damped, LinearisationSettings};
 use loco_core::vehicle::parameters::ParameterSet;
 use loco_core::vehicle::scenario::{linearised, simulate, Scenario, TrackSpec};
 

@@ -8,7 +8,7 @@ use crate::vehicle_handle::PyVehicle;
 use loco_core::metrics::RunMetrics;
 use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
 use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
-use loco_core::vehicle::linearise::{linear_critical_speed_cancellable, LinearSearch};
+use loco_core::vehicle::linear_critical_speed::{linear_critical_speed_cancellable, LinearSearch};
 use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, MOTIONS};
 use loco_core::vehicle::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
 use loco_core::vehicle::run::RunOutput;

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar
 
+import numpy as np
 import pandas as pd
 
 import loco
@@ -50,9 +51,7 @@ def candidates(
     )
     cells = premise_map.premise_cells(result, *_PRESET_DAMPINGS)
     cells = cells[cells["pair"].isin(labels)].reset_index(drop=True)
-    cells["margin"] = cells[["carbody_zeta_low", "carbody_zeta_high"]].apply(
-        lambda r: min(r.iloc[0], -r.iloc[1]), axis=1
-    )
+    cells["margin"] = np.minimum(cells["carbody_zeta_low"], -cells["carbody_zeta_high"])
     return cells[["pair", "conicity", "carbody_zeta_low", "carbody_zeta_high", "premise", "margin"]]
 
 

@@ -139,11 +139,11 @@ def _cases(families: Sequence[str], conicities: Sequence[float]) -> list[_Case]:
 
 
 def _modes(
-    args: tuple[Locomotive, _Case, Any, float, float],
+    args: tuple[Locomotive, _Case, Any, float],
 ) -> list[tuple[str, float, float]]:
     """(mode, frequency, damping ratio) of the carbody and bogie modes of one case; NaN where
     no mode passes the rule."""
-    vehicle, case, damper, speed, _damping = args
+    vehicle, case, damper, speed = args
     scenario = case.scenario(speed, damper)
     modes = eigen(vehicle, scenario, conicity=case.knife_edge)
     out = []
@@ -163,7 +163,7 @@ def _run(
     progress: bool,
     desc: str,
 ) -> pd.DataFrame:
-    args = [(vehicle, case, damper, speed, damping) for case, damper, speed, damping in tasks]
+    args = [(vehicle, case, damper, speed) for case, damper, speed, _ in tasks]
     results: Iterable[list[tuple[str, float, float]]]
     results = executor.map(_modes, args) if executor else map(_modes, args)
     if progress:

@@ -87,11 +87,8 @@ def sampled_inputs(vehicle: loco.Locomotive | None = None) -> pd.DataFrame:
     stands for the wheel and the rail inclination) and without the yaw damper's (the presets
     replace it)."""
     table = uncertainty.screened_inputs(uncertainty.ranges(vehicle), list(uncertainty.OUTPUTS))
-    keep = [
-        not (k.startswith(("wheel.", "scenario.")) or k.startswith("secondary.yaw_damper_d"))
-        and k != "secondary.yaw_damper_series_stiffness"
-        for k in table["key"]
-    ]
+    left_out = set(uncertainty.PRESET_DAMPER_KEYS)
+    keep = [not k.startswith(("wheel.", "scenario.")) and k not in left_out for k in table["key"]]
     return table[keep].reset_index(drop=True)
 
 
@@ -202,11 +199,23 @@ def run_plausible(
     return Plausible(inputs, pairs, metrics, failed, settings)
 
 
+def rule_halves(s_low_ratio: Any, s_high_ratio: Any) -> tuple[Any, Any]:
+    """The two halves of :data:`PREMISE_RULE` from its ratios (S_low A_yc PSD peak YD2/YD1,
+    S_high A_yb peak YD1/YD2; numbers or arrays): each at least :data:`FACTOR` (a NaN ratio,
+    from a failed run, is False)."""
+    return s_low_ratio >= FACTOR, s_high_ratio >= FACTOR
+
+
+def _halves(metrics: pd.DataFrame) -> tuple[pd.Series, pd.Series]:
+    return rule_halves(
+        metrics["S_low YD2"] / metrics["S_low YD1"], metrics["S_high YD1"] / metrics["S_high YD2"]
+    )
+
+
 def premise_holds(metrics: pd.DataFrame) -> pd.Series:
     """Per locomotive, whether :data:`PREMISE_RULE` holds (False where a run it needs failed)."""
-    carbody = metrics["S_low YD2"] >= FACTOR * metrics["S_low YD1"]
-    bogie = metrics["S_high YD1"] >= FACTOR * metrics["S_high YD2"]
-    return (carbody & bogie).fillna(False).astype(bool)
+    carbody, bogie = _halves(metrics)
+    return (carbody & bogie).astype(bool)
 
 
 def _wilson(k: int, n: int) -> tuple[float, float]:
@@ -225,8 +234,7 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
     S_high, per locomotive: median and the share at or below 1)."""
     m = result.metrics
     holds = premise_holds(m)
-    carbody = (m["S_low YD2"] >= FACTOR * m["S_low YD1"]).fillna(False)
-    bogie = (m["S_high YD1"] >= FACTOR * m["S_high YD2"]).fillna(False)
+    carbody, bogie = _halves(m)
     pairs = pd.Series(result.pairs)
     rows = []
     for label in [*dict.fromkeys(result.pairs), "all pairs"]:

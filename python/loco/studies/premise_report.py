@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from loco.studies.premise_probability import FACTOR, PREMISE_RULE
+from loco.studies.premise_probability import FACTOR, PREMISE_RULE, rule_halves
 from loco.studies.verdict import verdict
 
 __all__ = ["premise_section", "psd_ratios"]
@@ -63,7 +63,7 @@ def _valves(path: Path) -> list[str]:
 
 
 def _holds(ratios: dict[str, float]) -> bool:
-    return ratios["S_low"] >= FACTOR and ratios["S_high"] >= FACTOR
+    return all(rule_halves(ratios["S_low"], ratios["S_high"]))
 
 
 def premise_section(study_tracks: Path | None, case_dir: Path | None) -> list[str]:

@@ -3,11 +3,10 @@
 //!
 //! The state matrix is formed by central finite differences of the full nonlinear right-hand side
 //! (contact table, Hertz, FASTSIM, dampers' internal states), so it is the Jacobian of exactly the
-//! model that the time integration runs. [`least_damped`] and [`linear_critical_speed`] (in
-//! [`super::linear_critical_speed`]) take its
-//! eigenvalues from nalgebra's real Schur decomposition ([`eigenvalues`]; frequencies `|Im λ|/2π`,
-//! damping ratios `−Re λ/|λ|`); `loco.eigen` in Python also wants the mode shapes and uses
-//! numpy/LAPACK.
+//! model that the time integration runs. [`least_damped`] and the linear critical speed
+//! ([`super::linear_critical_speed`]) take its eigenvalues from nalgebra's real Schur
+//! decomposition ([`eigenvalues`]; frequencies `|Im λ|/2π`, damping ratios `−Re λ/|λ|`);
+//! `loco.eigen` in Python also wants the mode shapes and uses numpy/LAPACK.
 //!
 //! The difference steps ([`LinearisationSettings`]). A central difference is the derivative the
 //! time domain sees only if its step lies on a plateau of the right-hand side along that
@@ -54,10 +53,6 @@ use super::statics::{static_equilibrium, StaticsSettings};
 use crate::error::{check_positive, LocoError, Result};
 use nalgebra::linalg::balancing::balance_parlett_reinsch;
 use nalgebra::{Complex, DMatrix, Schur};
-
-pub use super::linear_critical_speed::{
-    linear_critical_speed, linear_critical_speed_cancellable, LinearSearch,
-};
 
 /// Half the default contact table's grid step, m (5e-5): a central difference of this half-width
 /// spans one table cell; the default `contact_step`.

@@ -23,7 +23,8 @@
 //!   (see docs/model/frequency_response.md, the linear stochastic method, for the measured ratio).
 
 use super::frequency_response::{check_frequencies, FrequencyResponse, ResponseSolver};
-use super::linearise::{least_damped, LinearSearch};
+use super::linear_critical_speed::LinearSearch;
+use super::linearise::least_damped;
 use super::run_metrics::CARBODY_LATERAL;
 use super::track_input::TrackInputModel;
 use crate::error::{check_positive, LocoError, Result};

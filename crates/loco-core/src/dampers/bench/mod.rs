@@ -31,28 +31,34 @@ pub const MAX_FREQUENCY_HZ: f64 = 1_000.0;
 /// beyond the stroke of any damper the laws describe (the study's dampers move by millimetres).
 pub const MAX_AMPLITUDE_M: f64 = 0.25;
 
-/// `value` (Hz) checked to be positive and at most [`MAX_FREQUENCY_HZ`]; errors name `name`.
-fn check_frequency(name: &str, value: f64) -> Result<f64> {
-    let f = check_positive(name, value)?;
-    if f > MAX_FREQUENCY_HZ {
+/// `value` checked to be positive and at most `max` (in `unit`); errors name `name` and say
+/// `why` the bound is there.
+fn check_bounded(name: &str, value: f64, max: f64, unit: &str, why: &str) -> Result<f64> {
+    let v = check_positive(name, value)?;
+    if v > max {
         return Err(LocoError::param(
             name,
-            format!("{f} Hz is above {MAX_FREQUENCY_HZ} Hz, beyond the lumped damper laws' range"),
+            format!("{v} {unit} is above {max} {unit}, {why}"),
         ));
     }
-    Ok(f)
+    Ok(v)
 }
 
-/// `value` (m) checked to be positive and at most [`MAX_AMPLITUDE_M`]; errors name `name`.
+/// `value` (Hz) checked to be positive and at most [`MAX_FREQUENCY_HZ`].
+fn check_frequency(name: &str, value: f64) -> Result<f64> {
+    let why = "beyond the lumped damper laws' range";
+    check_bounded(name, value, MAX_FREQUENCY_HZ, "Hz", why)
+}
+
+/// `value` (m) checked to be positive and at most [`MAX_AMPLITUDE_M`].
 fn check_amplitude(name: &str, value: f64) -> Result<f64> {
-    let a = check_positive(name, value)?;
-    if a > MAX_AMPLITUDE_M {
-        return Err(LocoError::param(
-            name,
-            format!("{a} m is above {MAX_AMPLITUDE_M} m, beyond any damper's stroke"),
-        ));
-    }
-    Ok(a)
+    check_bounded(
+        name,
+        value,
+        MAX_AMPLITUDE_M,
+        "m",
+        "beyond any damper's stroke",
+    )
 }
 
 /// The prescribed elongation of the damper.
