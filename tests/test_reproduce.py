@@ -48,6 +48,11 @@ STAGES = {
     "fsd_design": ["fsd_design.png", "fsd_design_population.csv", "fsd_design_front.csv",
                    "fsd_design_conicity.csv", "fsd_design_conicity_summary.csv",
                    "fsd_design_critical_speeds.csv", "fsd_design.json"],
+    "premise_map": ["premise_map.png", "premise_map.csv", "premise_speed.csv",
+                    "premise_cells.csv"],
+    "screening": ["morris.png", "morris.csv", "morris_outputs.csv"],
+    "plausible": ["plausible.png", "plausible.csv", "plausible_fraction.csv",
+                  "plausible_fsd.csv", "plausible.json"],
     "premise_case": ["premise_case_candidates.csv", "fsd_summary.csv", "fsd_tracks.csv",
                      "fsd_psd.png"],
     "curving": ["curving.png", "curving.csv", "curving.json"],
@@ -93,6 +98,15 @@ def test_report(run: tuple[Path, str]) -> None:
     sections = [line for line in text.splitlines() if line.startswith("## ")]
     assert sections[0] == "## Does the premise hold?"
     assert "**The premise case: S_low on jm3-new on cn60 1:20**" in text
+    # ... and gives the map, the probability over plausible locomotives and the screening, from
+    # this run's stages.
+    fraction = pd.read_csv(out / "plausible" / "plausible_fraction.csv")
+    pooled = fraction[(fraction["pair"] == "all pairs") & (fraction["rule"] == "premise")]
+    k, n = int(pooled["k"].iloc[0]), int(pooled["n"].iloc[0])
+    assert n == 4 and f"The premise holds on {k} of {n} plausible locomotives" in text
+    assert "**The premise map** (linearised, 200 km/h): Premise" in text
+    assert "Which estimates the modes hang on (Morris screening, largest μ*): " in text
+    assert "not part of this run" not in text
     assert sections[1].startswith("## Verdict: which yaw damper holds which scenario")
     computed = verdict_from_csv(out / "fsd_comparison" / "fsd_tracks.csv").markdown()
     assert "\n".join(computed).strip() in text
@@ -346,11 +360,11 @@ def _integrators(value: Any) -> list[str]:
 
 def test_the_integrator_reaches_every_stage_that_simulates(tmp_path: Path) -> None:
     """``--integrator rk4`` (the reference; the default is etdrk4) sets the scheme of every stage
-    that runs the simulator (the surrogate and the damper bench run none) and is part of each
-    one's hash."""
+    that runs the simulator (the surrogate, the damper bench, the premise map and the screening
+    run none) and is part of each one's hash."""
     default = stages(FULL, tmp_path, seed=0)
     reference = stages(FULL, tmp_path, seed=0, integrator="rk4")
-    simulating = set(STAGES) - {"surrogate", "damper_bench"}
+    simulating = set(STAGES) - {"surrogate", "damper_bench", "premise_map", "screening"}
     for d, r in zip(default, reference, strict=True):
         assert _integrators(d) == (["etdrk4"] if d.name in simulating else []), d.name
         assert _integrators(r) == (["rk4"] if r.name in simulating else []), r.name

@@ -120,3 +120,25 @@ def test_track_setup_reaches_the_contact() -> None:
     for setting in ({"gauge": 1.440}, {"gauge_height": 0.014}, {"rail_inclination": 1 / 20}):
         other = _run(loco.Scenario(**base, **setting))  # type: ignore[arg-type]
         assert not np.array_equal(default.channels, other.channels), setting
+
+
+def _settings(scenario: loco.Scenario) -> tuple[dict[str, object], list[float]]:
+    """What a worker sees of a scenario: its damper's parameters and its wheel's points."""
+    assert isinstance(scenario.yaw_damper, _loco.Damper)
+    assert isinstance(scenario.wheel, _loco.Profile)
+    return scenario.yaw_damper.parameters(), list(scenario.wheel.y)
+
+
+def test_a_scenario_with_native_dampers_and_profiles_goes_to_a_process_pool() -> None:
+    # A new interpreter (spawn) that imported nothing but loco unpickles the damper and the
+    # profile: a process pool or a Dask worker needs no import of its own for them.
+    import concurrent.futures
+    import multiprocessing
+
+    wheel = loco.profiles.jm3(band_radius=float("inf"), tread_slope=0.03)
+    scenario = loco.Scenario(yaw_damper=loco.dampers.FSD_HYDRAULIC, wheel=wheel)
+    context = multiprocessing.get_context("spawn")
+    with concurrent.futures.ProcessPoolExecutor(1, mp_context=context) as pool:
+        parameters, y = pool.submit(_settings, scenario).result(timeout=120)
+    assert parameters == loco.dampers.FSD_HYDRAULIC.parameters()
+    assert y == list(wheel.y)

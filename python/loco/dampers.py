@@ -16,6 +16,9 @@ orifice, spring-returned piston) derived for f_p at :data:`REFERENCE_STROKE_AMPL
 
 from __future__ import annotations
 
+import copyreg
+import inspect
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -333,3 +336,30 @@ def maxwell_closed_form(
     w = 2.0 * np.pi * frequency
     z = stiffness * (1j * w * damping - mass * w**2) / (stiffness - mass * w**2 + 1j * w * damping)
     return float(z.imag / w), float(z.real)
+
+
+def _rebuild(kind: str, parameters: dict[str, Any]) -> Damper:
+    """A damper from its :attr:`~loco._loco.Damper.kind` and parameters (unpickling)."""
+    builders: dict[str, Callable[..., Damper]] = {
+        "maxwell": maxwell,
+        "fsd": fsd,
+        "hydraulic": hydraulic,
+    }
+    build = builders[kind]
+    accepted = inspect.signature(build).parameters
+    return build(**{k: v for k, v in parameters.items() if v is not None and k in accepted})
+
+
+def _reduce(damper: Damper) -> tuple[Any, tuple[str, dict[str, Any]]]:
+    args = (damper.kind, damper.parameters())
+    if _rebuild(*args).parameters() != args[1]:
+        raise ParameterError(
+            f"invalid parameter `yaw_damper`: this {damper.kind} damper cannot be rebuilt from "
+            "its parameters in another process; run it with local threads"
+        )
+    return _rebuild, args
+
+
+# A damper pickles by its kind and parameters (rebuilt and validated where it is unpickled), so
+# scenarios travel to process pools and Dask workers; tests check the round trip is exact.
+copyreg.pickle(Damper, _reduce)

@@ -19,8 +19,9 @@ Dask is optional: ``pip install 'loco[distributed]'``.
 
 from __future__ import annotations
 
-import copyreg
-import inspect
+import concurrent.futures
+import contextlib
+import multiprocessing
 import os
 import re
 from abc import ABC, abstractmethod
@@ -48,6 +49,7 @@ __all__ = [
     "executor_from_options",
     "require_distributed",
     "run_chunk",
+    "task_pool",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -141,39 +143,6 @@ def run_chunk(
         histories={int(chunk.indices[k]): (t, list(c), ch) for k, t, c, ch in kept},
         statistics=statistics,
     )
-
-
-def _rebuild_damper(kind: str, parameters: dict[str, Any]) -> _loco.Damper:
-    from loco import dampers
-
-    builders: dict[str, Callable[..., _loco.Damper]] = {
-        "maxwell": dampers.maxwell,
-        "fsd": dampers.fsd,
-        "hydraulic": dampers.hydraulic,
-    }
-    build = builders[kind]
-    accepted = inspect.signature(build).parameters
-    return build(**{k: v for k, v in parameters.items() if v is not None and k in accepted})
-
-
-def _reduce_damper(damper: _loco.Damper) -> tuple[Any, tuple[str, dict[str, Any]]]:
-    args = (damper.kind, damper.parameters())
-    if _rebuild_damper(*args).parameters() != args[1]:
-        raise _loco.ParameterError(
-            f"invalid parameter `yaw_damper`: this {damper.kind} damper cannot be rebuilt from "
-            "its parameters on a Dask worker; run it with local threads"
-        )
-    return _rebuild_damper, args
-
-
-def _reduce_profile(profile: _loco.Profile) -> tuple[Any, tuple[str, str, Any, Any]]:
-    return _loco.Profile, (profile.name, profile.kind, profile.y, profile.z)
-
-
-# The native dampers and profiles of a Scenario travel to Dask workers by their parameters and
-# points (rebuilt and validated there); tests check the round trip is exact.
-copyreg.pickle(_loco.Damper, _reduce_damper)
-copyreg.pickle(_loco.Profile, _reduce_profile)
 
 
 class Executor(ABC):
@@ -423,6 +392,29 @@ def _connect(distributed: Any, address: str) -> Any:
             f"cannot reach the Dask scheduler at {address}: what answers there is not a Dask "
             f"scheduler ({type(e).__name__}: {e})"
         ) from None
+
+
+@contextlib.contextmanager
+def task_pool(executor: Executor | None = None) -> Iterator[concurrent.futures.Executor]:
+    """A :class:`concurrent.futures.Executor` for independent tasks that are not simulations
+    (eigen analyses, screening trajectories) on the resources of ``executor``: the Dask cluster's
+    workers for a :class:`DaskExecutor` (``client.get_executor()``), else a pool of worker
+    processes, one per slot of ``executor`` (default: per core). The pool's processes are spawned,
+    not forked: a fork of a process whose native thread pool is running can hang. Tasks and their
+    arguments must pickle (vehicles, scenarios, dampers and profiles do); ``map`` keeps their
+    order, so a result does not depend on where each task ran."""
+    if isinstance(executor, DaskExecutor):
+        yield executor.client.get_executor(pure=False)
+        return
+    slots = executor.slots if isinstance(executor, LocalExecutor) else os.cpu_count() or 1
+    context = multiprocessing.get_context("spawn")
+    pool = concurrent.futures.ProcessPoolExecutor(max_workers=slots, mp_context=context)
+    try:
+        yield pool
+    except BaseException:
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
 
 
 def executor_from_options(

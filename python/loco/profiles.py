@@ -11,7 +11,9 @@ in mm (``#`` and ``%`` start comments), such as the EN 15302 reference profiles.
 
 from __future__ import annotations
 
+import copyreg
 import os
+from typing import Any
 
 from loco._loco import (
     Profile,
@@ -71,3 +73,12 @@ def jm3(
     equivalent conicity on any rail is its slope) and ``flange_thickness`` (m). The defaults are
     ``jm3-new``. A bad field raises :class:`loco.ParameterError` naming it."""
     return jm3_tread_profile(float(tread_slope), float(band_radius), float(flange_thickness))
+
+
+def _reduce(profile: Profile) -> tuple[Any, tuple[str, str, Any, Any]]:
+    return Profile, (profile.name, profile.kind, profile.y, profile.z)
+
+
+# A profile pickles by its name, kind and points (validated again where it is unpickled), so
+# scenarios travel to process pools and Dask workers.
+copyreg.pickle(Profile, _reduce)

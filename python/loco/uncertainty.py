@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import concurrent.futures
 import math
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -294,6 +294,7 @@ def morris(
     levels: int = 4,
     ranges_file: str | Path | None = None,
     on_row: Callable[[int, list[float]], None] | None = None,
+    known: Mapping[int, Sequence[float]] | None = None,
 ) -> pd.DataFrame:
     """Morris screening (SALib, ``levels``-level grid, ``trajectories`` trajectories from
     ``seed``) of every input of :func:`ranges` that can change ``outputs`` (see
@@ -307,7 +308,9 @@ def morris(
     pool, or ``distributed.Client.get_executor()`` for a Dask cluster); default: this process,
     one trajectory after the other (a trajectory is one task: its points run in order, each
     critical speed searched from the previous point's). Results are the same whichever executor
-    runs the trajectories."""
+    runs the trajectories. ``on_row(i, outputs)`` receives each point's outputs as its trajectory
+    finishes; ``known`` holds outputs of earlier runs by point index (as ``on_row`` gave them):
+    a trajectory whose points are all known is not evaluated again (a resumed screening)."""
     vehicle = vehicle or Locomotive.default()
     names = _checked_outputs(outputs)
     table = screened_inputs(ranges(vehicle, ranges_file), names)
@@ -323,10 +326,11 @@ def morris(
     }
     per = len(keys) + 1
     points = [[float(v) for v in row] for row in x]
-    tasks = [
-        (vehicle, keys, points[t * per : (t + 1) * per], names, guesses)
-        for t in range(trajectories)
+    known = known or {}
+    todo = [
+        t for t in range(trajectories) if any(i not in known for i in range(t * per, (t + 1) * per))
     ]
+    tasks = [(vehicle, keys, points[t * per : (t + 1) * per], names, guesses) for t in todo]
     done: Iterable[list[list[float]]]
     if executor:
         done = executor.map(_evaluate_trajectory, tasks)
@@ -338,7 +342,12 @@ def morris(
 
         bar = tqdm(total=len(points), desc="morris", unit="sample")
     y = np.full((len(points), len(names)), np.nan)
-    for t, rows in enumerate(done):
+    for i, values in known.items():
+        if 0 <= i < len(points):
+            y[i] = values
+    if bar is not None:
+        bar.update(len(points) - len(todo) * per)
+    for t, rows in zip(todo, done, strict=True):
         for k, values in enumerate(rows):
             y[t * per + k] = values
             if on_row is not None:

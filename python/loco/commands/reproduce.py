@@ -25,10 +25,17 @@ inputs is skipped on a rerun, ``--force`` runs it again):
 10. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
     and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
     preset in its ``SIZES``).
-11. ``premise_case``: the damper comparison of stage 9 with S_low on the low-conicity pair on
+11. ``premise_map``: the linearised carbody and bogie modes over conicity, contact family and
+    yaw damping at 200 km/h, and over speed (:mod:`loco.studies.premise_stages`).
+12. ``screening``: Morris screening of every ranged input on the modes' damping (and in
+    ``--full`` the linear critical speeds): which estimates the answer hangs on.
+13. ``plausible``: plausible locomotives (a Latin hypercube over the ranged inputs and the
+    low-conicity pairs) with YD1, YD2, FSD and FSD-H on S_low and S_high: the share with the
+    premise, with its interval, and what the FSDs do there.
+14. ``premise_case``: the damper comparison of stage 9 with S_low on the low-conicity pair on
     which the default vehicle has the study's premise, chosen by the rule of
     :mod:`loco.studies.premise_case` before any of its runs.
-12. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
+15. ``curving`` (``--full`` only, a stage beyond the SPEC's study): YD1, YD2, FSD in curves of
     600–7000 m at 0–150 mm cant deficiency, ΣY, Y/Q and Y_qst by EN 14363
     (:mod:`loco.studies.curving`).
 
@@ -59,15 +66,14 @@ from __future__ import annotations
 import argparse
 import contextlib
 import dataclasses
-import shutil
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import loco
-from loco import campaign, dampers
+from loco import dampers
 from loco.commands import damper_bench
 from loco.commands.arguments import (
     UsageError,
@@ -84,6 +90,8 @@ from loco.studies import (
     parameter_stages,
     parameter_study,
     premise_case,
+    premise_stages,
+    premise_study,
     speed_sweep,
     surrogate_holdout,
     surrogate_samples,
@@ -91,7 +99,7 @@ from loco.studies import (
 )
 from loco.studies.premise_report import premise_section
 from loco.studies.report import StudyRecord, save_json, write_report
-from loco.studies.stages import DataFile, Demand, Runtime, Stage, StageRunner
+from loco.studies.stages import DataFile, Demand, Runtime, Stage, StageRunner, campaign_stores
 from loco.studies.verdict import verdict_from_csv
 
 NAME = "reproduce"
@@ -301,6 +309,7 @@ def stages(
     training = surrogate_validation.Training(tables, kfold=sizes.kfold, seed=seed)
     # A preset of its own name, else (a hand-made Sizes) the quick study.
     design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
+    premise_sizes = premise_study.SIZES.get(sizes.name, premise_study.SIZES["quick"])
     comparison: dict[str, Any] = {
         "speed_kmh": sizes.speed_kmh,
         "distance": sizes.distance,
@@ -340,6 +349,8 @@ def stages(
         fsd_design_stage.FsdDesignStage(
             design_sizes, speed_kmh=sizes.speed_kmh, seed=seed, integrator=integrator
         ),
+        # Where the premise holds, on which estimates it hangs, how probable it is.
+        *premise_study.premise_stages(premise_sizes, seed=seed, integrator=integrator),
         # The same comparison where the premise holds.
         premise_case.PremiseCaseStage.chosen(**comparison),
     ]
@@ -382,23 +393,12 @@ def reproduce(
     out_dir = Path(out)
     executor = executor or LocalExecutor(threads)
 
-    @contextlib.contextmanager
-    def in_campaign(stage_dir: Path) -> Iterator[None]:
-        """Every batch of the stage on the executor, its samples kept in ``<stage>/store``."""
-        if force:
-            shutil.rmtree(stage_dir / "store", ignore_errors=True)
-        with campaign.using(executor, stage_dir / "store", chunk_size=chunk_size) as context:
-            yield
-        # Printed with or without progress bars: where the stage's samples came from.
-        count = context.samples
-        log(f"[{stage_dir.name}] samples: {count.reused} from the store, {count.ran} run")
-
     runner = StageRunner(
         out_dir,
         log=log,
         force=force,
         runtime=Runtime(threads=threads, progress=progress),
-        around=in_campaign,
+        around=campaign_stores(executor, chunk_size=chunk_size, force=force, log=log),
     )
     planned = stages(sizes, out_dir, seed=seed, integrator=integrator)
     log(
@@ -456,7 +456,14 @@ def _verdict(records: list[StudyRecord]) -> list[str]:
     case = next(
         (r for r in records if r.name == premise_case.PremiseCaseStage.name and r.tables), None
     )
-    premise = premise_section(study, None if case is None else Path(case.tables[0]).parent)
+    stage_dirs = {r.name: Path(r.tables[0]).parent for r in records if r.tables}
+    premise = premise_section(
+        study,
+        None if case is None else Path(case.tables[0]).parent,
+        map_dir=stage_dirs.get(premise_stages.PremiseMapStage.name),
+        screening_dir=stage_dirs.get(premise_stages.ScreeningStage.name),
+        plausible_dir=stage_dirs.get(premise_stages.PlausibleStage.name),
+    )
     if study is None:
         return [
             *premise,

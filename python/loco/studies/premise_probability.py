@@ -20,13 +20,15 @@ twice that with YD2 (low damping lets the bogies hunt).
 :func:`run_plausible` runs them (one ``loco.run_batch`` per pair, damper, scenario and track, so
 an executor and a store make it a resumable Dask campaign); :func:`summarise` gives the fraction
 with the premise and its 95 % interval, per pair and pooled; the FSD's and FSD-H's A_yc and A_yb
-against the better fixed damper inside that set; and which inputs decide the premise
+against the better fixed damper inside that set, and how much of the S_low record their valves
+were open (track 0); and which inputs decide the premise
 (:func:`premise_sensitivity`: a random-forest classifier validated on held-out locomotives, its
 permutation importances).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -39,7 +41,7 @@ import loco
 from loco import dampers, uncertainty
 from loco.channels import Metric
 from loco.contact_pairs import ContactPair
-from loco.studies.fsd_comparison import LEAD_IN
+from loco.studies.fsd_comparison import LEAD_IN, valve_closed_fraction
 
 __all__ = [
     "DAMPERS",
@@ -75,25 +77,35 @@ DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HY
 JUDGE = {"S_low": Metric.AYC_PSD_PEAK, "S_high": Metric.AYB_PEAK_LP}
 #: Factor of the premise rule.
 FACTOR = 2.0
+#: The FSDs whose valve states are recorded, and the columns of :attr:`Plausible.valves`.
+VALVED = ("FSD", "FSD-H")
+VALVE_COLUMNS = tuple(f"S_low {d} valve open" for d in VALVED)
 PREMISE_RULE = (
     f"S_low A_yc PSD peak with YD2 at least {FACTOR:g} times that with YD1, and S_high A_yb peak "
     f"(10 Hz low-passed) with YD1 at least {FACTOR:g} times that with YD2 (track means)"
 )
 
 
-def sampled_inputs(vehicle: loco.Locomotive | None = None) -> pd.DataFrame:
+def sampled_inputs(
+    vehicle: loco.Locomotive | None = None, ranges_file: str | Path | None = None
+) -> pd.DataFrame:
     """The ranged vehicle inputs a plausible locomotive draws: the rows of
     :func:`loco.uncertainty.ranges` that can change a run, without the scenario's (the pair
     stands for the wheel and the rail inclination) and without the yaw damper's (the presets
     replace it)."""
-    table = uncertainty.screened_inputs(uncertainty.ranges(vehicle), list(uncertainty.OUTPUTS))
+    table = uncertainty.screened_inputs(
+        uncertainty.ranges(vehicle, ranges_file), list(uncertainty.OUTPUTS)
+    )
     left_out = set(uncertainty.PRESET_DAMPER_KEYS)
     keep = [not k.startswith(("wheel.", "scenario.")) and k not in left_out for k in table["key"]]
     return table[keep].reset_index(drop=True)
 
 
 def sample_locomotives(
-    n: int, seed: int = 0, vehicle: loco.Locomotive | None = None
+    n: int,
+    seed: int = 0,
+    vehicle: loco.Locomotive | None = None,
+    ranges_file: str | Path | None = None,
 ) -> tuple[pd.DataFrame, list[str]]:
     """``n`` plausible locomotives: a frame of their inputs (SI; a Latin hypercube over
     :func:`sampled_inputs`, scipy's, from ``seed``) and each one's S_low pair label (equal
@@ -104,7 +116,7 @@ def sample_locomotives(
         raise loco.ParameterError(
             f"invalid parameter `n`: must be a whole number ≥ {len(S_LOW_PAIRS)}, got {n!r}"
         )
-    table = sampled_inputs(vehicle)
+    table = sampled_inputs(vehicle, ranges_file)
     unit = qmc.LatinHypercube(d=len(table), seed=seed).random(n)
     values = qmc.scale(unit, table["low"].to_numpy(float), table["high"].to_numpy(float))
     rng = np.random.default_rng(seed)
@@ -123,6 +135,9 @@ class Plausible:
     metrics: pd.DataFrame
     failed: int
     settings: dict[str, Any]
+    #: Per locomotive, the share of the S_low record (track 0) the valves of each FSD were
+    #: open, mean over its valves (columns :data:`VALVE_COLUMNS`; NaN where the run failed).
+    valves: pd.DataFrame = dataclasses.field(default_factory=pd.DataFrame)
 
 
 def run_plausible(
@@ -137,15 +152,19 @@ def run_plausible(
     progress: bool = True,
     executor: Any = None,
     store: str | Path | None = None,
+    integrator: str = loco.Scenario.integrator,
+    ranges_file: str | Path | None = None,
 ) -> Plausible:
     """Run ``n`` plausible locomotives (:func:`sample_locomotives`) with every damper of
     :data:`DAMPERS` on their S_low pair and on S_high, ``distance`` m at ``speed`` (m/s) after
     the study's lead-in, on tracks ``0 … n_tracks-1``. ``executor`` and ``store`` go to each
-    ``loco.run_batch`` (a Dask cluster, a resumable store)."""
-    inputs, pairs = sample_locomotives(n, seed, vehicle)
+    ``loco.run_batch`` (a Dask cluster, a resumable store); every run uses ``integrator``; the
+    ranges are those of ``ranges_file`` (default: the embedded ranges file)."""
+    inputs, pairs = sample_locomotives(n, seed, vehicle, ranges_file)
     names = list(inputs.columns)
     by_pair = {p.label: p for p in S_LOW_PAIRS}
     metrics = pd.DataFrame(index=range(n), dtype=float)
+    valves = pd.DataFrame(np.nan, index=range(n), columns=list(VALVE_COLUMNS))
     failed = 0
     groups: list[tuple[str, ContactPair, np.ndarray]] = [
         ("S_low", by_pair[label], np.flatnonzero(np.asarray(pairs) == label)) for label in by_pair
@@ -156,6 +175,8 @@ def run_plausible(
         for damper_name, law in DAMPERS.items():
             per_track = np.full((len(rows), n_tracks), np.nan)
             for track in range(n_tracks):
+                # The valve states of the FSDs on S_low, track 0: their histories are kept.
+                valved = scenario_name == "S_low" and damper_name in VALVED and track == 0
                 scenario = loco.Scenario(
                     wheel=pair.wheel,
                     rail=pair.rail,
@@ -165,6 +186,7 @@ def run_plausible(
                     lead_in=LEAD_IN,
                     seed=track,
                     yaw_damper=law,
+                    integrator=integrator,
                 )
                 batch = loco.run_batch(
                     inputs.to_numpy(float)[rows],
@@ -175,8 +197,14 @@ def run_plausible(
                     progress=progress,
                     executor=executor,
                     store=None if store is None else Path(store),
+                    histories=range(len(rows)) if valved else (),
                 )
                 ok = np.asarray(batch.status) == 0
+                if valved:
+                    column = f"S_low {damper_name} valve open"
+                    for k, history in batch.histories.items():
+                        if ok[k]:
+                            valves.loc[rows[k], column] = 1.0 - valve_closed_fraction(history)
                 failed += int((~ok).sum())
                 values = np.asarray(batch.metric(metric), dtype=float)
                 per_track[:, track] = np.where(ok, values, np.nan)
@@ -195,8 +223,9 @@ def run_plausible(
         "premise_rule": PREMISE_RULE,
         "s_low_pairs": [p.label for p in S_LOW_PAIRS],
         "s_high_pair": S_HIGH_PAIR.label,
+        "integrator": integrator,
     }
-    return Plausible(inputs, pairs, metrics, failed, settings)
+    return Plausible(inputs, pairs, metrics, failed, settings, valves)
 
 
 def rule_halves(s_low_ratio: Any, s_high_ratio: Any) -> tuple[Any, Any]:
@@ -231,7 +260,8 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
     """``fraction``: the share of locomotives with the premise (and with each half of it), with
     95 % Wilson intervals, per S_low pair and pooled; ``fsd``: inside the premise set, the
     FSD's and FSD-H's judging metric over the better fixed damper's (YD1 on S_low, YD2 on
-    S_high, per locomotive: median and the share at or below 1)."""
+    S_high, per locomotive: median and the share at or below 1) and, on S_low, the median share
+    of the record (track 0) the FSD's valves were open (``valve_open_median``)."""
     m = result.metrics
     holds = premise_holds(m)
     carbody, bogie = _halves(m)
@@ -253,6 +283,8 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
             ratio = ratio.dropna()
             k = int((ratio <= 1.0).sum())
             low, high = _wilson(k, len(ratio))
+            valve = f"{scenario} {name} valve open"
+            opened = result.valves[holds][valve].dropna() if valve in result.valves else None
             fsd_rows.append(
                 (
                     name,
@@ -263,6 +295,7 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
                     k / len(ratio) if len(ratio) else math.nan,
                     low,
                     high,
+                    opened.median() if opened is not None and len(opened) else math.nan,
                 )
             )
     fsd = pd.DataFrame(
@@ -276,6 +309,7 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
             "share_at_or_below",
             "low",
             "high",
+            "valve_open_median",
         ],
     )
     return {"fraction": fraction, "fsd": fsd}
@@ -299,8 +333,12 @@ def premise_sensitivity(
     x = pd.concat(
         [result.inputs, pd.get_dummies(pd.Series(result.pairs, name="pair"), dtype=float)], axis=1
     )
-    if y.all() or not y.any():
-        return {"accuracy": math.nan, "majority": 1.0, "importance": pd.DataFrame()}
+    minority = int(min(y.sum(), (~y).sum()))
+    if minority < 2 or round(len(y) * test_share) < 2:
+        # Too few locomotives of one class to fit on some and score on others: no classifier.
+        majority = float(max(y.mean(), 1 - y.mean())) if len(y) else math.nan
+        empty = pd.DataFrame(columns=["input", "importance", "std"])
+        return {"accuracy": math.nan, "majority": majority, "importance": empty}
     x_fit, x_test, y_fit, y_test = train_test_split(
         x, y, test_size=test_share, random_state=seed, stratify=y
     )
@@ -329,12 +367,20 @@ def to_frame(result: Plausible) -> pd.DataFrame:
         [result.inputs, pd.Series(result.pairs, name="s_low_pair"), result.metrics], axis=1
     )
     frame["premise"] = premise_holds(result.metrics)
-    return frame
+    return pd.concat([frame, result.valves], axis=1)
 
 
 def from_frame(frame: pd.DataFrame, settings: dict[str, Any] | None = None) -> Plausible:
     """The :class:`Plausible` of a :func:`to_frame` table (the failed-run count is not kept
     there: -1)."""
     cases = [f"{s} {d}" for s in JUDGE for d in DAMPERS]
-    inputs = frame.drop(columns=[*cases, "s_low_pair", "premise"])
-    return Plausible(inputs, list(frame["s_low_pair"]), frame[cases], -1, dict(settings or {}))
+    valves = [c for c in VALVE_COLUMNS if c in frame]
+    inputs = frame.drop(columns=[*cases, *valves, "s_low_pair", "premise"])
+    return Plausible(
+        inputs,
+        list(frame["s_low_pair"]),
+        frame[cases],
+        -1,
+        dict(settings or {}),
+        frame[valves].reset_index(drop=True),
+    )

@@ -9,11 +9,14 @@ linearised carbody mode on each low-conicity pair). The premise's time-domain ru
 
 from __future__ import annotations
 
+import json
+import math
 from pathlib import Path
 
 import pandas as pd
 
 from loco.studies.premise_probability import FACTOR, PREMISE_RULE, rule_halves
+from loco.studies.premise_stages import premise_cells_note, probability_note, top_inputs
 from loco.studies.verdict import verdict
 
 __all__ = ["premise_section", "psd_ratios"]
@@ -66,9 +69,94 @@ def _holds(ratios: dict[str, float]) -> bool:
     return all(rule_halves(ratios["S_low"], ratios["S_high"]))
 
 
-def premise_section(study_tracks: Path | None, case_dir: Path | None) -> list[str]:
-    """The section's Markdown lines from the study's ``fsd_tracks.csv`` and the premise case's
-    stage directory (either may be missing: the section says what it cannot tell)."""
+def _plausible_lines(plausible_dir: Path) -> list[str]:
+    """The share of plausible locomotives with the premise, what the FSDs do inside that set,
+    and which inputs the classifier finds deciding, from the ``plausible`` stage's tables."""
+    fraction = pd.read_csv(plausible_dir / "plausible_fraction.csv")
+    fsd = pd.read_csv(plausible_dir / "plausible_fsd.csv")
+    meta = json.loads((plausible_dir / "plausible.json").read_text(encoding="utf-8"))
+    rows = fraction[fraction["rule"] == "premise"]
+    per_pair = "; ".join(
+        f"{r['pair']} {r['fraction']:.0%} [{r['low']:.0%}, {r['high']:.0%}]"
+        for _, r in rows[rows["pair"] != "all pairs"].iterrows()
+    )
+    lines = [
+        f"- **Over plausible locomotives: {probability_note(fraction)}** Each is the default "
+        "vehicle with every ranged input drawn from its range (a Latin hypercube) and one of the "
+        f"low-conicity S_low pairs, on {meta['n_tracks']} tracks. Per pair: {per_pair}."
+    ]
+    parts = []
+    for damper, g in fsd.groupby("damper", sort=False):
+        words = []
+        for _, r in g.iterrows():
+            metric = "A_yc PSD peak" if r["scenario"] == "S_low" else "A_yb peak"
+            words.append(
+                f"{r['scenario']} {metric} a median {r['median_ratio']:.2f}× "
+                f"{r['better_fixed']}'s (at or below it on {r['share_at_or_below']:.0%})"
+            )
+            if pd.notna(r.get("valve_open_median")):
+                words.append(
+                    f"valves open a median {r['valve_open_median']:.0%} of the S_low record"
+                )
+        parts.append(f"{damper}: " + ", ".join(words))
+    if parts and int(fsd["n"].max()) > 0:
+        lines.append(
+            f"  - Inside that set ({int(fsd['n'].max())} locomotives), against the better fixed "
+            "damper of each scenario: " + "; ".join(parts) + "."
+        )
+    accuracy, majority = meta.get("classifier_accuracy"), meta.get("majority_share")
+    importance_file = plausible_dir / "plausible_importance.csv"
+    importance = pd.read_csv(importance_file) if importance_file.is_file() else pd.DataFrame()
+    if accuracy is None or not isinstance(accuracy, float) or math.isnan(accuracy):
+        lines.append("  - Too few locomotives of one kind to tell which inputs decide it.")
+    elif accuracy <= majority or importance.empty:
+        lines.append(
+            f"  - A random-forest classifier of the premise scores {accuracy:.2f} on held-out "
+            f"locomotives, no better than always answering the majority ({majority:.2f}): no "
+            "input decides it alone."
+        )
+    else:
+        top = ", ".join(
+            f"`{r['input']}` ({r['importance']:.3f})" for _, r in importance.head(3).iterrows()
+        )
+        lines.append(
+            f"  - What decides it: a random-forest classifier of the premise scores "
+            f"{accuracy:.2f} on held-out locomotives (the majority share is {majority:.2f}); its "
+            f"largest permutation importances: {top}."
+        )
+    return lines
+
+
+def _screening_lines(screening_dir: Path) -> list[str]:
+    """The inputs each screened output hangs on most, from the ``screening`` stage's table."""
+    result = pd.read_csv(screening_dir / "morris.csv")
+    parts = []
+    for output in ("S_low_carbody_zeta_YD2", "S_high_bogie_zeta_YD1"):
+        if output in set(result["output"]):
+            names = ", ".join(f"`{k}`" for k, _ in top_inputs(result, output))
+            parts.append(f"{output} on {names}")
+    if not parts:
+        return []
+    return [
+        "  - Which estimates the modes hang on (Morris screening, largest μ*): "
+        + "; ".join(parts)
+        + "."
+    ]
+
+
+def premise_section(
+    study_tracks: Path | None,
+    case_dir: Path | None,
+    *,
+    map_dir: Path | None = None,
+    screening_dir: Path | None = None,
+    plausible_dir: Path | None = None,
+    vehicle: str = "the default vehicle",
+) -> list[str]:
+    """The section's Markdown lines from the study's ``fsd_tracks.csv``, the premise case's
+    stage directory and the premise map's, the screening's and the plausible locomotives'
+    (any may be missing: the section says what it cannot tell); ``vehicle`` names the vehicle
+    they ran on."""
     lines = [
         "## Does the premise hold?",
         "",
@@ -94,7 +182,7 @@ def premise_section(study_tracks: Path | None, case_dir: Path | None) -> list[st
                 + ("but leaves it stable." if stable else "and makes it unstable.")
             )
         lines.append(
-            f"- **On the default vehicle: {answer}.** S_low A_yc PSD peak YD2/YD1 = "
+            f"- **On {vehicle}: {answer}.** S_low A_yc PSD peak YD2/YD1 = "
             f"{ratios['S_low']:.2f}, S_high A_yb YD1/YD2 = {ratios['S_high']:.2f} "
             f"(the rule asks for at least {FACTOR:g} in both).{why}"
         )
@@ -106,7 +194,7 @@ def premise_section(study_tracks: Path | None, case_dir: Path | None) -> list[st
         by_psd = verdict(tracks, judged_by={"S_low": "psd_peak"})
         lines += [
             f"- **The premise case: S_low on {chosen['pair']}**, the low-conicity pair on which "
-            f"the default vehicle's linearised carbody mode is stable with YD1 (ζ = "
+            f"{vehicle}'s linearised carbody mode is stable with YD1 (ζ = "
             f"{chosen['carbody_zeta_low']:.3f}) and unstable with YD2 "
             f"({chosen['carbody_zeta_high']:.3f}), chosen by that rule before its runs. In the "
             f"time domain: S_low A_yc PSD peak YD2/YD1 = {ratios['S_low']:.2f} (premise "
@@ -117,11 +205,22 @@ def premise_section(study_tracks: Path | None, case_dir: Path | None) -> list[st
             *_valves(case_tracks.parent / "fsd_valve_open_fraction.csv"),
         ]
     elif candidates is not None:
-        lines.append("- **No premise case:** no low-conicity pair has the premise on the "
-                     "default vehicle.")  # fmt: skip
-    lines += [
-        f"- The probability over plausible locomotives and the inputs that decide it are in "
-        f"`{PREMISE_PAGE}` (from the scripts it names; not part of this run).",
-        "",
-    ]
+        lines.append(f"- **No premise case:** no low-conicity pair has the premise on {vehicle}.")
+    if map_dir is not None and (map_dir / "premise_cells.csv").is_file():
+        note = premise_cells_note(pd.read_csv(map_dir / "premise_cells.csv"))
+        lines.append(f"- **The premise map** (linearised, 200 km/h): {note}")
+    if plausible_dir is not None and (plausible_dir / "plausible_fraction.csv").is_file():
+        lines += _plausible_lines(plausible_dir)
+        if screening_dir is not None and (screening_dir / "morris.csv").is_file():
+            lines += _screening_lines(screening_dir)
+        lines.append(
+            f"- The same study at full size (`loco reproduce --full`: 200 locomotives, the "
+            f"screening on the critical speeds too) is in `{PREMISE_PAGE}`."
+        )
+    else:
+        lines.append(
+            f"- The probability over plausible locomotives and the inputs that decide it are in "
+            f"`{PREMISE_PAGE}` (not part of this run)."
+        )
+    lines.append("")
     return lines

@@ -28,8 +28,9 @@ import dataclasses
 import functools
 import hashlib
 import json
+import shutil
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import AbstractContextManager
 from dataclasses import dataclass
 from pathlib import Path
@@ -42,7 +43,16 @@ from loco import _loco
 from loco.store import atomic_write, file_sha256
 from loco.studies.report import StudyRecord, jsonable
 
-__all__ = ["MARKER", "DataFile", "Demand", "Runtime", "Stage", "StageRunner", "encode"]
+__all__ = [
+    "MARKER",
+    "DataFile",
+    "Demand",
+    "Runtime",
+    "Stage",
+    "StageRunner",
+    "campaign_stores",
+    "encode",
+]
 
 #: File name of a finished stage's marker.
 MARKER = "stage.json"
@@ -267,3 +277,28 @@ class StageRunner:
         self.log(f"[{name}] done in {elapsed:.1f} s")
         self.ran.append(name)
         return record
+
+
+def campaign_stores(
+    executor: Any = None,
+    *,
+    chunk_size: int | None = None,
+    force: bool = False,
+    log: Callable[[str], None] = print,
+) -> Callable[[Path], AbstractContextManager[None]]:
+    """The ``around`` of a :class:`StageRunner` that runs every batch of a stage as a campaign
+    on ``executor`` (:mod:`loco.campaign`; default local threads) with its samples kept in
+    ``<stage>/store`` (cleared first when ``force``), and logs how many came from the store."""
+    from loco import campaign
+
+    @contextlib.contextmanager
+    def around(stage_dir: Path) -> Iterator[None]:
+        if force:
+            shutil.rmtree(stage_dir / "store", ignore_errors=True)
+        with campaign.using(executor, stage_dir / "store", chunk_size=chunk_size) as context:
+            yield
+        # Printed with or without progress bars: where the stage's samples came from.
+        count = context.samples
+        log(f"[{stage_dir.name}] samples: {count.reused} from the store, {count.ran} run")
+
+    return around
