@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import loco
+from loco.contact_pairs import ContactPair
 
 SPEED = 200 / 3.6
 SEEDS = (0, 1)
@@ -71,3 +72,41 @@ def test_linear_critical_speed_on_worn_wheels(damper: str, above: bool) -> None:
     scenario = loco.Scenario(name="S_high", speed=SPEED, yaw_damper=DAMPERS[damper])
     v = loco.critical_speed(loco.Locomotive.default(), scenario)
     assert (v > 1.1 * SPEED) is above, v
+
+
+@functools.cache
+def premise_case_metrics(damper: str) -> list[dict[str, float]]:
+    """The premise case's S_low (new JM3 wheels on CN60 inclined 1:20), the study's run."""
+    from loco.studies.premise_probability import DAMPERS as ALL_DAMPERS
+
+    pair = ContactPair("jm3-new", "cn60", 20)
+    return [
+        loco.simulate(
+            loco.Locomotive.default(),
+            loco.Scenario(
+                wheel=pair.wheel,
+                rail=pair.rail,
+                rail_inclination=pair.inclination,
+                speed=SPEED,
+                distance=500.0,
+                lead_in=500.0,
+                seed=seed,
+                yaw_damper=ALL_DAMPERS[damper],
+            ),
+        ).metrics
+        for seed in SEEDS
+    ]
+
+
+def test_where_the_premise_holds_the_low_damping_rides_best_and_the_fsds_sit_between() -> None:
+    # The premise case (S_low on new wheels, rails inclined 1:20): the carbody sways with YD2
+    # (A_yc PSD peak on these two tracks: YD2 0.024, YD1 0.0038 (m/s²)²/Hz); YD1 is best, the
+    # FSD-H (0.0098) and the FSD (0.014) lie between: their valves open for only a part of the
+    # record, so they are neither YD1 nor YD2.
+    peak = {
+        d: np.mean([m["ayc_psd_peak"] for m in premise_case_metrics(d)])
+        for d in ("YD1", "YD2", "FSD", "FSD-H")
+    }
+    assert peak["YD2"] > 2.0 * peak["YD1"], peak
+    assert peak["YD1"] < min(peak["FSD"], peak["FSD-H"]), peak
+    assert max(peak["FSD"], peak["FSD-H"]) < peak["YD2"], peak
