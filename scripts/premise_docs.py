@@ -196,8 +196,9 @@ def plausible_section() -> list[str]:
         "Inside the set where the premise holds, each FSD against the better fixed damper of",
         "each scenario (its judging metric over the fixed damper's, per locomotive):",
         "",
-        "| damper | scenario | against | locomotives | median ratio | share at or below 1 |",
-        "|---|---|---|---|---|---|",
+        "| damper | scenario | against | locomotives | median ratio | share at or below 1 "
+        "| valves open (median share of the S_low record, track 0) |",
+        "|---|---|---|---|---|---|---|",
         *(
             f"| {r['damper']} | {r['scenario']} | {r['better_fixed']} | {int(r['n'])} | "
             + ("–" if pd.isna(r["median_ratio"]) else f"{r['median_ratio']:.2f}")
@@ -206,6 +207,12 @@ def plausible_section() -> list[str]:
                 "–"
                 if pd.isna(r["share_at_or_below"])
                 else f"{r['share_at_or_below']:.0%} ({r['low']:.0%}–{r['high']:.0%})"
+            )
+            + " | "
+            + (
+                f"{r['valve_open_median']:.0%}"
+                if pd.notna(r.get("valve_open_median", float("nan")))
+                else "–"
             )
             + " |"
             for _, r in fsd.iterrows()
@@ -249,12 +256,27 @@ def render() -> str:
         *premise_section(),
         *plausible_section(),
         *morris_section(),
-        "## Reproduce",
+        "## Run it",
+        "",
+        "`loco reproduce` runs the map, the screening and the plausible locomotives as stages",
+        "(`premise_map`, `screening`, `plausible`) and its report opens with their answer:",
+        "`--quick` with 10 trajectories on the damping ratios and 64 locomotives, `--full` at",
+        "the sizes of this page. The same study on a vehicle of your own, resumable in its",
+        "output directory, on local threads or a Dask cluster (`executor=`):",
+        "",
+        "```python no-run",
+        "from loco.studies.premise_study import premise_study",
+        "",
+        'report = premise_study("my_locomotive.toml", "results/premise", preset="quick")',
+        "print(report.read_text())  # results/premise/premise.md: does the premise hold?",
+        "```",
+        "",
+        "This page's results come from the scripts (each writes into `docs/screening`):",
         "",
         "```",
-        "python scripts/premise_map.py       # the map, minutes",
-        "python scripts/morris_screening.py  # the screening, minutes",
-        "python scripts/premise_probability.py  # the plausible locomotives, minutes",
+        "python scripts/premise_map.py       # the map, about a minute",
+        "python scripts/morris_screening.py  # the screening, about 5 minutes on 2 cores",
+        "python scripts/premise_probability.py  # the plausible locomotives, about 15 minutes",
         "python scripts/premise_docs.py --write",
         "```",
         "",

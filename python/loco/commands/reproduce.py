@@ -56,9 +56,11 @@ README's main job) keeps those sizes but uses 32 Saltelli base samples and a coa
 sweep, and 4 tracks for the speed sweep and the damper comparison (8 in ``--full``). The FSD
 design stage has sizes of its own per preset. ``Sizes.runs()`` (the ``--quick``/``--full`` help)
 counts what every stage asks for (:meth:`loco.studies.stages.Stage.demand`) in runs of 500 m at
-200 km/h: about 2 260 for ``--quick`` (the FSD design stage, the surrogate's 300 extra samples
-and its 200 fresh ones at two runs each included; one run costs about 0.3 s of one core) and 7 700
-for ``--full`` (the curving stage and 1 000 runs for the 500 fresh samples included).
+200 km/h: about 4 370 for ``--quick`` (the FSD design stage, the surrogate's 300 extra samples
+and its 200 fresh ones at two runs each, and the 64 plausible locomotives' 1 024 runs of 1 000 m
+included; one run of 500 m costs about 0.3 s of one core) and 14 200 for ``--full`` (the curving
+stage, 1 000 runs for the 500 fresh samples and 200 plausible locomotives included). The premise
+stages have sizes of their own (:data:`loco.studies.premise_study.SIZES`).
 """
 
 from __future__ import annotations
@@ -170,8 +172,8 @@ FULL = Sizes(
     n_tracks=8,
     curving_sizes=curving.FULL_SIZES,
 )
-#: The README's main job: about 4.5 min on an idle 2-core machine for the ~2 260 runs of 500 m
-#: that ``QUICK.runs()`` counts (the surrogate's 300 extra and 200 fresh samples included). It
+#: The README's main job: about 4.5 min on an idle 2-core machine for the study's own stages and
+#: 7 more for the premise stages (~4 370 runs of 500 m that ``QUICK.runs()`` counts). It
 #: keeps SPEC's distance, speed, Latin hypercube and NSGA-II sizes (NSGA-II on the surrogate
 #: costs seconds); the direct Sobol' indices use 32 Saltelli base samples (256 runs per
 #: scenario) and the speed sweep steps 25 km/h. The sweep and the damper comparison run on 4
@@ -218,7 +220,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         dest="preset",
         action="store_const",
         const="quick",
-        help=f"reduced sample counts, < 15 min on 2 cores (default; ~{QUICK.runs()} runs)",
+        help=f"reduced sample counts, about 12 min on 2 cores (default; ~{QUICK.runs()} runs)",
     )
     size.add_argument(
         "--full",

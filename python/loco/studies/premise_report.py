@@ -81,7 +81,7 @@ def _plausible_lines(plausible_dir: Path) -> list[str]:
         for _, r in rows[rows["pair"] != "all pairs"].iterrows()
     )
     lines = [
-        f"- **Over plausible locomotives: {probability_note(fraction)}** Each is the default "
+        f"- **Over plausible locomotives:** {probability_note(fraction)} Each is the "
         "vehicle with every ranged input drawn from its range (a Latin hypercube) and one of the "
         f"low-conicity S_low pairs, on {meta['n_tracks']} tracks. Per pair: {per_pair}."
     ]
