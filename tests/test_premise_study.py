@@ -65,6 +65,6 @@ def test_bad_input_is_refused_before_any_run(tmp_path: Path) -> None:
         'source = "s" }\n',
         encoding="utf-8",
     )
-    with pytest.raises(loco.ParameterError, match="carbody.mass"):
+    with pytest.raises(loco.ParameterError, match=r"carbody\.mass"):
         ps.premise_study(None, tmp_path / "b", preset="tiny", ranges_file=ranges)
     assert not (tmp_path / "b").exists()

@@ -10,7 +10,12 @@ import pandas as pd
 from scipy import stats
 
 from loco.metrics import run_metric_names
-from loco.studies.fsd_comparison import JUDGED_BY, LIMIT_CYCLE_COLUMNS, STABILITY_FLAGS
+from loco.studies.fsd_comparison import (
+    CARBODY_CYCLE_COLUMNS,
+    JUDGED_BY,
+    LIMIT_CYCLE_COLUMNS,
+    STABILITY_FLAGS,
+)
 from loco.studies.report import StudyRecord, write_report
 from loco.studies.verdict import verdict, verdict_from_csv
 
@@ -36,7 +41,9 @@ def tracks_frame() -> pd.DataFrame:
                          "ayb_peak_lp": v if scenario == "S_high" else 0.5,
                          "ayb_en_unstable": flag, "ayb_gbt_unstable": 0.0,
                          "ayb_limit_cycle": 0.0, "ayb_cycle_hz": 6.0, "ayb_cycle_amplitude": 0.3,
-                         "ayb_en_rms": 0.2, "ayb_en_limit": 4.34})  # fmt: skip
+                         "ayb_en_rms": 0.2, "ayb_en_limit": 4.34,
+                         "ayc_limit_cycle": 0.0, "ayc_cycle_hz": 1.2,
+                         "ayc_cycle_amplitude": 0.05})  # fmt: skip
     return pd.DataFrame(rows)
 
 
@@ -120,6 +127,20 @@ def test_a_limit_cycle_is_called_hunting_within_or_beyond_the_limit() -> None:
     assert "Every scenario is held by: no damper." in "\n".join(result.markdown())
 
 
+def test_a_carbody_limit_cycle_on_low_conicity_is_named_and_not_held() -> None:
+    # YD1 on S_low: an excellent ride (W_y 1.5) but a sustained 1.1 Hz carbody sway on tracks 0
+    # and 4, the premise's carbody hunting: named, and S_low not held by it.
+    frame = tracks_frame()
+    yd1 = (frame.scenario == "S_low") & (frame.damper == "YD1") & frame.track.isin([0, 4])
+    frame.loc[yd1, ["ayc_limit_cycle", "ayc_cycle_hz", "ayc_cycle_amplitude"]] = [1.0, 1.1, 0.16]
+    low = verdict(frame).scenarios[0]
+    assert low.holds == {"YD1": False, "YD2": False, "FSD": True}
+    assert low.hunts["FSD"] is None
+    text = "\n".join(low.lines())
+    assert "YD1 carbody hunts (limit cycle 1.1 Hz, ±0.16 m/s², on 2 of 6 tracks)." in text
+    assert "EN 14363" not in text.split("YD1 carbody hunts")[1]
+
+
 def test_the_verdict_is_the_first_section_of_the_report(tmp_path: Path) -> None:
     section = verdict(tracks_frame()).markdown()
     report = write_report(
@@ -132,4 +153,5 @@ def test_the_verdict_is_the_first_section_of_the_report(tmp_path: Path) -> None:
 def test_the_columns_it_reads_are_the_cores_run_metrics() -> None:
     # The judging metrics and the instability flags by the core's names, so that a renamed
     # metric fails here and not as a missing column of a finished study.
-    assert {*JUDGED_BY.values(), *STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS} <= set(run_metric_names())
+    columns = {*JUDGED_BY.values(), *STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS, *CARBODY_CYCLE_COLUMNS}
+    assert columns <= set(run_metric_names())

@@ -37,6 +37,7 @@ from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.statistics import Ranking, mean_interval, rank
 
 __all__ = [
+    "CARBODY_CYCLE_COLUMNS",
     "CASES",
     "DAMPERS",
     "JUDGED_BY",
@@ -74,13 +75,21 @@ LIMIT_CYCLE_COLUMNS: tuple[str, ...] = (
     Metric.AYB_EN_RMS,
     Metric.AYB_EN_LIMIT,
 )
+#: The carbody's limit cycle (core run metrics: the flag, its frequency and amplitude): the
+#: carbody hunting of the study's premise, which the verdict names on S_low.
+CARBODY_CYCLE_COLUMNS: tuple[str, ...] = (
+    Metric.AYC_LIMIT_CYCLE,
+    Metric.AYC_CYCLE_HZ,
+    Metric.AYC_CYCLE_AMPLITUDE,
+)
 #: Fraction of the record the valves were closed (from the valve channels, not a core metric).
 VALVE_FRACTION = "valve_closed_fraction"
 #: Per-track columns of the comparison's tables: ``rms``, ``dominant_hz`` and ``psd_peak`` are the
 #: core's run metrics of the case's quantity (:data:`RMS_METRICS`, :data:`PEAK_METRICS`), then two
 #: run metrics under their own names, the valve fraction (:meth:`FsdComparison.values`) and the
 #: two bogie instability flags (0/1 per track, their mean the fraction of tracks flagged), then
-#: the limit-cycle columns (the report's verdict, :mod:`loco.studies.verdict`, reads both).
+#: the bogie frame's and the carbody's limit-cycle columns (the report's verdict,
+#: :mod:`loco.studies.verdict`, reads them).
 SUMMARY_COLUMNS: tuple[str, ...] = (
     "rms",
     "dominant_hz",
@@ -89,6 +98,7 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     VALVE_FRACTION,
     *STABILITY_FLAGS,
     *LIMIT_CYCLE_COLUMNS,
+    *CARBODY_CYCLE_COLUMNS,
 )
 
 

@@ -10,15 +10,17 @@ Per scenario (:data:`loco.studies.fsd_comparison.JUDGED_BY`: W_y on S_low, A_yb 
   the per-track log ratios and Holm's correction (:func:`loco.studies.statistics.rank`, the same
   test as the comparison stage's ``fsd_rankings.csv``);
 - which dampers *hold* it, on every track that finished: on S_low an excellent ride
-  (W_y below 2.75, the locomotive band of GB/T 5599-2019, ``loco.metrics``); on S_high no
+  (W_y below 2.75, the locomotive band of GB/T 5599-2019, ``loco.metrics``) and no sustained
+  limit cycle of the carbody (carbody hunting, the premise's failure); on S_high no
   instability flag of the bogie frame (EN 14363 sliding rms over its limit, or the GB/T 8 m/s²
   peaks in 6 cycles; metrics ``ayb_en_unstable``, ``ayb_gbt_unstable``) and no sustained limit
   cycle of the frame (:func:`loco.assessment.hunts`, the rule of the core's
   ``metrics::limit_cycle``).
   A damper whose bogie settles into a limit cycle *hunts*, whether or not the EN 14363 sliding
   rms exceeds its limit: the verdict names its frequency and amplitude and which side of the
-  limit it is on (:class:`Hunting`). A table without those columns (written by an older loco)
-  leaves the S_high criterion unjudged, and says so.
+  limit it is on (:class:`Hunting`); a carbody limit cycle is named the same way (no standard
+  sets a limit on it: its ride is what W_y judges). A table without those columns (written by an
+  older loco) leaves the criterion unjudged, and says so.
 """
 
 from __future__ import annotations
@@ -32,7 +34,12 @@ import pandas as pd
 
 from loco import _loco, assessment
 from loco.channels import Metric
-from loco.studies.fsd_comparison import JUDGED_BY, LIMIT_CYCLE_COLUMNS, STABILITY_FLAGS
+from loco.studies.fsd_comparison import (
+    CARBODY_CYCLE_COLUMNS,
+    JUDGED_BY,
+    LIMIT_CYCLE_COLUMNS,
+    STABILITY_FLAGS,
+)
 from loco.studies.statistics import ALPHA, Ranking, rank
 
 __all__ = [
@@ -47,7 +54,8 @@ __all__ = [
 
 #: The criterion each scenario is held by, in words.
 HOLD_CRITERIA: dict[str, str] = {
-    "S_low": "an excellent ride, W_y < 2.75 (GB/T 5599-2019, locomotive), on every track",
+    "S_low": "an excellent ride, W_y < 2.75 (GB/T 5599-2019, locomotive), and no sustained "
+    "limit cycle of the carbody on any track",
     "S_high": "no bogie instability flag (EN 14363 sliding rms, GB/T peaks) and no sustained "
     "limit cycle of the bogie frame on any track",
 }
@@ -55,12 +63,13 @@ HOLD_CRITERIA: dict[str, str] = {
 
 @dataclass(frozen=True)
 class Hunting:
-    """The tracks on which one damper's bogie frame settled into a limit cycle.
+    """The tracks on which one damper's bogie frame (or carbody, ``body``) settled into a limit
+    cycle.
 
-    ``frequency`` (Hz) and ``amplitude`` (m/s², a cycle of ± this; the band-passed frame
-    acceleration's mean cycle peak) are the means over those tracks; ``beyond_en`` whether the
-    EN 14363 sliding rms exceeded its limit on any of them, ``en_rms`` the largest sliding rms
-    there and ``en_limit`` the limit (m/s²)."""
+    ``frequency`` (Hz) and ``amplitude`` (m/s², a cycle of ± this; the band-passed acceleration's
+    mean cycle peak) are the means over those tracks; for the bogie frame ``beyond_en`` says
+    whether the EN 14363 sliding rms exceeded its limit on any of them, ``en_rms`` the largest
+    sliding rms there and ``en_limit`` the limit (m/s²; NaN for the carbody)."""
 
     tracks: int
     of: int
@@ -69,32 +78,45 @@ class Hunting:
     en_rms: float
     en_limit: float
     beyond_en: bool
+    body: str = "bogie frame"
 
     def statement(self) -> str:
-        """``hunts (limit cycle 3.9 Hz, ±7.5 m/s² …), within the EN 14363 limit`` and so on."""
+        """``hunts (limit cycle 3.9 Hz, ±7.5 m/s² …), within the EN 14363 limit`` and so on;
+        for the carbody ``carbody hunts (limit cycle 1.1 Hz, ±0.16 m/s² …)``."""
+        what = "hunts" if self.body == "bogie frame" else f"{self.body} hunts"
+        size = f"{self.amplitude:.1f}" if self.amplitude >= 1 else f"{self.amplitude:.2f}"
+        cycle = (
+            f"{what} (limit cycle {self.frequency:.1f} Hz, ±{size} m/s², on "
+            f"{self.tracks} of {self.of} tracks)"
+        )
+        if self.body != "bogie frame":
+            return cycle
         side = "beyond" if self.beyond_en else "within"
         return (
-            f"hunts (limit cycle {self.frequency:.1f} Hz, ±{self.amplitude:.1f} m/s², on "
-            f"{self.tracks} of {self.of} tracks), {side} the EN 14363 limit (sliding rms up to "
+            f"{cycle}, {side} the EN 14363 limit (sliding rms up to "
             f"{self.en_rms:.2f} against {self.en_limit:.2f} m/s²)"
         )
 
 
-def hunting(frame: pd.DataFrame) -> Hunting | None:
-    """The limit cycles in the finished rows of one damper's per-track table (``None``: on no
-    track; columns :data:`loco.studies.fsd_comparison.LIMIT_CYCLE_COLUMNS`)."""
+def hunting(frame: pd.DataFrame, body: str = "bogie frame") -> Hunting | None:
+    """The limit cycles of ``body`` (``"bogie frame"``, ``"carbody"``) in the finished rows of one
+    damper's per-track table (``None``: on no track; columns
+    :data:`loco.studies.fsd_comparison.LIMIT_CYCLE_COLUMNS` or ``CARBODY_CYCLE_COLUMNS``)."""
     done = frame[frame["status"] == 0]
-    cycling = done[[assessment.hunts(row) is True for _, row in done.iterrows()]]
+    cycling = done[[assessment.hunts(row, body) is True for _, row in done.iterrows()]]
     if cycling.empty:
         return None
+    _, hz, amplitude = assessment.LIMIT_CYCLES[body]
+    bogie = body == "bogie frame"
     return Hunting(
         tracks=len(cycling),
         of=len(done),
-        frequency=float(cycling[Metric.AYB_CYCLE_HZ].mean()),
-        amplitude=float(cycling[Metric.AYB_CYCLE_AMPLITUDE].mean()),
-        en_rms=float(cycling[Metric.AYB_EN_RMS].max()),
-        en_limit=float(cycling[Metric.AYB_EN_LIMIT].max()),
-        beyond_en=bool((cycling[Metric.AYB_EN_UNSTABLE] == 1.0).any()),
+        frequency=float(cycling[hz].mean()),
+        amplitude=float(cycling[amplitude].mean()),
+        en_rms=float(cycling[Metric.AYB_EN_RMS].max()) if bogie else float("nan"),
+        en_limit=float(cycling[Metric.AYB_EN_LIMIT].max()) if bogie else float("nan"),
+        beyond_en=bool((cycling[Metric.AYB_EN_UNSTABLE] == 1.0).any()) if bogie else False,
+        body=body,
     )
 
 
@@ -200,8 +222,13 @@ def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
     if done.empty:
         return False
     if scenario == "S_low":
+        if not all(c in done.columns for c in CARBODY_CYCLE_COLUMNS):
+            return None
         ratings = [_loco.locomotive_ride_rating(float(w)) for w in done[JUDGED_BY["S_low"]]]
-        return all(r == "excellent" for r in ratings)
+        cycling = [assessment.hunts(row, "carbody") for _, row in done.iterrows()]
+        if None in cycling:
+            return None
+        return all(r == "excellent" for r in ratings) and not any(cycling)
     if scenario == "S_high":
         columns = [*STABILITY_FLAGS, *LIMIT_CYCLE_COLUMNS]
         if not all(f in done.columns for f in columns):
@@ -215,10 +242,15 @@ def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
 
 
 def _hunts(scenario: str, frame: pd.DataFrame) -> Hunting | None:
-    """The limit cycles of one (scenario, damper), on S_high where the bogie frame is judged."""
-    if scenario != "S_high" or not all(c in frame.columns for c in LIMIT_CYCLE_COLUMNS):
+    """The limit cycles of one (scenario, damper): of the bogie frame on S_high, of the carbody
+    on S_low."""
+    body, columns = {
+        "S_high": ("bogie frame", LIMIT_CYCLE_COLUMNS),
+        "S_low": ("carbody", CARBODY_CYCLE_COLUMNS),
+    }.get(scenario, ("", ()))
+    if not columns or not all(c in frame.columns for c in columns):
         return None
-    return hunting(frame)
+    return hunting(frame, body)
 
 
 def verdict(tracks: pd.DataFrame, judged_by: Mapping[str, str] = JUDGED_BY) -> Verdict:
