@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -84,3 +85,31 @@ def test_bad_input_is_a_parameter_error_naming_it(
 ) -> None:
     with pytest.raises(loco.ParameterError, match="vehicle_class"):
         assess(curved, vehicle_class="tram")
+
+
+def test_the_ride_characteristics_band_pass_and_read_a_sine_by_hand() -> None:
+    # A 2 Hz sine of 0.8 m/s² plus a 0.1 Hz drift and g: the 0.4–10 Hz band keeps the sine
+    # (its percentile magnitude about the amplitude, its rms amplitude/√2) and drops the rest.
+    from loco.studies import en14363
+
+    fs = 500.0
+    t = np.arange(0.0, 30.0, 1.0 / fs)
+    signal = 0.8 * np.sin(2 * np.pi * 2.0 * t) + 0.5 * np.sin(2 * np.pi * 0.1 * t) + 9.81
+    filtered = en14363.ride_filtered(signal, fs)
+    peak, rms = en14363.ride_values(filtered[int(5 * fs) : int(25 * fs)])
+    assert peak == pytest.approx(0.8, rel=0.01)
+    assert rms == pytest.approx(0.8 / math.sqrt(2.0), rel=0.01)
+    assert all(math.isnan(v) for v in en14363.ride_values(np.array([])))
+
+
+def test_the_ride_characteristics_of_a_run_are_assessed_per_zone(
+    curved: loco.SimulationResult,
+) -> None:
+    found = assess(curved, curve=CURVE)
+    for zone in ("straight 1", f"curve R = {RADIUS:g} m"):
+        for key, limit in (("ydd_max", 3.0), ("ydd_rms", 0.5), ("zdd_max", 3.0), ("zdd_rms", 1.0)):
+            q = found.get(key, zone)
+            assert q.limit == limit and q.unit == "m/s²" and q.secondary
+            # Perfect track: the carbody barely moves in the ride band.
+            assert 0.0 <= q.value < 0.2 * limit and q.passed is True, (key, zone, q.value)
+        assert found.get("ydd_max", zone).value >= found.get("ydd_rms", zone).value

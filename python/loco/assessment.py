@@ -34,6 +34,7 @@ import numpy as np
 import pandas as pd
 
 from loco import _loco, metrics
+from loco.assessment_zones import Zone, wheelset_offsets, zones
 from loco.channels import ChannelKind, Metric
 from loco.simulation import SimulationResult
 from loco.studies import en14363
@@ -79,25 +80,15 @@ SOURCES: dict[str, str] = {
     "Yqst": _SECONDARY + ", not confirmed by a searched text (the TSI LOC&PAS sets a Y_qst limit)",
     "Qqst": _SECONDARY + ", not confirmed by a searched text",
     "yqst": _SECONDARY + ", not confirmed by a searched text",
+    **{
+        k: "normal method, 0.4–10 Hz, as recalled from the literature quoting EN 14363 / UIC 518; "
+        "not confirmed by a searched text"
+        for k in ("ydd_max", "ydd_rms", "zdd_max", "zdd_rms")
+    },
     "stability": "EN 14363:2016 simplified method, (12 − m⁺/5)/2 (" + _SECONDARY + ")",
     "limit_cycle": "loco's limit-cycle rule (the core's metrics::limit_cycle); no standard limit",
     "nmv": "EN 12299 N_MV (the core's metrics::comfort); its comfort scale " + _SECONDARY,
 }
-
-
-@dataclass(frozen=True)
-class Zone:
-    """A stretch of track assessed on its own: ``name``, its start and end (m along the track,
-    s = 0 where the leading wheelset starts the alignment) and radius (m; inf: straight)."""
-
-    name: str
-    start: float
-    end: float
-    radius: float
-
-    @property
-    def curved(self) -> bool:
-        return math.isfinite(self.radius)
 
 
 @dataclass(frozen=True)
@@ -159,39 +150,6 @@ class Assessment:
         fig.savefig(out, dpi=110)
         plt.close(fig)
         return out
-
-
-def wheelset_offsets(vehicle: Locomotive) -> list[float]:
-    """How far each wheelset runs behind the leading one, m (0, 2·b, 2·a, 2·a + 2·b with a the
-    half bogie distance and b the half wheelbase)."""
-    a = vehicle["layout.bogie_half_distance"]
-    b = vehicle["layout.half_wheelbase"]
-    return [0.0, 2 * b, 2 * a, 2 * a + 2 * b]
-
-
-def zones(curve: Sequence[Mapping[str, Any]] | str | Path | None, end: float) -> list[Zone]:
-    """The zones of a designed alignment (its sections as ``loco.Scenario(curve=…)`` takes them,
-    or a sections CSV): each straight and each circular curve, transitions left out. ``None``:
-    one straight zone up to ``end`` (m)."""
-    if curve is None:
-        return [Zone("straight track", 0.0, end, math.inf)]
-    rows: list[dict[str, Any]] = (
-        [{str(k): v for k, v in r.items()} for r in pd.read_csv(curve).to_dict("records")]
-        if isinstance(curve, (str, Path))
-        else [dict(s) for s in curve]
-    )
-    out: list[Zone] = []
-    start = 0.0
-    for i, section in enumerate(rows):
-        length = float(section["length_m"])
-        kind = section["kind"]
-        if kind == "straight":
-            out.append(Zone(f"straight {i + 1}", start, start + length, math.inf))
-        elif kind == "curve":
-            radius = float(section["radius_m"])
-            out.append(Zone(f"curve R = {radius:g} m", start, start + length, radius))
-        start += length
-    return out
 
 
 def _row(
@@ -270,6 +228,22 @@ def _comfort(result: SimulationResult, inside: np.ndarray, y: str, z: str) -> tu
     return nmv, f"{label} (EN 12299 scale)"
 
 
+def _ride(filtered: dict[str, list[np.ndarray]], inside: np.ndarray, zone: str) -> list[Quantity]:
+    """The normal method's ride characteristics of one zone: ÿ* and z̈* (band-passed floor
+    accelerometers), their maximum (the larger percentile magnitude) and rms, the worst point."""
+    out = []
+    for axis, symbol in (("y", "ÿ*"), ("z", "z̈*")):
+        values = [en14363.ride_values(f[inside]) for f in filtered[axis]]
+        if not values:
+            continue
+        peak, rms = (max((v[k] for v in values), default=math.nan) for k in range(2))
+        for kind, value, what in (("max", peak, "max (0.15/99.85 %)"), ("rms", rms, "rms")):
+            key = f"{axis}dd_{kind}"
+            name = f"{symbol} {what}, carbody floor, 0.4–10 Hz"
+            out.append(_row(key, name, zone, value, en14363.RIDE_LIMITS[key], "m/s²"))
+    return out
+
+
 def assess(
     result: SimulationResult,
     vehicle: Locomotive | None = None,
@@ -304,6 +278,11 @@ def assess(
     floor_z = [n for n in floor if "_z_" in n]
     # The carbody's centre runs midway between the bogies' pivots.
     body_lead = lead - 0.5 * (offsets[1] + offsets[3])
+    # The ride characteristics' band pass over the whole record (no edge effects at the zones).
+    filtered = {
+        axis: [en14363.ride_filtered(result.channel(n), result.sampling_rate) for n in names]
+        for axis, names in (("y", floor_y), ("z", floor_z))
+    }
     out: list[Quantity] = []
     for zone in zones(curve, float(lead[-1])):
         z = zone.name
@@ -373,6 +352,7 @@ def assess(
                     "m/s²",
                 ),
             ]
+        out += _ride(filtered, inside_body, z)
         if floor_y and floor_z:
             nmv, label = _comfort(result, inside_body, floor_y[0], floor_z[0])
             out.append(

@@ -49,6 +49,13 @@ standard's own text was not among them, so its clause numbers are not cited here
   ÿ*_qst at 50 %, the GENSYS notes above); like α they are secondary and said so wherever
   they are shown (:mod:`loco.assessment`).
 
+- Ride characteristics of the normal method: the carbody floor accelerations ÿ* (lateral) and
+  z̈* (vertical) **band-passed 0.4–10 Hz**, assessed per section by the larger magnitude of their
+  **0.15 % and 99.85 % percentiles** and by their **rms** (the GENSYS notes' processing). Limits
+  ``ÿ*_max 3.0``, ``s(ÿ*) 0.5``, ``z̈*_max 3.0`` and ``s(z̈*) 1.0 m/s²`` for locomotives and
+  passenger vehicles: the values as recalled from the vehicle-dynamics literature quoting
+  EN 14363 / UIC 518, **not confirmed** by a searched text.
+
 EN 14363:2016 supersedes EN 14363:2005 and EN 15686/15687:2010 (BS EN 14363:2016's national
 foreword); the 2 m / 0.5 m / 0.15 % / 99.85 % / 50 % processing above is as the GENSYS notes give
 it for UIC 518 and EN 14363.
@@ -72,6 +79,8 @@ __all__ = [
     "Q_MAX_CAPS",
     "Q_MAX_CAP_ABOVE",
     "Q_PERCENTILE",
+    "RIDE_BAND_HZ",
+    "RIDE_LIMITS",
     "SAMPLE_SPACING",
     "WINDOW",
     "YDD_QST_LIMIT",
@@ -80,6 +89,8 @@ __all__ = [
     "SectionValues",
     "q_max_limit",
     "quasi_static_assessed",
+    "ride_filtered",
+    "ride_values",
     "section_bounds",
     "section_values",
     "sliding_mean",
@@ -115,6 +126,16 @@ QQST_LIMIT = 145e3
 #: Quasi-static lateral acceleration limit in the carbody, m/s² (as commonly quoted; not
 #: confirmed, module docstring).
 YDD_QST_LIMIT = 1.5
+#: Band of the ride characteristics, Hz (GENSYS notes: 0.4–10 Hz).
+RIDE_BAND_HZ = (0.4, 10.0)
+#: Ride characteristics' limits, m/s², for locomotives and passenger vehicles: the maximum
+#: (percentile) and rms of ÿ* and z̈* (as recalled; not confirmed, module docstring).
+RIDE_LIMITS: dict[str, float] = {
+    "ydd_max": 3.0,
+    "ydd_rms": 0.5,
+    "zdd_max": 3.0,
+    "zdd_rms": 1.0,
+}
 #: Percentile of the maximum wheel force Q_max, % (GENSYS notes: F2 = 99.85 %).
 Q_PERCENTILE = 99.85
 #: The cap of Q_max's limit by speed: (highest speed in m/s, cap in N), in increasing speed; above
@@ -234,3 +255,25 @@ def section_bounds(sections: Sequence[float]) -> list[tuple[float, float]]:
     ends = np.cumsum(sections)
     starts = np.concatenate([[0.0], ends[:-1]])
     return [(float(a), float(b)) for a, b in zip(starts, ends, strict=True)]
+
+
+def ride_filtered(signal: FloatArray, sampling_rate: float) -> FloatArray:
+    """``signal`` (m/s², sampled at ``sampling_rate`` Hz) band-passed over
+    :data:`RIDE_BAND_HZ` by a 4th-order Butterworth filter run forward and back (no phase lag;
+    the vertical accelerometer's g falls out with the band's lower edge)."""
+    from scipy.signal import butter, sosfiltfilt
+
+    sos = butter(4, RIDE_BAND_HZ, btype="bandpass", fs=sampling_rate, output="sos")
+    if signal.size <= 27:  # sosfiltfilt's default padding needs a longer record
+        return np.full(signal.shape, np.nan)
+    out: FloatArray = sosfiltfilt(sos, signal)
+    return out
+
+
+def ride_values(filtered: FloatArray) -> tuple[float, float]:
+    """The ride characteristics of one section of a :func:`ride_filtered` signal: the larger
+    magnitude of its :data:`PERCENTILES` and its rms (m/s²; NaN for an empty section)."""
+    if filtered.size == 0 or not np.isfinite(filtered).all():
+        return float("nan"), float("nan")
+    low, high = np.percentile(filtered, PERCENTILES)
+    return max(abs(float(low)), abs(float(high))), float(np.sqrt(np.mean(filtered**2)))
