@@ -187,6 +187,23 @@ class Verdict:
     """The verdict of every judged scenario."""
 
     scenarios: tuple[ScenarioVerdict, ...]
+    #: The EN 14363 stability limit of the runs, m/s² (None: not in the table).
+    en_limit: float | None = None
+
+    def judged_by(self) -> list[str]:
+        """How the bogie frames are judged: the limit and the bogie mass m⁺ it comes from."""
+        if self.en_limit is None or not np.isfinite(self.en_limit):
+            return []
+        bogie_mass = 5.0 * (12.0 - 2.0 * self.en_limit)
+        return [
+            "",
+            "The bogie frames are judged by EN 14363's simplified method, the sliding rms of the "
+            f"frame's lateral acceleration against (12 − m⁺/5)/2 = {self.en_limit:.2f} m/s² with "
+            f"the bogie mass m⁺ = {bogie_mass:.1f} t (frame, wheelsets and the drive the bogie "
+            "carries; docs/assessment.md), and by the limit-cycle rule: a bogie (or carbody) "
+            "that settles into a sustained limit cycle hunts, within or beyond that limit, and "
+            "does not hold its scenario.",
+        ]
 
     def holding_all(self) -> list[str]:
         """Dampers that hold every scenario (empty when one is not judged)."""
@@ -213,7 +230,7 @@ class Verdict:
                 "",
                 "Every scenario is held by: " + (", ".join(both) if both else "no damper") + ".",
             ]
-        return [*lines, ""]
+        return [*lines, *self.judged_by(), ""]
 
 
 def _holds(scenario: str, frame: pd.DataFrame) -> bool | None:
@@ -277,7 +294,12 @@ def verdict(tracks: pd.DataFrame, judged_by: Mapping[str, str] = JUDGED_BY) -> V
                 hunts={d: _hunts(scenario, f) for d, f in per.items()},
             )
         )
-    return Verdict(tuple(out))
+    limits = (
+        tracks.loc[tracks["status"] == 0, Metric.AYB_EN_LIMIT]
+        if Metric.AYB_EN_LIMIT in tracks.columns
+        else pd.Series(dtype=float)
+    )
+    return Verdict(tuple(out), float(limits.max()) if len(limits) else None)
 
 
 def verdict_from_csv(path: str | Path) -> Verdict:
