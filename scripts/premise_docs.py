@@ -161,6 +161,12 @@ def _fsd_reading(fsd: pd.DataFrame) -> list[str]:
             f"{low['median_ratio']:.2f} times {low['better_fixed']}'s and its S_high one "
             f"{high['median_ratio']:.2f} times {high['better_fixed']}'s: "
             + ("the best of both." if both else "not the best of both.")
+            + (
+                f" Its valves were open a median {low['valve_open_median']:.0%} of the S_low "
+                "record: where they stay closed it is the high damping."
+                if pd.notna(low.get("valve_open_median", float("nan")))
+                else ""
+            )
         )
     return [*out, ""] if out else []
 
@@ -241,6 +247,30 @@ def plausible_section() -> list[str]:
     return lines
 
 
+def advantage_section() -> list[str]:
+    path = RESULTS / "plausible_advantage.csv"
+    if not path.exists():
+        return []
+    table = pd.read_csv(path)
+    if table.empty:
+        return []
+    lines = [
+        "Which inputs decide the FSDs' advantage: per FSD and scenario, a random forest of",
+        "log(FSD metric / better fixed damper's) on the inputs and the pair, scored on the 25 %",
+        "of the locomotives it was not fitted on (R²; about zero or below: the inputs do not",
+        "explain it, and its importances are noise), and its three largest permutation",
+        "importances (the drop of R²):",
+        "",
+        "| damper | scenario | locomotives | held-out R² | largest importances |",
+        "|---|---|---|---|---|",
+    ]
+    for (damper, scenario), g in table.groupby(["damper", "scenario"], sort=False):
+        top = ", ".join(f"`{r['input']}` ({r['importance']:.3f})" for _, r in g.head(3).iterrows())
+        first = g.iloc[0]
+        lines.append(f"| {damper} | {scenario} | {int(first['n'])} | {first['r2']:.2f} | {top} |")
+    return [*lines, ""]
+
+
 def render() -> str:
     lines = [
         "# The premise: where it holds, and which estimates decide it",
@@ -255,6 +285,7 @@ def render() -> str:
         "",
         *premise_section(),
         *plausible_section(),
+        *advantage_section(),
         *morris_section(),
         "## Run it",
         "",

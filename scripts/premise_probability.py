@@ -5,8 +5,9 @@ it, and which inputs decide it.
 
 Writes into ``--out`` (default ``docs/screening``): ``plausible.csv`` (inputs, pair, the judging
 metric of every case, whether the premise holds), ``plausible_fraction.csv``,
-``plausible_fsd.csv``, ``plausible_importance.csv`` and ``plausible.json`` (settings, the
-classifier's held-out accuracy, wall and CPU time). ``--store DIR`` keeps finished runs there
+``plausible_fsd.csv``, ``plausible_importance.csv``, ``plausible_advantage.csv`` (which inputs
+decide each FSD's advantage) and ``plausible.json`` (settings, the classifier's held-out accuracy,
+wall and CPU time). ``--store DIR`` keeps finished runs there
 (a rerun after an interruption does only what is missing).
 Usage: ``python scripts/premise_probability.py [--n 200] [--tracks 2] [--store DIR]``.
 """
@@ -20,6 +21,7 @@ import time
 from pathlib import Path
 
 from loco.studies import premise_probability as pp
+from loco.studies.premise_sensitivity import advantage_sensitivity, premise_sensitivity
 
 
 def main() -> None:
@@ -45,7 +47,10 @@ def main() -> None:
         args.out / "plausible_fraction.csv", index=False, float_format="%.4g"
     )
     summary["fsd"].to_csv(args.out / "plausible_fsd.csv", index=False, float_format="%.4g")
-    sens = pp.premise_sensitivity(result, seed=args.seed)
+    sens = premise_sensitivity(result, seed=args.seed)
+    advantage_sensitivity(result, seed=args.seed).to_csv(
+        args.out / "plausible_advantage.csv", index=False, float_format="%.4g"
+    )
     sens["importance"].to_csv(
         args.out / "plausible_importance.csv", index=False, float_format="%.4g"
     )

@@ -21,9 +21,8 @@ twice that with YD2 (low damping lets the bogies hunt).
 an executor and a store make it a resumable Dask campaign); :func:`summarise` gives the fraction
 with the premise and its 95 % interval, per pair and pooled; the FSD's and FSD-H's A_yc and A_yb
 against the better fixed damper inside that set, and how much of the S_low record their valves
-were open (track 0); and which inputs decide the premise
-(:func:`premise_sensitivity`: a random-forest classifier validated on held-out locomotives, its
-permutation importances).
+were open (track 0). Which inputs decide the premise and the FSDs' advantage is
+:mod:`loco.studies.premise_sensitivity`'s (random forests validated on held-out locomotives).
 """
 
 from __future__ import annotations
@@ -51,7 +50,6 @@ __all__ = [
     "Plausible",
     "from_frame",
     "premise_holds",
-    "premise_sensitivity",
     "run_plausible",
     "sample_locomotives",
     "summarise",
@@ -313,51 +311,6 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
         ],
     )
     return {"fraction": fraction, "fsd": fsd}
-
-
-def premise_sensitivity(
-    result: Plausible, seed: int = 0, test_share: float = 0.25
-) -> dict[str, Any]:
-    """Which inputs decide the premise: a random-forest classifier (scikit-learn, 300 trees)
-    of "premise holds" on the inputs and the S_low pair (one-hot), fitted on
-    ``1 − test_share`` of the locomotives and scored on the rest (accuracy, and the share of
-    the majority class it must beat); then the permutation importance of each input on the
-    held-out set (the drop of accuracy when the input is shuffled, mean of 20 repeats). A
-    classifier that does no better than the majority class explains nothing, and its
-    importances say so by being about zero."""
-    from sklearn.ensemble import RandomForestClassifier
-    from sklearn.inspection import permutation_importance
-    from sklearn.model_selection import train_test_split
-
-    y = premise_holds(result.metrics).to_numpy()
-    x = pd.concat(
-        [result.inputs, pd.get_dummies(pd.Series(result.pairs, name="pair"), dtype=float)], axis=1
-    )
-    minority = int(min(y.sum(), (~y).sum()))
-    if minority < 2 or round(len(y) * test_share) < 2:
-        # Too few locomotives of one class to fit on some and score on others: no classifier.
-        majority = float(max(y.mean(), 1 - y.mean())) if len(y) else math.nan
-        empty = pd.DataFrame(columns=["input", "importance", "std"])
-        return {"accuracy": math.nan, "majority": majority, "importance": empty}
-    x_fit, x_test, y_fit, y_test = train_test_split(
-        x, y, test_size=test_share, random_state=seed, stratify=y
-    )
-    model = RandomForestClassifier(n_estimators=300, random_state=seed, n_jobs=1).fit(x_fit, y_fit)
-    accuracy = float(model.score(x_test, y_test))
-    majority = float(max(y_test.mean(), 1 - y_test.mean()))
-    imp = permutation_importance(model, x_test, y_test, n_repeats=20, random_state=seed, n_jobs=1)
-    importance = (
-        pd.DataFrame(
-            {
-                "input": list(x.columns),
-                "importance": imp.importances_mean,
-                "std": imp.importances_std,
-            }
-        )
-        .sort_values("importance", ascending=False)
-        .reset_index(drop=True)
-    )
-    return {"accuracy": accuracy, "majority": majority, "importance": importance}
 
 
 def to_frame(result: Plausible) -> pd.DataFrame:

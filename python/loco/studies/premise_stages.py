@@ -34,6 +34,7 @@ from loco.executors import task_pool
 from loco.studies import premise_map, premise_probability
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
+from loco.studies.premise_sensitivity import advantage_sensitivity, premise_sensitivity
 from loco.studies.report import StudyRecord, save_json
 from loco.studies.stages import DataFile, Demand, Runtime, Stage
 
@@ -232,17 +233,20 @@ class PlausibleStage(Stage):
             ranges_file=None if self.ranges is None else self.ranges.path,
         )
         summary = pp.summarise(result)
-        sens = pp.premise_sensitivity(result, seed=self.seed)
+        sens = premise_sensitivity(result, seed=self.seed)
+        advantage = advantage_sensitivity(result, seed=self.seed)
         paths = {
             "plausible": out / "plausible.csv",
             "fraction": out / "plausible_fraction.csv",
             "fsd": out / "plausible_fsd.csv",
             "importance": out / "plausible_importance.csv",
+            "advantage": out / "plausible_advantage.csv",
         }
         pp.to_frame(result).to_csv(paths["plausible"], index=False, float_format="%.6g")
         summary["fraction"].to_csv(paths["fraction"], index=False, float_format="%.4g")
         summary["fsd"].to_csv(paths["fsd"], index=False, float_format="%.4g")
         sens["importance"].to_csv(paths["importance"], index=False, float_format="%.4g")
+        advantage.to_csv(paths["advantage"], index=False, float_format="%.4g")
         meta = {
             **result.settings,
             "failed_runs": result.failed,
