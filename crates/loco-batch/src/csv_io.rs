@@ -5,8 +5,8 @@
 
 use loco_core::batch::BatchOutput;
 use loco_core::csv_table::CsvTable;
-use loco_core::vehicle::run::RunOutput;
-use loco_core::vehicle::run_statistics::RunStatistics;
+use loco_core::vehicle::output::run::RunOutput;
+use loco_core::vehicle::system::run_statistics::RunStatistics;
 use loco_core::{LocoError, Result};
 use std::fmt::Write as _;
 use std::path::Path;

@@ -2,8 +2,8 @@
 //! samples flagged without stopping the batch, input errors naming the row and column.
 
 use loco_core::batch::{run_batch, BatchMonitor, BatchSpec, SampleStatus};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{simulate, Scenario};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::scenario::{simulate, Scenario};
 use loco_core::LocoError;
 use std::sync::atomic::Ordering;
 

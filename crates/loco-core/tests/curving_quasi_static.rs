@@ -6,13 +6,13 @@
 use loco_core::contact::builtin::conical::conical_pair;
 use loco_core::track::CurveDirection;
 use loco_core::track::RailIrregularity;
-use loco_core::vehicle::elements::BodyStates;
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{build_wheel_rail, Scenario};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_channels::{wheelset_channel, WheelsetQuantity};
-use loco_core::vehicle::wheel_rail::{ContactMode, WheelForces, WheelRail};
+use loco_core::vehicle::model::elements::BodyStates;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::wheel_channels::{wheelset_channel, WheelsetQuantity};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::wheel_rail::{ContactMode, WheelForces, WheelRail};
+use loco_core::vehicle::scenarios::scenario::{build_wheel_rail, Scenario};
 
 mod curve_support;
 use curve_support::cone::{half_distance, research, run_cone, run_cone_towards, G};

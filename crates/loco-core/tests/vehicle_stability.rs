@@ -3,11 +3,13 @@
 //! speed ramp-down against the linear one (subcritical hunting).
 
 use loco_core::dampers::Damper;
-use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
-use loco_core::vehicle::linear_critical_speed::{linear_critical_speed, LinearSearch};
-use loco_core::vehicle::linearise::{least_damped, LinearisationSettings};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{linearised, simulate, Scenario, TrackSpec};
+use loco_core::vehicle::analysis::linear_critical_speed::{linear_critical_speed, LinearSearch};
+use loco_core::vehicle::analysis::linearise::{least_damped, LinearisationSettings};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::critical_speed::{
+    nonlinear_critical_speed, RampOutcome, RampSettings,
+};
+use loco_core::vehicle::scenarios::scenario::{linearised, simulate, Scenario, TrackSpec};
 
 /// S_high with YD1 on perfect track at `speed` (m/s) for `seconds` (s), every wheelset
 /// displaced laterally by `disturbance` (m) at the start.

@@ -376,9 +376,7 @@ pub fn min_radius_of(max_radius_difference: f64, r0: f64, b: f64) -> f64 {
     2.0 * b * r0 / max_radius_difference
 }
 
-#[path = "design_at.rs"]
 mod at;
 
 #[cfg(test)]
-#[path = "design_tests.rs"]
 mod tests;

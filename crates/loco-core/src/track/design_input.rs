@@ -305,7 +305,7 @@ mod tests {
 
 #[cfg(test)]
 mod study_file_tests {
-    use crate::vehicle::scenario_settings::ScenarioSettings;
+    use crate::vehicle::scenarios::scenario_settings::ScenarioSettings;
     use std::path::Path;
 
     #[test]
