@@ -11,7 +11,7 @@ use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion};
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
 use loco_core::vehicle::model::structure::VehicleStructure;
-use loco_core::vehicle::output::run::{Recorded, RunSettings, EXPONENTIAL_STEP, REFERENCE_STEP};
+use loco_core::vehicle::output::run::{Recorded, RunSettings};
 use loco_core::vehicle::params::parameters::ParameterSet;
 use loco_core::vehicle::rail_contact::creep_model::CreepModel;
 use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
@@ -21,6 +21,7 @@ use loco_core::vehicle::scenarios::scenario::{
 use loco_core::vehicle::system::simulation::VehicleSystem;
 use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::time::integrator::{Integrator, OdeSystem};
+use loco_core::vehicle::time::integrator::{EXPONENTIAL_STEP, REFERENCE_STEP};
 use std::hint::black_box;
 use std::sync::Arc;
 

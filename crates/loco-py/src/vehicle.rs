@@ -16,7 +16,7 @@ use loco_core::vehicle::model::layout::{
     body_names as core_body_names, dof_names as core_dof_names,
 };
 use loco_core::vehicle::output::run::RunOutput;
-use loco_core::vehicle::output::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
+use loco_core::vehicle::output::run::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 use loco_core::vehicle::output::wheel_channels::{
     wheel_channel_table, wheelset_channel_table, FLANGE_CONTACT_ANGLE,
 };

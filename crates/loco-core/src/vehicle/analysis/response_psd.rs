@@ -32,7 +32,7 @@ use crate::vehicle::analysis::frequency_response::{
 use crate::vehicle::analysis::linear_critical_speed::LinearSearch;
 use crate::vehicle::analysis::linearise::least_damped;
 use crate::vehicle::analysis::track_input::TrackInputModel;
-use crate::vehicle::output::run_metrics::CARBODY_LATERAL;
+use crate::vehicle::output::run::CARBODY_LATERAL;
 use std::sync::atomic::AtomicBool;
 
 /// Settings of the linear stochastic response.

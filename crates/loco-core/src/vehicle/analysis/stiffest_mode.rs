@@ -18,11 +18,11 @@ use crate::dampers::{Damper, MAX_RATE_STEP};
 use crate::error::{LocoError, Result};
 use crate::vehicle::analysis::creep_decay::{creep_decay_rate, CREEP_RESOLVED};
 use crate::vehicle::model::layout::{dof_names, N_DOF};
-use crate::vehicle::output::run::REFERENCE_STEP;
 use crate::vehicle::params::suspects::with_suspects;
 use crate::vehicle::system::simulation::VehicleSystem;
 use crate::vehicle::system::statics::{static_equilibrium, Equilibrium, StaticsSettings};
 use crate::vehicle::time::integrator::Integrator;
+use crate::vehicle::time::integrator::REFERENCE_STEP;
 use crate::vehicle::time::stiff_linear_part::gearbox_bearings;
 use nalgebra::{DMatrix, DVector};
 

@@ -8,24 +8,24 @@ use crate::error::{check_non_negative, check_positive, LocoError, Result};
 use crate::vehicle::model::structure::VehicleStructure;
 use crate::vehicle::output::channel_set::ChannelSet;
 use crate::vehicle::output::long_step_range::LongStepRange;
-use crate::vehicle::output::run_metrics::METRIC_CHANNELS;
 use crate::vehicle::system::damper_elements::decaying_states;
 use crate::vehicle::system::simulation::VehicleSystem;
 use crate::vehicle::time::decaying_states::DecayingStates;
 use crate::vehicle::time::exponential_rk4::ExponentialRk4;
-use crate::vehicle::time::integrator::{Integrator, OdeSystem, Rk4Workspace};
+use crate::vehicle::time::integrator::{Integrator, OdeSystem, Rk4Workspace, REFERENCE_STEP};
 use crate::vehicle::time::stiff_linear_part::{gearbox_bearings, StiffLinearPart};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
-/// The reference step of the classical RK4 ([`Integrator::Rk4`]), s: the convergence study's
-/// (`scripts/convergence_study.py`), against which the exponential scheme is checked.
-pub const REFERENCE_STEP: f64 = 1e-3;
+/// Channel of the carbody floor lateral acceleration used for W_y and A_yc.
+pub const CARBODY_LATERAL: &str = "carbody_floor_ay_front";
+/// Channel of the carbody floor vertical acceleration used for W_z.
+pub const CARBODY_VERTICAL: &str = "carbody_floor_az_front";
+/// Channel of the bogie frame lateral acceleration used for A_yb.
+pub const BOGIE_LATERAL: &str = "frame1_ay_wheelset1";
 
-/// The default step of [`Integrator::ExponentialRk4`], s: with the gearbox
-/// bearings solved exactly the vehicle is stable at 2 ms, and 500 Hz output stays on whole steps
-/// (`tests/exponential_step.rs`).
-pub const EXPONENTIAL_STEP: f64 = 2e-3;
+/// The channels [`crate::vehicle::output::run_metrics::run_metrics`] reads: what a run records when only its metrics are kept.
+pub const METRIC_CHANNELS: [&str; 3] = [CARBODY_LATERAL, CARBODY_VERTICAL, BOGIE_LATERAL];
 
 /// Settings of the time integration.
 #[derive(Debug, Clone, Copy, PartialEq)]

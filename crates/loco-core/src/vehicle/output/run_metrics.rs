@@ -3,17 +3,7 @@
 
 use crate::error::{LocoError, Result};
 use crate::metrics::{RunMetrics, RunMetricsParams, RunRecords};
-use crate::vehicle::output::run::RunOutput;
-
-/// Channel of the carbody floor lateral acceleration used for W_y and A_yc.
-pub const CARBODY_LATERAL: &str = "carbody_floor_ay_front";
-/// Channel of the carbody floor vertical acceleration used for W_z.
-pub const CARBODY_VERTICAL: &str = "carbody_floor_az_front";
-/// Channel of the bogie frame lateral acceleration used for A_yb.
-pub const BOGIE_LATERAL: &str = "frame1_ay_wheelset1";
-
-/// The channels [`run_metrics`] reads: what a run records when only its metrics are kept.
-pub const METRIC_CHANNELS: [&str; 3] = [CARBODY_LATERAL, CARBODY_VERTICAL, BOGIE_LATERAL];
+use crate::vehicle::output::run::{RunOutput, BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
 
 /// Every metric of a run at running speed `speed` (m/s) with bogie mass `bogie_mass` (kg).
 pub fn run_metrics(output: &RunOutput, speed: f64, bogie_mass: f64) -> Result<RunMetrics> {
@@ -57,7 +47,9 @@ pub fn run_metrics_or_undefined(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::vehicle::output::run::RunOutput;
+    use crate::vehicle::output::run::{
+        RunOutput, BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL,
+    };
 
     #[test]
     fn a_run_too_short_has_every_metric_undefined_flags_included() {

@@ -31,12 +31,13 @@
 //! methods of bogie stability assessment using computer simulations", Proc. IMechE Part F, 2006).
 
 use crate::error::{check_positive, LocoError, Result};
+use crate::vehicle::analysis::stiffest_mode::in_equilibrium_at_stable_step;
 use crate::vehicle::model::layout::{wheelset, N_WHEELSETS, ROLL, Y, Z};
 use crate::vehicle::model::structure::IntoVehicle;
 use crate::vehicle::output::run::{integrate, Flow};
 use crate::vehicle::scenarios::scenario::{PerfectTrackVehicle, Scenario, TrackSpec};
 use crate::vehicle::system::simulation::{SpeedProfile, VehicleSystem};
-use crate::vehicle::system::statics::{in_equilibrium_at_stable_step, StaticsSettings};
+use crate::vehicle::system::statics::StaticsSettings;
 use std::collections::VecDeque;
 use std::sync::atomic::AtomicBool;
 

@@ -4,6 +4,7 @@
 use crate::dampers::Damper;
 use crate::error::Result;
 use crate::track::TrackIrregularity;
+use crate::vehicle::analysis::stiffest_mode::in_equilibrium_at_stable_step;
 use crate::vehicle::curving::track_frame::CurvedTrack;
 use crate::vehicle::model::structure::{IntoVehicle, VehicleStructure};
 use crate::vehicle::output::run::{run, Recorded, RunOutput, RunSettings};
@@ -13,7 +14,7 @@ use crate::vehicle::scenarios::scenario::{
     build_track, curve_design, shared_wheel_rail, start_distance, Scenario, TrackSpec,
 };
 use crate::vehicle::system::simulation::VehicleSystem;
-use crate::vehicle::system::statics::{in_equilibrium_at_stable_step, StaticsSettings};
+use crate::vehicle::system::statics::StaticsSettings;
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 

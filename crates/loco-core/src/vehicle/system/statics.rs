@@ -22,11 +22,6 @@ use crate::vehicle::rail_contact::wheel_rail::ContactMode;
 use crate::vehicle::system::simulation::VehicleSystem;
 use nalgebra::{DMatrix, DVector};
 
-pub use crate::vehicle::analysis::stiffest_mode::{
-    check_step, in_equilibrium_at_stable_step, stable_step, stiffest_mode, StiffestMode,
-    MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
-};
-
 /// Settings of the static-equilibrium search. [`Default`] gives the values every run uses.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StaticsSettings {

@@ -59,10 +59,10 @@ fn a_scheme_named_without_a_step_runs_at_its_own_step() {
     };
     let etd = given("etdrk4", None);
     assert_eq!(etd.integrator, Integrator::ExponentialRk4);
-    assert_eq!(etd.step, crate::vehicle::output::run::EXPONENTIAL_STEP);
+    assert_eq!(etd.step, crate::vehicle::time::integrator::EXPONENTIAL_STEP);
     assert_eq!(
         given("rk4", None).step,
-        crate::vehicle::output::run::REFERENCE_STEP
+        crate::vehicle::time::integrator::REFERENCE_STEP
     );
     assert_eq!(given("etdrk4", Some(1e-3)).step, 1e-3);
 }
