@@ -6,7 +6,8 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::vehicle::analysis::linear_critical_speed::{linear_critical_speed, LinearSearch};
 use loco_core::vehicle::analysis::linearise::{eigenvalues, linearise};
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{PerfectTrackVehicle, Scenario};
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::hint::black_box;
 
 fn bench_eigen(c: &mut Criterion) {

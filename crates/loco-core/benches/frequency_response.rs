@@ -7,7 +7,8 @@ use loco_core::track::Channel;
 use loco_core::vehicle::analysis::frequency_response::{frequency_response, ResponseSolver};
 use loco_core::vehicle::analysis::track_input::{scenario_track_model, track_input_model};
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{PerfectTrackVehicle, Scenario};
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::hint::black_box;
 
 /// Ten recorded channels: accelerations, wheelset motion and damper forces.

@@ -15,9 +15,9 @@ use loco_core::vehicle::output::run::{Recorded, RunSettings};
 use loco_core::vehicle::params::parameters::ParameterSet;
 use loco_core::vehicle::rail_contact::creep_model::CreepModel;
 use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
-use loco_core::vehicle::scenarios::scenario::{
-    build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
-};
+use loco_core::vehicle::runs::simulate::simulate_prepared;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use loco_core::vehicle::system::simulation::VehicleSystem;
 use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use loco_core::vehicle::time::integrator::{Integrator, OdeSystem};

@@ -19,8 +19,9 @@ use loco_core::vehicle::model::structure::VehicleStructure;
 use loco_core::vehicle::output::run::{integrate, Flow};
 use loco_core::vehicle::params::parameters::ParameterSet;
 use loco_core::vehicle::scenarios::scenario::{
-    build_track, build_wheel_rail, curve_design, start_distance, Scenario, TrackSpec,
+    build_track, curve_design, start_distance, Scenario, TrackSpec,
 };
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use loco_core::vehicle::system::simulation::VehicleSystem;
 use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use std::sync::Arc;

@@ -11,7 +11,8 @@
 
 use loco_core::vehicle::analysis::linearise::least_damped;
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{linearised, Scenario, TrackSpec};
+use loco_core::vehicle::runs::simulate::linearised;
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
 
 /// The bearings' modes (axial 238 Hz, tilt 320-330 Hz) and nothing else of the vehicle.
 const BEARING_BAND_HZ: (f64, f64) = (200.0, 400.0);

@@ -7,7 +7,8 @@ use loco_core::track::{CurveDirection, DesignSection};
 use loco_core::vehicle::model::layout::*;
 use loco_core::vehicle::model::structure::VehicleStructure;
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{build_wheel_rail, Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -368,12 +369,10 @@ fn a_radius_the_contact_cannot_follow_is_refused_by_section() {
             direction: CurveDirection::Left,
         },
     ];
-    let e = loco_core::vehicle::scenarios::scenario::simulate(
-        ParameterSet::default_vehicle(),
-        &scenario,
-    )
-    .unwrap_err()
-    .to_string();
+    let e =
+        loco_core::vehicle::runs::simulate::simulate(ParameterSet::default_vehicle(), &scenario)
+            .unwrap_err()
+            .to_string();
     assert!(e.contains("curve section 2 (radius_m)"), "{e}");
     println!("{e}");
 }

@@ -12,7 +12,8 @@ use loco_core::vehicle::model::structure::VehicleStructure;
 use loco_core::vehicle::output::wheel_channels::{wheelset_channel, WheelsetQuantity};
 use loco_core::vehicle::params::parameters::ParameterSet;
 use loco_core::vehicle::rail_contact::wheel_rail::{ContactMode, WheelForces, WheelRail};
-use loco_core::vehicle::scenarios::scenario::{build_wheel_rail, Scenario};
+use loco_core::vehicle::scenarios::scenario::Scenario;
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 
 mod curve_support;
 use curve_support::cone::{half_distance, research, run_cone, run_cone_towards, G};

@@ -14,7 +14,8 @@
 mod box_support;
 
 use box_support::{damper_corners, vehicle, SOFT_CORNER, STIFF_CORNER};
-use loco_core::vehicle::scenarios::scenario::{simulate, Scenario};
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use loco_core::vehicle::scenarios::scenario_settings::{DEFAULT_DISTANCE, DEFAULT_SPEED};
 use loco_core::vehicle::time::integrator::Integrator;
 use loco_core::vehicle::time::integrator::{EXPONENTIAL_STEP, REFERENCE_STEP};

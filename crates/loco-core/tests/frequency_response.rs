@@ -15,7 +15,8 @@ use loco_core::vehicle::analysis::track_input::{
 };
 use loco_core::vehicle::model::structure::VehicleStructure;
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{simulate, start_distance, Scenario, TrackSpec};
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{start_distance, Scenario, TrackSpec};
 use loco_core::Result;
 use nalgebra::Complex;
 use rayon::prelude::*;

@@ -4,7 +4,9 @@
 use loco_core::vehicle::model::suspension::DamperRole;
 use loco_core::vehicle::output::run::channel_names;
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{simulate, PerfectTrackVehicle, Scenario};
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::collections::HashSet;
 
 /// S_norm at 200 km/h over `distance` (m) of synthesised track (seed 3).
@@ -83,7 +85,8 @@ fn on_straight_track_the_accelerometers_add_the_gravity_of_the_bodys_roll() {
     use loco_core::vehicle::model::structure::VehicleStructure;
     use loco_core::vehicle::output::channel_set::ChannelSet;
     use loco_core::vehicle::output::run::{run, Recorded, RunSettings};
-    use loco_core::vehicle::scenarios::scenario::{build_track, build_wheel_rail, start_distance};
+    use loco_core::vehicle::scenarios::scenario::{build_track, start_distance};
+    use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
     use loco_core::vehicle::system::simulation::VehicleSystem;
     use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
     use loco_core::vehicle::time::integrator::OdeSystem;

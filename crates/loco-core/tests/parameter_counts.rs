@@ -3,7 +3,8 @@
 //! c/k, n times the force), so the linearised vehicles must agree.
 
 use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::{linearised, Scenario};
+use loco_core::vehicle::runs::simulate::linearised;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 
 fn state_matrix(overrides: &[(&str, f64)]) -> (Vec<f64>, usize) {
     let mut p = ParameterSet::default_vehicle();

@@ -9,7 +9,8 @@ use loco_core::vehicle::params::parameters::ParameterSet;
 use loco_core::vehicle::runs::critical_speed::{
     nonlinear_critical_speed, RampOutcome, RampSettings,
 };
-use loco_core::vehicle::scenarios::scenario::{linearised, simulate, Scenario, TrackSpec};
+use loco_core::vehicle::runs::simulate::{linearised, simulate};
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
 
 /// S_high with YD1 on perfect track at `speed` (m/s) for `seconds` (s), every wheelset
 /// displaced laterally by `disturbance` (m) at the start.

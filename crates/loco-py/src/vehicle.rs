@@ -24,7 +24,7 @@ use loco_core::vehicle::params::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMET
 use loco_core::vehicle::runs::critical_speed::{
     nonlinear_critical_speed, RampOutcome, RampSettings,
 };
-use loco_core::vehicle::scenarios::scenario::{linearised, simulate_cancellable};
+use loco_core::vehicle::runs::simulate::{linearised, simulate_cancellable};
 use loco_core::vehicle::system::run_statistics::RunStatistics;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};

@@ -56,9 +56,8 @@ mod tests {
     use super::*;
     use crate::vehicle::model::structure::VehicleStructure;
     use crate::vehicle::params::parameters::ParameterSet;
-    use crate::vehicle::scenarios::scenario::{
-        build_track, build_wheel_rail, start_distance, Scenario, TrackSpec,
-    };
+    use crate::vehicle::scenarios::scenario::{build_track, start_distance, Scenario, TrackSpec};
+    use crate::vehicle::scenarios::scenario_contact::build_wheel_rail;
     use crate::vehicle::system::statics::{static_equilibrium, StaticsSettings};
     use std::sync::Arc;
 

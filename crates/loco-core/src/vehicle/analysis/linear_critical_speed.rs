@@ -8,7 +8,8 @@
 use crate::error::{check_cancel, check_positive, LocoError, Result};
 use crate::vehicle::analysis::linearise::{least_damped, linearise_with, LinearisationSettings};
 use crate::vehicle::model::structure::IntoVehicle;
-use crate::vehicle::scenarios::scenario::{PerfectTrackVehicle, Scenario};
+use crate::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use crate::vehicle::scenarios::scenario::Scenario;
 use std::sync::atomic::AtomicBool;
 
 /// Search settings of the linear critical speed.

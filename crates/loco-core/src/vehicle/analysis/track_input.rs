@@ -182,7 +182,8 @@ pub fn scenario_track_model_with(
              `simulate` in the curve",
         ));
     }
-    let vehicle = crate::vehicle::scenarios::scenario::PerfectTrackVehicle::new(vehicle, scenario)?;
+    let vehicle =
+        crate::vehicle::scenarios::perfect_track::PerfectTrackVehicle::new(vehicle, scenario)?;
     let mut system = vehicle.system(scenario.speed)?;
     track_input_model_with(&mut system, settings)
 }

@@ -89,7 +89,8 @@ impl LongStepRange {
 mod tests {
     use super::*;
     use crate::vehicle::params::parameters::ParameterSet;
-    use crate::vehicle::scenarios::scenario::{build_wheel_rail, Scenario};
+    use crate::vehicle::scenarios::scenario::Scenario;
+    use crate::vehicle::scenarios::scenario_contact::build_wheel_rail;
     use crate::vehicle::scenarios::scenario_settings::{DEFAULT_DISTANCE, DEFAULT_SPEED};
 
     fn range(name: &str) -> [f64; 2] {

@@ -9,7 +9,7 @@
 //! unknown, misspelt or retired key, a missing key, an unknown field, a unit that is not a unit of
 //! the parameter's quantity, a non-finite value, a fractional count or a value outside the
 //! physical range is an error naming the key. Values may be stated in any unit the schema's SI
-//! unit accepts (`vehicle/units.rs`) and are converted to SI on reading. A research value outside
+//! unit accepts (`vehicle/params/units.rs`) and are converted to SI on reading. A research value outside
 //! the range is allowed only explicitly: `allow_out_of_range = ["carbody.mass", ...]` at the top of
 //! the file lifts the range (not finiteness, not whole counts) for those keys, in the file and in
 //! every override applied to the set. Derived values (the steel's shear modulus) are computed.

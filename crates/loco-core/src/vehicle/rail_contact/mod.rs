@@ -5,7 +5,6 @@
 #[cfg(feature = "record-contacts")]
 pub mod contact_recording;
 pub mod creep_model;
-pub(crate) mod pending_contact;
 pub mod rail_plane;
 pub(crate) mod rail_planes;
 pub mod track_limits;

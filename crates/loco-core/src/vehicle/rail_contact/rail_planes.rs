@@ -69,7 +69,8 @@ impl RailPlanes {
 mod tests {
     use super::*;
     use crate::vehicle::params::parameters::ParameterSet;
-    use crate::vehicle::scenarios::scenario::{shared_wheel_rail, Scenario};
+    use crate::vehicle::scenarios::scenario::Scenario;
+    use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
 
     /// A track of `n` nodes 0.25 m apart with every channel a different sine (and its slope).
     fn track(n: usize, phase: f64) -> Arc<TrackIrregularity> {

@@ -38,8 +38,8 @@ use crate::error::{LocoError, Result};
 use crate::track::RailIrregularity;
 use crate::vehicle::model::elements::{BodyStates, Wrenches};
 use crate::vehicle::model::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
-use crate::vehicle::rail_contact::pending_contact::{add_forces, Creep, Pending};
 use crate::vehicle::rail_contact::rail_plane::RailPlane;
+use pending_contact::{add_forces, Creep, Pending};
 use std::sync::Arc;
 
 /// Settings of the wheel-rail contact.
@@ -396,6 +396,8 @@ fn side_name(side: Side) -> &'static str {
 
 /// Number of wheels.
 pub const N_WHEELS: usize = 2 * N_WHEELSETS;
+
+mod pending_contact;
 
 #[cfg(test)]
 mod tests;

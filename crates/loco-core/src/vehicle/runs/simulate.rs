@@ -1,7 +1,6 @@
 //! Simulating a [`Scenario`]: the static equilibrium at a step the vehicle is stable with, the
-//! time integration, the metrics; and the vehicle on perfect track that the linear analyses use.
+//! time integration, the metrics; and the state matrix on perfect track.
 
-use crate::dampers::Damper;
 use crate::error::Result;
 use crate::track::TrackIrregularity;
 use crate::vehicle::analysis::stiffest_mode::in_equilibrium_at_stable_step;
@@ -10,9 +9,9 @@ use crate::vehicle::model::structure::{IntoVehicle, VehicleStructure};
 use crate::vehicle::output::run::{run, Recorded, RunOutput, RunSettings};
 use crate::vehicle::rail_contact::track_limits::TrackLimits;
 use crate::vehicle::rail_contact::wheel_rail::WheelRail;
-use crate::vehicle::scenarios::scenario::{
-    build_track, curve_design, shared_wheel_rail, start_distance, Scenario, TrackSpec,
-};
+use crate::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use crate::vehicle::scenarios::scenario::{build_track, curve_design, start_distance, Scenario};
+use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
 use crate::vehicle::system::simulation::VehicleSystem;
 use crate::vehicle::system::statics::StaticsSettings;
 use std::sync::atomic::AtomicBool;
@@ -70,7 +69,7 @@ pub fn simulate_prepared(
     let (mut system, equilibrium, step) =
         in_equilibrium_at_stable_step(scenario.run.step, &StaticsSettings::default(), build)?;
     if step != scenario.run.step {
-        crate::vehicle::scenarios::run_limits::check_cost(&Scenario {
+        crate::vehicle::scenarios::scenario::cost::check_cost(&Scenario {
             run: RunSettings {
                 step,
                 ..scenario.run
@@ -106,57 +105,6 @@ pub fn simulate_prepared(
         metrics,
         statistics,
     })
-}
-
-/// A vehicle with its scenario's contact on perfect track, built once for analyses that need
-/// the system at several speeds (linearisation, critical speeds).
-pub struct PerfectTrackVehicle {
-    structure: Arc<VehicleStructure>,
-    wheel_rail: Arc<WheelRail>,
-    track: Arc<TrackIrregularity>,
-    yaw_damper: Option<Damper>,
-    step: f64,
-}
-
-impl PerfectTrackVehicle {
-    /// Builds the vehicle (unless given built), the scenario's contact and a perfect track of
-    /// the scenario's length.
-    pub fn new(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<Self> {
-        scenario.validate()?;
-        let structure = vehicle.into_vehicle()?;
-        let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
-        let perfect = Scenario {
-            track: TrackSpec::Perfect,
-            ..scenario.clone()
-        };
-        let track = Arc::new(build_track(&perfect, &structure)?);
-        Ok(Self {
-            structure,
-            wheel_rail,
-            track,
-            yaw_damper: scenario.yaw_damper,
-            step: scenario.run.step,
-        })
-    }
-
-    /// The system running at `speed` (m/s), not yet in equilibrium.
-    pub fn system(&self, speed: f64) -> Result<VehicleSystem> {
-        self.system_with_step(speed, self.step)
-    }
-
-    /// As [`Self::system`], its dampers built for the RK4 step `step` (s) instead of the
-    /// scenario's.
-    pub fn system_with_step(&self, speed: f64, step: f64) -> Result<VehicleSystem> {
-        VehicleSystem::new(
-            self.structure.clone(),
-            self.wheel_rail.clone(),
-            self.track.clone(),
-            speed,
-            start_distance(&self.structure),
-            self.yaw_damper.as_ref(),
-            step,
-        )
-    }
 }
 
 /// The state matrix of the vehicle linearised about its static equilibrium at the scenario's

@@ -63,7 +63,7 @@ pub fn shared(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::vehicle::scenarios::scenario::shared_wheel_rail;
+    use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
 
     fn scenario(name: &str) -> Scenario {
         Scenario::study(name, 55.0, 300.0, 1).unwrap()
@@ -107,7 +107,7 @@ mod tests {
         let p = ParameterSet::default_vehicle();
         let s = scenario("S_norm");
         let kept = shared_wheel_rail(&p, &s).unwrap();
-        let fresh = crate::vehicle::scenarios::scenario::build_wheel_rail(&p, &s).unwrap();
+        let fresh = crate::vehicle::scenarios::scenario_contact::build_wheel_rail(&p, &s).unwrap();
         assert_eq!(format!("{:?}", *kept), format!("{fresh:?}"));
     }
 }

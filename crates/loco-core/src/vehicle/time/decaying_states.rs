@@ -24,7 +24,7 @@
 //! `J q + c0 − δ` with the stage's coordinates.
 
 use crate::vehicle::time::row_groups::LaneRows;
-use crate::vehicle::time::stiff_linear_part::Sparse;
+use crate::vehicle::time::row_groups::Sparse;
 use nalgebra::Matrix4;
 
 /// One decaying state.

@@ -8,7 +8,8 @@
 //! `Iterator::sum`'s: from −0, term by term in increasing column order, no fused multiply-add,
 //! so the outputs are the same bits as the rows' one by one.
 
-use crate::vehicle::time::stiff_linear_part::Sparse;
+/// A sparse row or column: (coordinate index, coefficient).
+pub type Sparse = Vec<(usize, f64)>;
 
 /// Rows of one group evaluated together; a group of more rows is split.
 const LANES: usize = 8;

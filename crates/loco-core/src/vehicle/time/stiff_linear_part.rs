@@ -17,11 +17,8 @@ use crate::vehicle::model::layout::N_DOF;
 use crate::vehicle::model::mass::MassMatrix;
 use crate::vehicle::model::structure::VehicleStructure;
 use crate::vehicle::model::suspension::GEARBOX_BEARINGS;
-use crate::vehicle::time::row_groups::{LaneRows, RowGroups};
+use crate::vehicle::time::row_groups::{LaneRows, RowGroups, Sparse};
 use nalgebra::DMatrix;
-
-/// A sparse row or column: (coordinate index, coefficient).
-pub type Sparse = Vec<(usize, f64)>;
 
 /// Linear springs on coordinate combinations `z = J q` with a constant mass matrix.
 #[derive(Debug, Clone)]

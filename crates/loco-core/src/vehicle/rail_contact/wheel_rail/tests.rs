@@ -7,7 +7,8 @@ use crate::vehicle::model::elements::BodyStates;
 use crate::vehicle::model::layout::{body_wheelset, N_BODIES, N_WHEELSETS};
 use crate::vehicle::params::parameters::ParameterSet;
 use crate::vehicle::rail_contact::creep_model::CreepModel;
-use crate::vehicle::scenarios::scenario::{shared_wheel_rail, Scenario};
+use crate::vehicle::scenarios::scenario::Scenario;
+use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
 
 /// A small deterministic generator of uniform numbers in [−1, 1).
 struct Uniform(u64);
