@@ -3,7 +3,7 @@
 //! or straight) to `start` m, then records every step's accelerations over `window` m and prints
 //! per body group the largest, its coordinate and the three largest peaks of its spectrum.
 //! `modes` adds the state matrix at the running state (finite differences, as
-//! `vehicle::linearise` does at the static equilibrium) and its modes of 20-150 Hz with less
+//! `vehicle::analysis::linearise` does at the static equilibrium) and its modes of 20-150 Hz with less
 //! than 10 % damping, each with the bodies that share its kinetic energy; `table` prints the
 //! contact table around the leading wheelsets' −7.8 mm instead.
 //!

@@ -11,7 +11,7 @@
 //!
 //! `fingerprint` hashes the channels recorded before the curving channels were added (so the
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
-//! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution;
+//! channels (`vehicle::output::wheel_channels`), which are outputs only and cannot change the solution;
 //! `accelerometer_fingerprint` the channels of kind `accelerometer`, outputs only too.
 
 use loco_core::vehicle::model::structure::VehicleStructure;

@@ -1,5 +1,5 @@
 //! Curves: the track-following frames of a designed alignment (`track::design`,
-//! `vehicle::track_frame`) against independent results: balanced cant, cant deficiency, steady
+//! `vehicle::curving::track_frame`) against independent results: balanced cant, cant deficiency, steady
 //! state, mirror symmetry, bad input.
 
 use loco_core::track::design::REFERENCE_CURVE_RADIUS;
@@ -264,7 +264,7 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
         // where the gauge-side second contact point of the leading outer wheel of bogie 2
         // comes into contact: at y = -7.70 mm its gap in
         // the contact table (9.6e-5 m) equals the tread's elastic approach. The normal force
-        // there is K δ^1.5 + c_n δ̇ (`vehicle::wheel_rail`), and the damping term starts with
+        // there is K δ^1.5 + c_n δ̇ (`vehicle::rail_contact::wheel_rail`), and the damping term starts with
         // a jump of c_n δ̇ ≈ 2.8e5 N·s/m × 0.01 m/s ≈ 2.8 kN (measured: the outer load steps by
         // 2.6 kN in one sample). The two runs' wheelset positions differ by 5.5e-7 m (7e-5 of
         // the offset; the contact table is mirror-symmetric to 1e-16 m), so they meet that

@@ -295,7 +295,7 @@ fn a_two_axle_bogie_takes_the_curve_as_the_linear_theory_gives() {
     // Classical shape of the solution: the leading wheelset runs outward with its nose
     // outward (positive angle of attack), the trailing one nearer the centre, nose inward.
     assert!(x[0] < x[2] && x[2] < 0.0 && x[1] < 0.0 && x[3] > 0.0);
-    // The recorded angle-of-attack channel (`wheelset<w>_yaw`, `vehicle::wheel_channels`; what
+    // The recorded angle-of-attack channel (`wheelset<w>_yaw`, `vehicle::output::wheel_channels`; what
     // `loco curving` reports) is the theory's ψ_i, the yaw against the track tangent at each
     // wheelset, in a left curve and (mirrored, the sign flipped) in a right one. The theory
     // tells that definition apart from the two a model could slip into: the yaw against the

@@ -1,4 +1,4 @@
-//! The central-difference steps of the linearisation (`vehicle::linearise`) lie on plateaus of
+//! The central-difference steps of the linearisation (`vehicle::analysis::linearise`) lie on plateaus of
 //! the right-hand side: each group of a wheelset's columns of `A` (and the rails' columns of `B`)
 //! is compared with the same columns at other steps, about the candidate two groups of steps
 //! (`LinearisationSettings::two_groups`). S_norm + YD1 at 200 km/h shows both effects

@@ -123,7 +123,7 @@ fn hunting_survives_below_the_linear_critical_speed_down_to_the_ramp_result() {
 
 /// Linear critical speeds of the three study scenarios with YD1 and YD2 (the table of docs/model/frequency_response.md)
 /// with the candidate two groups of linearisation steps and with the default one step of 1e-7
-/// (`vehicle::linearise`): how much the linear stability results depend on the steps (run with
+/// (`vehicle::analysis::linearise`): how much the linear stability results depend on the steps (run with
 /// `--ignored --nocapture`).
 #[test]
 #[ignore = "prints a table for the documentation (about a minute on 2 cores)"]

@@ -1,6 +1,6 @@
 //! Test support shared by the curving integration tests: the locomotive run on a designed
 //! alignment from its static equilibrium, with the system and final state kept for inspection
-//! (`vehicle::scenario::simulate` keeps neither).
+//! (`vehicle::runs::simulate` keeps neither).
 
 use loco_core::track::DesignSection;
 use loco_core::vehicle::analysis::stiffest_mode::stable_step;

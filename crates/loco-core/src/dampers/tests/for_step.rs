@@ -100,7 +100,7 @@ fn form_follows_the_step_and_the_law() {
     assert_eq!(law.for_step(4e-4).unwrap(), law);
     assert_eq!(Damper::yd2().for_step(1e-3).unwrap(), Damper::yd2());
     // Stiff only above the knee: no rigid form, a typed error naming the step (the vehicle adds
-    // the damper's name: `vehicle::damper_elements`).
+    // the damper's name: `vehicle::system::damper_elements`).
     let blow_off = stiff_above_the_knee();
     let err = blow_off.for_step(1e-3).unwrap_err();
     let text = err.to_string();
