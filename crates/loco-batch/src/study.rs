@@ -91,7 +91,7 @@ pub struct Study {
 }
 
 fn read(path: &Path, kind: FileKind) -> Result<String> {
-    loco_core::text_file::read_text(path, kind)
+    loco_core::util::text_file::read_text(path, kind)
 }
 
 /// Reads and resolves the study file at `path`.

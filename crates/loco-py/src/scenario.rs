@@ -5,7 +5,7 @@ use crate::contact::PyProfile;
 use crate::dampers::PyDamper;
 use crate::errors::to_py_err;
 use crate::track::PyTrack;
-use loco_core::toml_fields::read_table;
+use loco_core::util::toml_fields::read_table;
 use loco_core::vehicle::params::presets::SCENARIOS;
 use loco_core::vehicle::rail_contact::creep_model::CreepModel;
 use loco_core::vehicle::scenarios::scenario::Scenario;

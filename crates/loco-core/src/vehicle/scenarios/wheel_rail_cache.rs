@@ -1,4 +1,4 @@
-//! Built wheel/rail contacts kept for reuse within the process ([`crate::kept`]).
+//! Built wheel/rail contacts kept for reuse within the process ([`crate::util::kept`]).
 //!
 //! Why: building a contact (the contact table on ±25 mm at 0.1 mm with its relative-roll layers,
 //! the creep solver) costs two thirds of a 500 m run (1.04·10⁹ instructions against 1.54·10⁹,
@@ -12,7 +12,7 @@ use crate::contact::fastsim::FastsimParams;
 use crate::contact::profile::Profile;
 use crate::contact::setup::TrackSetup;
 use crate::error::Result;
-use crate::kept::Kept;
+use crate::util::kept::Kept;
 use crate::vehicle::params::parameters::ParameterSet;
 use crate::vehicle::rail_contact::creep_model::CreepModel;
 use crate::vehicle::rail_contact::wheel_rail::WheelRail;

@@ -12,7 +12,7 @@
 //! `z̈ = −J B z + J q̈_rest`, whose exact solution under a forcing polynomial in time is one
 //! matrix exponential per step length, computed once per run.
 
-use crate::kept::Kept;
+use crate::util::kept::Kept;
 use crate::vehicle::model::layout::N_DOF;
 use crate::vehicle::model::mass::MassMatrix;
 use crate::vehicle::model::structure::VehicleStructure;
@@ -191,7 +191,7 @@ impl StiffLinearPart {
     /// The blocks are scaled to the time `tau` first (`ż·τ`, `∫z/τ`, `h·τ²`, ...), so that
     /// all entries of the exponentiated matrix are of order (ω·τ)² at most.
     ///
-    /// Kept for reuse ([`crate::kept`]): a batch's samples share the bearings and the mass
+    /// Kept for reuse ([`crate::util::kept`]): a batch's samples share the bearings and the mass
     /// matrix, and the exponentials cost 1.2 % of a 500 m run.
     pub fn propagator(&self, tau: f64) -> Propagator {
         static KEPT: Kept<Propagator> = Kept::new(8);
