@@ -59,7 +59,7 @@ WORKING_VALVE: dict[str, dampers.Damper] = {
     "FSD (rms-frequency valve)": dampers.FSD,
     "FSD-H (hydraulic valve)": dampers.FSD_HYDRAULIC,
 }
-#: Study scenarios and their wheel/rail pairs (``vehicle/scenario.rs``).
+#: Study scenarios and their wheel/rail pairs (``vehicle/scenarios/scenario.rs``).
 PAIRS = {"S_low": "jm3-thin-flange", "S_norm": "jm3-new", "S_high": "jm3-worn"}
 HIGH = 150.0  # m/s: top of the bisection (540 km/h); inf above it
 RAMP_START = 300.0 / 3.6  # m/s: start of the nonlinear ramp-down

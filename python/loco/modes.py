@@ -1,6 +1,6 @@
 """What moves in a mode: each body's share of the mode's kinetic energy, and its motions.
 
-The shares come from the core (``loco_core::vehicle::modes``, through
+The shares come from the core (``loco_core::vehicle::analysis::modes``, through
 ``loco._loco.mode_energies``): for a mode shape ``q`` the mean kinetic energy of body ``b`` is
 proportional to ``Σ_k D_b[k]·|(T_b q)_k|²``, with ``T_b`` the map from the coordinates to the
 body's absolute motion (x, y, z; roll, pitch, yaw at its centre of gravity) and

@@ -1,5 +1,6 @@
 """The vehicle's parameter schema: for every key of a vehicle file its SI unit, kind, physical
-range, what it affects and a description (the core's one list, ``vehicle/parameter_schema.toml``).
+range, what it affects and a description (the core's one list,
+``vehicle/params/parameter_schema.toml``).
 
 A vehicle file must give exactly these keys (an optional one it may leave to the model); a
 value outside its range is refused with :class:`loco.ParameterRangeError` unless the file lists

@@ -310,9 +310,9 @@ def ramp_down(
     settled (at most ``max_hold``, s), then falls by ``deceleration`` (m/s²) down to ``end_speed``
     (m/s). Hunting has died out in the first window of ``window`` (s) whose amplitude is below
     ``threshold`` (m). A setting left as None takes the core's default (``RampSettings`` in
-    ``loco_core::vehicle::critical_speed``: 20 m/s at 0.5 m/s² after 3–30 s, 8 mm, 1 s windows,
-    0.5 mm). The disturbance must be large: the default reaches the flanges of worn wheels and
-    finds the largest limit cycle, the one that survives down to the lowest speed.
+    ``loco_core::vehicle::runs::critical_speed``: 20 m/s at 0.5 m/s² after 3–30 s, 8 mm, 1 s
+    windows, 0.5 mm). The disturbance must be large: the default reaches the flanges of worn
+    wheels and finds the largest limit cycle, the one that survives down to the lowest speed.
 
     The detection follows the dying cycle's collapse, so the result is low by roughly
     ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 35.6 m/s: 35.2,

@@ -4,9 +4,9 @@
 //! back (Python's `float`, pandas) gets the same `f64` bit for bit.
 
 use loco_core::batch::BatchOutput;
-use loco_core::csv_table::CsvTable;
-use loco_core::vehicle::run::RunOutput;
-use loco_core::vehicle::run_statistics::RunStatistics;
+use loco_core::util::csv_table::CsvTable;
+use loco_core::vehicle::output::run::RunOutput;
+use loco_core::vehicle::system::run_statistics::RunStatistics;
 use loco_core::{LocoError, Result};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -22,7 +22,7 @@ pub struct Samples {
 /// the file and line.
 pub fn read_samples(path: &Path) -> Result<Samples> {
     let label = path.display().to_string();
-    let text = loco_core::text_file::read_text(path, loco_core::error::FileKind::Study)?;
+    let text = loco_core::util::text_file::read_text(path, loco_core::error::FileKind::Study)?;
     let table = CsvTable::parse(&text, &label, loco_core::error::FileKind::Study)?;
     let mut values = Vec::new();
     for (line, cells) in &table.rows {

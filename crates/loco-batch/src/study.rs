@@ -37,14 +37,14 @@
 //!
 //! Relative paths are relative to the study file. Every `[scenario]` key but `distance` and the
 //! speed is optional; left out, it takes the core default
-//! ([`loco_core::vehicle::scenario_settings::ScenarioSettings`]). Settings that contradict each
+//! ([`loco_core::vehicle::scenarios::scenario_settings::ScenarioSettings`]). Settings that contradict each
 //! other (`spectrum`, `seed` or `band` with a perfect or measured track; `name` with `wheel`;
 //! `speed` with `speed_kmh`) are refused.
 
 use loco_core::error::FileKind;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::Scenario;
-use loco_core::vehicle::scenario_settings::{GivenObjects, ScenarioSettings};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::scenario::Scenario;
+use loco_core::vehicle::scenarios::scenario_settings::{GivenObjects, ScenarioSettings};
 use loco_core::{LocoError, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -91,7 +91,7 @@ pub struct Study {
 }
 
 fn read(path: &Path, kind: FileKind) -> Result<String> {
-    loco_core::text_file::read_text(path, kind)
+    loco_core::util::text_file::read_text(path, kind)
 }
 
 /// Reads and resolves the study file at `path`.

@@ -3,10 +3,11 @@
 //! critical speed (a bisection of such analyses). Limit: one analysis at most 100 ms on one core.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use loco_core::vehicle::linear_critical_speed::{linear_critical_speed, LinearSearch};
-use loco_core::vehicle::linearise::{eigenvalues, linearise};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{PerfectTrackVehicle, Scenario};
+use loco_core::vehicle::analysis::linear_critical_speed::{linear_critical_speed, LinearSearch};
+use loco_core::vehicle::analysis::linearise::{eigenvalues, linearise};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::hint::black_box;
 
 fn bench_eigen(c: &mut Criterion) {
@@ -33,10 +34,13 @@ fn bench_eigen(c: &mut Criterion) {
         });
     }
     let scenario = Scenario::study("S_high", 200.0 / 3.6, 500.0, 0).unwrap();
-    let vehicle = std::sync::Arc::new(
-        loco_core::vehicle::structure::VehicleStructure::new(ParameterSet::default_vehicle())
+    let vehicle =
+        std::sync::Arc::new(
+            loco_core::vehicle::model::structure::VehicleStructure::new(
+                ParameterSet::default_vehicle(),
+            )
             .unwrap(),
-    );
+        );
     group.bench_function("S_high_linear_critical_speed", |b| {
         b.iter(|| {
             linear_critical_speed(

@@ -4,10 +4,11 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use loco_core::track::Channel;
-use loco_core::vehicle::frequency_response::{frequency_response, ResponseSolver};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{PerfectTrackVehicle, Scenario};
-use loco_core::vehicle::track_input::{scenario_track_model, track_input_model};
+use loco_core::vehicle::analysis::frequency_response::{frequency_response, ResponseSolver};
+use loco_core::vehicle::analysis::track_input::{scenario_track_model, track_input_model};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::hint::black_box;
 
 /// Ten recorded channels: accelerations, wheelset motion and damper forces.

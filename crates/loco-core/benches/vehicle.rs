@@ -10,17 +10,18 @@
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion};
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
-use loco_core::vehicle::creep_model::CreepModel;
-use loco_core::vehicle::integrator::{Integrator, OdeSystem};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::{Recorded, RunSettings, EXPONENTIAL_STEP, REFERENCE_STEP};
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate_prepared, start_distance, Scenario,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_rail::WheelRail;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::run::{Recorded, RunSettings};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::creep_model::CreepModel;
+use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
+use loco_core::vehicle::runs::simulate::simulate_prepared;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::time::integrator::{Integrator, OdeSystem};
+use loco_core::vehicle::time::integrator::{EXPONENTIAL_STEP, REFERENCE_STEP};
 use std::hint::black_box;
 use std::sync::Arc;
 

@@ -11,9 +11,9 @@
 use loco_core::contact::fastrip::{Fastrip, FastripParams};
 use loco_core::contact::fastsim::{Fastsim, FastsimParams};
 use loco_core::contact::kalker::CreepForces;
-use loco_core::vehicle::contact_recording::{self, ContactCall};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::Recorded;
+use loco_core::vehicle::output::run::Recorded;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::contact_recording::{self, ContactCall};
 use std::hint::black_box;
 use std::time::Instant;
 

@@ -3,7 +3,7 @@
 //! or straight) to `start` m, then records every step's accelerations over `window` m and prints
 //! per body group the largest, its coordinate and the three largest peaks of its spectrum.
 //! `modes` adds the state matrix at the running state (finite differences, as
-//! `vehicle::linearise` does at the static equilibrium) and its modes of 20-150 Hz with less
+//! `vehicle::analysis::linearise` does at the static equilibrium) and its modes of 20-150 Hz with less
 //! than 10 % damping, each with the bodies that share its kinetic energy; `table` prints the
 //! contact table around the leading wheelsets' −7.8 mm instead.
 //!
@@ -12,17 +12,18 @@
 //! Found with it: the traction rods' 49 Hz modes had 0.13 % damping before their nodes had any
 //! (`traction_rod.bushing_damping_time`); the ringing did not depend on the table's step.
 use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::{integrate, Flow};
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, curve_design, start_distance, Scenario, TrackSpec,
+use loco_core::vehicle::analysis::stiffest_mode::stable_step;
+use loco_core::vehicle::curving::track_frame::CurvedTrack;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::run::{integrate, Flow};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::scenario::{
+    build_track, curve_design, start_distance, Scenario, TrackSpec,
 };
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::stiffest_mode::stable_step;
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_frame::CurvedTrack;
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use std::sync::Arc;
 
 fn groups() -> Vec<(String, Vec<usize>)> {
@@ -172,8 +173,8 @@ fn main() {
 /// Finite-difference state matrix at (t, y), its eigenvalues in 20–150 Hz, each mode's shape by
 /// inverse iteration and the bodies sharing its kinetic energy.
 fn modes(system: &mut VehicleSystem, y0: &[f64], t: f64) {
-    use loco_core::vehicle::integrator::OdeSystem;
-    use loco_core::vehicle::linearise::{eigenvalues, LinearisationSettings};
+    use loco_core::vehicle::analysis::linearise::{eigenvalues, LinearisationSettings};
+    use loco_core::vehicle::time::integrator::OdeSystem;
     use nalgebra::{Complex, DMatrix, DVector};
     let n = system.dimension();
     let settings = LinearisationSettings::default();
@@ -219,7 +220,7 @@ fn modes(system: &mut VehicleSystem, y0: &[f64], t: f64) {
         }
         let re: Vec<f64> = v.iter().map(|c| c.re).collect();
         let im: Vec<f64> = v.iter().map(|c| c.im).collect();
-        let e = loco_core::vehicle::modes::mode_energy(&structure, &re, &im).unwrap();
+        let e = loco_core::vehicle::analysis::modes::mode_energy(&structure, &re, &im).unwrap();
         let mut share: Vec<(f64, usize)> =
             e.bodies.iter().enumerate().map(|(i, &s)| (s, i)).collect();
         share.sort_by(|x, y| y.0.total_cmp(&x.0));
@@ -233,7 +234,7 @@ fn modes(system: &mut VehicleSystem, y0: &[f64], t: f64) {
                     "{} {:.0}% ({})",
                     structure.bodies[i].name,
                     100.0 * s,
-                    loco_core::vehicle::modes::MOTIONS[k]
+                    loco_core::vehicle::analysis::modes::MOTIONS[k]
                 )
             })
             .collect();

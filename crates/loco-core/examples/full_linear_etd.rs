@@ -33,15 +33,16 @@
 //! product's four stages of 2 ms are the fewest right-hand sides this family of schemes allows.
 
 use loco_core::metrics::RunMetrics;
-use loco_core::vehicle::channel_set::ChannelSet;
-use loco_core::vehicle::integrator::{Integrator, OdeSystem};
-use loco_core::vehicle::layout::{wheelset, N_DOF, N_WHEELSETS, PITCH, X, Y, YAW};
-use loco_core::vehicle::linearise::linearise;
-use loco_core::vehicle::run::{steps_per_sample, Recorded, RunOutput, RunSettings, REFERENCE_STEP};
-use loco_core::vehicle::run_metrics::run_metrics;
-use loco_core::vehicle::scenario::{start_distance, Scenario};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::analysis::linearise::linearise;
+use loco_core::vehicle::model::layout::{wheelset, N_DOF, N_WHEELSETS, PITCH, X, Y, YAW};
+use loco_core::vehicle::output::channel_set::ChannelSet;
+use loco_core::vehicle::output::run::{steps_per_sample, Recorded, RunOutput, RunSettings};
+use loco_core::vehicle::output::run_metrics::run_metrics;
+use loco_core::vehicle::scenarios::scenario::{start_distance, Scenario};
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::time::integrator::REFERENCE_STEP;
+use loco_core::vehicle::time::integrator::{Integrator, OdeSystem};
 use nalgebra::{DMatrix, DVector};
 
 #[path = "support/study_case.rs"]
@@ -103,7 +104,7 @@ fn run_full_linear(
     };
     let channel_set = ChannelSet::new(&system.structure)
         .ok()?
-        .only(&loco_core::vehicle::run_metrics::METRIC_CHANNELS)
+        .only(&loco_core::vehicle::output::run::METRIC_CHANNELS)
         .ok()?;
     let steps_per_sample = steps_per_sample(settings.output_rate, h);
     let n_samples = (settings.duration * settings.output_rate).floor() as usize + 1;
@@ -161,7 +162,8 @@ fn run_full_linear(
         names,
         channels,
     };
-    let bogie_mass = loco_core::vehicle::bogie_mass::en14363_bogie_mass(&system.structure).ok()?;
+    let bogie_mass =
+        loco_core::vehicle::model::bogie_mass::en14363_bogie_mass(&system.structure).ok()?;
     Some((run_metrics(&output, speed, bogie_mass).ok()?, rhs))
 }
 

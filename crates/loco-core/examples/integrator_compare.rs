@@ -4,9 +4,9 @@
 //! [parameter=value ...]`; `CURVE=study` or `CURVE=reference` runs it on that curve.
 
 use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::integrator::Integrator;
-use loco_core::vehicle::run::{Recorded, RunSettings};
-use loco_core::vehicle::scenario::Scenario;
+use loco_core::vehicle::output::run::{Recorded, RunSettings};
+use loco_core::vehicle::scenarios::scenario::Scenario;
+use loco_core::vehicle::time::integrator::Integrator;
 
 #[path = "support/study_case.rs"]
 mod study_case;

@@ -11,16 +11,16 @@
 //!
 //! `fingerprint` hashes the channels recorded before the curving channels were added (so the
 //! number stays comparable across that change); `curving_fingerprint` hashes the curving
-//! channels (`vehicle::wheel_channels`), which are outputs only and cannot change the solution;
+//! channels (`vehicle::output::wheel_channels`), which are outputs only and cannot change the solution;
 //! `accelerometer_fingerprint` the channels of kind `accelerometer`, outputs only too.
 
-use loco_core::vehicle::channel_set::{ChannelKind, ChannelSet};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_channels::{
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::channel_set::{ChannelKind, ChannelSet};
+use loco_core::vehicle::output::run::Recorded;
+use loco_core::vehicle::output::wheel_channels::{
     wheel_channel, wheelset_channel, WheelsetQuantity, CURVING_WHEEL_QUANTITIES,
 };
+use loco_core::vehicle::params::parameters::ParameterSet;
 use std::collections::HashSet;
 
 #[path = "support/study_case.rs"]

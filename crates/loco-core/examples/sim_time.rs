@@ -14,8 +14,8 @@
 //! them alternately several times (the minimum is the least disturbed run); the machine's speed
 //! drifts by ±10 % within an hour, so only such pairs resolve a few per cent.
 
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::Recorded;
+use loco_core::vehicle::output::run::Recorded;
+use loco_core::vehicle::params::parameters::ParameterSet;
 
 #[path = "support/study_case.rs"]
 mod study_case;

@@ -11,19 +11,17 @@
 //! - [`dampers`]: Maxwell dampers, the frequency-selective (FSD) yaw damper, hydraulic model, bench.
 //! - [`vehicle`]: the 90-DOF locomotive: parameters, bodies, suspension, equations of motion.
 //! - [`batch`]: many runs in parallel (rayon), failed samples flagged, deterministic.
-//! - [`text_file`]: input files read as UTF-8 text, other encodings refused by file and byte.
-//! - [`csv_table`]: comma-separated tables with a header row, errors naming file and line.
+//! - [`util`]: input files read as UTF-8 text ([`util::text_file`]), comma-separated tables with
+//!   a header row ([`util::csv_table`]), TOML tables read field by field ([`util::toml_fields`]),
+//!   the per-process store of pure builds ([`util::kept`]).
 
 pub mod batch;
 pub mod contact;
-pub mod csv_table;
 pub mod dampers;
 pub mod error;
-pub mod kept;
 pub mod metrics;
-pub mod text_file;
-pub mod toml_fields;
 pub mod track;
+pub mod util;
 pub mod vehicle;
 
 pub use error::{LocoError, Result};

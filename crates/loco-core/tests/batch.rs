@@ -2,8 +2,9 @@
 //! samples flagged without stopping the batch, input errors naming the row and column.
 
 use loco_core::batch::{run_batch, BatchMonitor, BatchSpec, SampleStatus};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{simulate, Scenario};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use loco_core::LocoError;
 use std::sync::atomic::Ordering;
 

@@ -9,9 +9,10 @@
 //! 49 Hz modes kept 0.13 % of damping from the frames, and the ringing a curve transition starts
 //! was still 3e-3 rad/s² in the frames' roll 200 m on (`tests/curving.rs`).
 
-use loco_core::vehicle::linearise::least_damped;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{linearised, Scenario, TrackSpec};
+use loco_core::vehicle::analysis::linearise::least_damped;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::linearised;
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
 
 /// The bearings' modes (axial 238 Hz, tilt 320-330 Hz) and nothing else of the vehicle.
 const BEARING_BAND_HZ: (f64, f64) = (200.0, 400.0);

@@ -2,9 +2,10 @@
 //! within `CREEP_GRID_TOLERANCE` of their converged values: the study's 500 m runs at 200 km/h
 //! (track seed 1) on the three study scenarios, each metric at the smallest grid against 20 × 20.
 
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run_limits::{CREEP_GRID_TOLERANCE, MIN_CREEP_GRID_SIDE};
-use loco_core::vehicle::scenario::{simulate, Scenario};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::run_limits::{CREEP_GRID_TOLERANCE, MIN_CREEP_GRID_SIDE};
+use loco_core::vehicle::scenarios::scenario::Scenario;
 
 /// (W_y, peak of the low-passed A_yb) of `name` on an n × n creep grid.
 fn metrics(name: &str, n: usize) -> (f64, f64) {

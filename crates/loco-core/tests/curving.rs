@@ -1,13 +1,14 @@
 //! Curves: the track-following frames of a designed alignment (`track::design`,
-//! `vehicle::track_frame`) against independent results: balanced cant, cant deficiency, steady
+//! `vehicle::curving::track_frame`) against independent results: balanced cant, cant deficiency, steady
 //! state, mirror symmetry, bad input.
 
 use loco_core::track::design::REFERENCE_CURVE_RADIUS;
 use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{build_wheel_rail, Scenario, TrackSpec};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -263,7 +264,7 @@ fn a_right_curve_is_the_mirror_image_of_a_left_one() {
         // where the gauge-side second contact point of the leading outer wheel of bogie 2
         // comes into contact: at y = -7.70 mm its gap in
         // the contact table (9.6e-5 m) equals the tread's elastic approach. The normal force
-        // there is K δ^1.5 + c_n δ̇ (`vehicle::wheel_rail`), and the damping term starts with
+        // there is K δ^1.5 + c_n δ̇ (`vehicle::rail_contact::wheel_rail`), and the damping term starts with
         // a jump of c_n δ̇ ≈ 2.8e5 N·s/m × 0.01 m/s ≈ 2.8 kN (measured: the outer load steps by
         // 2.6 kN in one sample). The two runs' wheelset positions differ by 5.5e-7 m (7e-5 of
         // the offset; the contact table is mirror-symmetric to 1e-16 m), so they meet that
@@ -368,9 +369,10 @@ fn a_radius_the_contact_cannot_follow_is_refused_by_section() {
             direction: CurveDirection::Left,
         },
     ];
-    let e = loco_core::vehicle::scenario::simulate(ParameterSet::default_vehicle(), &scenario)
-        .unwrap_err()
-        .to_string();
+    let e =
+        loco_core::vehicle::runs::simulate::simulate(ParameterSet::default_vehicle(), &scenario)
+            .unwrap_err()
+            .to_string();
     assert!(e.contains("curve section 2 (radius_m)"), "{e}");
     println!("{e}");
 }

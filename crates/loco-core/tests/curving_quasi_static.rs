@@ -6,13 +6,14 @@
 use loco_core::contact::builtin::conical::conical_pair;
 use loco_core::track::CurveDirection;
 use loco_core::track::RailIrregularity;
-use loco_core::vehicle::elements::BodyStates;
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{build_wheel_rail, Scenario};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_channels::{wheelset_channel, WheelsetQuantity};
-use loco_core::vehicle::wheel_rail::{ContactMode, WheelForces, WheelRail};
+use loco_core::vehicle::model::elements::BodyStates;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::wheel_channels::{wheelset_channel, WheelsetQuantity};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::wheel_rail::{ContactMode, WheelForces, WheelRail};
+use loco_core::vehicle::scenarios::scenario::Scenario;
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 
 mod curve_support;
 use curve_support::cone::{half_distance, research, run_cone, run_cone_towards, G};
@@ -294,7 +295,7 @@ fn a_two_axle_bogie_takes_the_curve_as_the_linear_theory_gives() {
     // Classical shape of the solution: the leading wheelset runs outward with its nose
     // outward (positive angle of attack), the trailing one nearer the centre, nose inward.
     assert!(x[0] < x[2] && x[2] < 0.0 && x[1] < 0.0 && x[3] > 0.0);
-    // The recorded angle-of-attack channel (`wheelset<w>_yaw`, `vehicle::wheel_channels`; what
+    // The recorded angle-of-attack channel (`wheelset<w>_yaw`, `vehicle::output::wheel_channels`; what
     // `loco curving` reports) is the theory's ψ_i, the yaw against the track tangent at each
     // wheelset, in a left curve and (mirrored, the sign flipped) in a right one. The theory
     // tells that definition apart from the two a model could slip into: the yaw against the

@@ -3,11 +3,11 @@
 //! the S_norm profiles.
 
 use loco_core::track::RailIrregularity;
-use loco_core::vehicle::elements::BodyStates;
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_rail::{ContactMode, WheelForces};
+use loco_core::vehicle::model::elements::BodyStates;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::wheel_rail::{ContactMode, WheelForces};
 
 mod curve_support;
 use curve_support::cone::{half_distance, run_cone, G};

@@ -14,10 +14,11 @@
 mod box_support;
 
 use box_support::{damper_corners, vehicle, SOFT_CORNER, STIFF_CORNER};
-use loco_core::vehicle::integrator::Integrator;
-use loco_core::vehicle::run::{EXPONENTIAL_STEP, REFERENCE_STEP};
-use loco_core::vehicle::scenario::{simulate, Scenario};
-use loco_core::vehicle::scenario_settings::{DEFAULT_DISTANCE, DEFAULT_SPEED};
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::Scenario;
+use loco_core::vehicle::scenarios::scenario_settings::{DEFAULT_DISTANCE, DEFAULT_SPEED};
+use loco_core::vehicle::time::integrator::Integrator;
+use loco_core::vehicle::time::integrator::{EXPONENTIAL_STEP, REFERENCE_STEP};
 use rayon::prelude::*;
 
 /// C_sy = 20 kN·s/m with K_ncsy = 40 kN/mm: k/c = 2000 1/s.

@@ -8,14 +8,15 @@
 
 use loco_core::dampers::Damper;
 use loco_core::track::{Channel, TrackIrregularity};
-use loco_core::vehicle::frequency_response::ResponseSolver;
-use loco_core::vehicle::linearise::{least_damped, LinearisationSettings};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{simulate, start_distance, Scenario, TrackSpec};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_input::{
+use loco_core::vehicle::analysis::frequency_response::ResponseSolver;
+use loco_core::vehicle::analysis::linearise::{least_damped, LinearisationSettings};
+use loco_core::vehicle::analysis::track_input::{
     scenario_track_model, scenario_track_model_with, TrackInputModel,
 };
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{start_distance, Scenario, TrackSpec};
 use loco_core::Result;
 use nalgebra::Complex;
 use rayon::prelude::*;

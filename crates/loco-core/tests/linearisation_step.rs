@@ -1,4 +1,4 @@
-//! The central-difference steps of the linearisation (`vehicle::linearise`) lie on plateaus of
+//! The central-difference steps of the linearisation (`vehicle::analysis::linearise`) lie on plateaus of
 //! the right-hand side: each group of a wheelset's columns of `A` (and the rails' columns of `B`)
 //! is compared with the same columns at other steps, about the candidate two groups of steps
 //! (`LinearisationSettings::two_groups`). S_norm + YD1 at 200 km/h shows both effects
@@ -6,11 +6,13 @@
 //! stick/slip structure at tiny creepages along the velocities.
 
 use loco_core::dampers::Damper;
-use loco_core::vehicle::layout::{wheelset, N_DOF, PITCH, ROLL, X, YAW, Z};
-use loco_core::vehicle::linearise::LinearisationSettings;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::Scenario;
-use loco_core::vehicle::track_input::{scenario_track_model_with, TrackInputModel, RAIL_INPUTS};
+use loco_core::vehicle::analysis::linearise::LinearisationSettings;
+use loco_core::vehicle::analysis::track_input::{
+    scenario_track_model_with, TrackInputModel, RAIL_INPUTS,
+};
+use loco_core::vehicle::model::layout::{wheelset, N_DOF, PITCH, ROLL, X, YAW, Z};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 
 /// The model of S_norm + YD1 at 200 km/h linearised with `settings`.
 fn model(settings: LinearisationSettings) -> TrackInputModel {

@@ -3,16 +3,17 @@
 //! steps that are refused), and parameters
 //! allowed outside their physical range as suspects of an equilibrium or a divergence.
 
-use loco_core::vehicle::integrator::Integrator;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
+use loco_core::vehicle::analysis::stiffest_mode::{
+    stiffest_mode, MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
 };
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{
-    static_equilibrium, stiffest_mode, StaticsSettings, MAX_SUBSTEPS, RK4_IMAGINARY_LIMIT,
-};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::time::integrator::Integrator;
 use loco_core::LocoError;
 use std::sync::Arc;
 

@@ -1,10 +1,12 @@
 //! The output channels of a run: one list of names ([`channel_names`]) shared by `run` and the
 //! batch binary's check of a study's channels, with a force channel for every damper.
 
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::channel_names;
-use loco_core::vehicle::scenario::{simulate, PerfectTrackVehicle, Scenario};
-use loco_core::vehicle::suspension::DamperRole;
+use loco_core::vehicle::model::suspension::DamperRole;
+use loco_core::vehicle::output::run::channel_names;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::perfect_track::PerfectTrackVehicle;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 use std::collections::HashSet;
 
 /// S_norm at 200 km/h over `distance` (m) of synthesised track (seed 3).
@@ -79,14 +81,15 @@ fn run_records_the_listed_channels_and_vertical_damper_forces() {
 /// point's other components): checked at the end of 1.5 s on synthesised track.
 #[test]
 fn on_straight_track_the_accelerometers_add_the_gravity_of_the_bodys_roll() {
-    use loco_core::vehicle::channel_set::ChannelSet;
-    use loco_core::vehicle::integrator::OdeSystem;
-    use loco_core::vehicle::layout::*;
-    use loco_core::vehicle::run::{run, Recorded, RunSettings};
-    use loco_core::vehicle::scenario::{build_track, build_wheel_rail, start_distance};
-    use loco_core::vehicle::simulation::VehicleSystem;
-    use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-    use loco_core::vehicle::structure::VehicleStructure;
+    use loco_core::vehicle::model::layout::*;
+    use loco_core::vehicle::model::structure::VehicleStructure;
+    use loco_core::vehicle::output::channel_set::ChannelSet;
+    use loco_core::vehicle::output::run::{run, Recorded, RunSettings};
+    use loco_core::vehicle::scenarios::scenario::{build_track, start_distance};
+    use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+    use loco_core::vehicle::system::simulation::VehicleSystem;
+    use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+    use loco_core::vehicle::time::integrator::OdeSystem;
     use std::sync::Arc;
     let s = scenario(100.0);
     let structure = Arc::new(VehicleStructure::new(ParameterSet::default_vehicle()).unwrap());

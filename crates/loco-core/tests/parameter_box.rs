@@ -4,13 +4,13 @@
 mod box_support;
 
 use box_support::{damper_corners, vehicle, SOFT_CORNER, STIFF_CORNER};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate, start_distance, Scenario,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::suspension::DamperRole;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::model::suspension::DamperRole;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
 use rayon::prelude::*;
 use std::sync::Arc;
 

@@ -2,8 +2,9 @@
 //! Maxwell damper with n times the damping and n times the series stiffness (same relaxation time
 //! c/k, n times the force), so the linearised vehicles must agree.
 
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{linearised, Scenario};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::linearised;
+use loco_core::vehicle::scenarios::scenario::Scenario;
 
 fn state_matrix(overrides: &[(&str, f64)]) -> (Vec<f64>, usize) {
     let mut p = ParameterSet::default_vehicle();

@@ -16,10 +16,11 @@
 
 use loco_core::metrics::{sperling, welch_psd, Direction, SperlingParams, WelchParams};
 use loco_core::track::{synthesize, SynthesisParams, TrackSpectrum};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::response_psd::{response_psd, PsdSettings};
-use loco_core::vehicle::scenario::{simulate, Scenario, TrackSpec};
-use loco_core::vehicle::track_input::scenario_track_model;
+use loco_core::vehicle::analysis::response_psd::{response_psd, PsdSettings};
+use loco_core::vehicle::analysis::track_input::scenario_track_model;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
 use std::sync::Arc;
 
 /// Factor on the TB/T 3352-2014 amplitudes: 0.1 keeps every wheelset within ±1 mm (S_norm).

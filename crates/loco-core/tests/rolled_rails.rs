@@ -14,17 +14,17 @@
 use loco_core::contact::table::ROLL_LAYER;
 use loco_core::dampers::Damper;
 use loco_core::track::{parse_csv, MeasuredParams, TrackIrregularity};
-use loco_core::vehicle::elements::BodyStates;
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::rail_plane::RailPlane;
-use loco_core::vehicle::run::{integrate, Flow};
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::model::elements::BodyStates;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::run::{integrate, Flow};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::rail_plane::RailPlane;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use loco_core::LocoError;
 use std::sync::Arc;
 

@@ -3,14 +3,14 @@
 //! its RK4 schedule.
 
 use loco_core::batch::SampleStatus;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
-};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_rail::ContactMode;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::wheel_rail::ContactMode;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
 use loco_core::LocoError;
 use std::sync::Arc;
 
@@ -106,7 +106,7 @@ fn an_output_rate_between_whole_steps_shortens_the_step_never_lengthens_it() {
     assert_eq!(r.statistics.steps, (duration * 800.0).round() as u64);
     assert_eq!(r.output.sampling_rate, 400.0);
     // Whole ratios keep their count: 500 Hz takes one 2 ms step, two 1 ms steps, three of 2/3 ms.
-    use loco_core::vehicle::run::steps_per_sample;
+    use loco_core::vehicle::output::run::steps_per_sample;
     for (rate, step, n) in [
         (500.0, 2e-3, 1),
         (500.0, 1e-3, 2),

@@ -8,15 +8,15 @@ use loco_core::contact::kalker::KalkerTable;
 use loco_core::contact::profile::ProfileKind;
 use loco_core::contact::profile_builder::ProfileBuilder;
 use loco_core::track::TrackIrregularity;
-use loco_core::vehicle::integrator::OdeSystem;
-use loco_core::vehicle::layout::*;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate, start_distance, Scenario, TrackSpec,
-};
-use loco_core::vehicle::simulation::{SpeedProfile, VehicleSystem};
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::model::layout::*;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::simulate::simulate;
+use loco_core::vehicle::scenarios::scenario::{build_track, start_distance, Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
+use loco_core::vehicle::system::simulation::{SpeedProfile, VehicleSystem};
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::time::integrator::OdeSystem;
 use loco_core::LocoError;
 use std::sync::Arc;
 

@@ -3,11 +3,14 @@
 //! speed ramp-down against the linear one (subcritical hunting).
 
 use loco_core::dampers::Damper;
-use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
-use loco_core::vehicle::linear_critical_speed::{linear_critical_speed, LinearSearch};
-use loco_core::vehicle::linearise::{least_damped, LinearisationSettings};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{linearised, simulate, Scenario, TrackSpec};
+use loco_core::vehicle::analysis::linear_critical_speed::{linear_critical_speed, LinearSearch};
+use loco_core::vehicle::analysis::linearise::{least_damped, LinearisationSettings};
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::runs::critical_speed::{
+    nonlinear_critical_speed, RampOutcome, RampSettings,
+};
+use loco_core::vehicle::runs::simulate::{linearised, simulate};
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
 
 /// S_high with YD1 on perfect track at `speed` (m/s) for `seconds` (s), every wheelset
 /// displaced laterally by `disturbance` (m) at the start.
@@ -120,7 +123,7 @@ fn hunting_survives_below_the_linear_critical_speed_down_to_the_ramp_result() {
 
 /// Linear critical speeds of the three study scenarios with YD1 and YD2 (the table of docs/model/frequency_response.md)
 /// with the candidate two groups of linearisation steps and with the default one step of 1e-7
-/// (`vehicle::linearise`): how much the linear stability results depend on the steps (run with
+/// (`vehicle::analysis::linearise`): how much the linear stability results depend on the steps (run with
 /// `--ignored --nocapture`).
 #[test]
 #[ignore = "prints a table for the documentation (about a minute on 2 cores)"]

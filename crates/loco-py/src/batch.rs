@@ -5,7 +5,7 @@ use crate::scenario::PyRunScenario;
 use crate::vehicle::channels_array;
 use crate::vehicle_handle::PyVehicle;
 use loco_core::batch::{run_batch as core_run_batch, BatchMonitor, BatchSpec};
-use loco_core::vehicle::run_statistics::RunStatistics;
+use loco_core::vehicle::system::run_statistics::RunStatistics;
 use loco_core::LocoError;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;

@@ -7,7 +7,7 @@ use loco_core::dampers::{
     HydraulicFrequencyValve, HydraulicParams, HydraulicValve, HydraulicValveParams, MaxwellDamper,
     MaxwellParams, REFERENCE_STROKE_AMPLITUDE_M,
 };
-use loco_core::vehicle::presets;
+use loco_core::vehicle::params::presets;
 use loco_core::LocoError as CoreError;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;

@@ -1,4 +1,4 @@
-//! Bindings of `loco_core::vehicle::{frequency_response, response_psd}`: transfer functions of
+//! Bindings of `loco_core::vehicle::{analysis::frequency_response, analysis::response_psd}`: transfer functions of
 //! the linearised vehicle from track irregularity channels to recorded channels, and output
 //! spectra on a random track.
 
@@ -6,9 +6,9 @@ use crate::errors::run_detached_monitored;
 use crate::scenario::PyRunScenario;
 use crate::vehicle_handle::PyVehicle;
 use loco_core::track::{Channel, TrackSpectrum};
-use loco_core::vehicle::frequency_response::{check_frequencies, ResponseSolver};
-use loco_core::vehicle::response_psd::{response_psd_cancellable, PsdSettings};
-use loco_core::vehicle::track_input::scenario_track_model;
+use loco_core::vehicle::analysis::frequency_response::{check_frequencies, ResponseSolver};
+use loco_core::vehicle::analysis::response_psd::{response_psd_cancellable, PsdSettings};
+use loco_core::vehicle::analysis::track_input::scenario_track_model;
 use loco_core::LocoError;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{Complex64, IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1};

@@ -1,9 +1,11 @@
-//! Bindings of `loco_core::vehicle::input_ranges`: the plausible ranges of a vehicle's inputs
+//! Bindings of `loco_core::vehicle::params::input_ranges`: the plausible ranges of a vehicle's inputs
 //! (`loco.uncertainty.ranges`).
 
 use crate::errors::to_py_err;
 use crate::vehicle_handle::PyVehicle;
-use loco_core::vehicle::input_ranges::{input_ranges as core_ranges, DEFAULT_UNCERTAINTY_TOML};
+use loco_core::vehicle::params::input_ranges::{
+    input_ranges as core_ranges, DEFAULT_UNCERTAINTY_TOML,
+};
 use pyo3::prelude::*;
 
 /// One range: key, nominal, low, high, unit, kind, why, source.

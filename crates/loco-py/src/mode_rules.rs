@@ -1,10 +1,10 @@
-//! Bindings of `loco_core::vehicle::mode_rules`: the carbody and bogie mode rules and the pick
+//! Bindings of `loco_core::vehicle::analysis::mode_rules`: the carbody and bogie mode rules and the pick
 //! among a linearised vehicle's modes (`loco.Eigen.carbody_mode`, `bogie_mode`).
 
 use crate::errors::to_py_err;
 use loco_core::error::LocoError;
-use loco_core::vehicle::mode_rules::{mode_rule, RatedMode, MODE_RULES};
-use loco_core::vehicle::modes::{ModeEnergy, MOTIONS};
+use loco_core::vehicle::analysis::mode_rules::{mode_rule, RatedMode, MODE_RULES};
+use loco_core::vehicle::analysis::modes::{ModeEnergy, MOTIONS};
 use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::prelude::*;
 

@@ -6,7 +6,7 @@
 use crate::errors::to_py_err;
 use crate::vehicle_handle::PyVehicle;
 use loco_core::metrics::METRIC_TABLE;
-use loco_core::vehicle::channel_set::{ChannelKind, ChannelSet};
+use loco_core::vehicle::output::channel_set::{ChannelKind, ChannelSet};
 use pyo3::prelude::*;
 
 /// The run metric names as constants (`Metric.WY_MAX == "wy_max"`), in column order.

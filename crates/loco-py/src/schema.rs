@@ -1,6 +1,6 @@
-//! Bindings of `loco_core::vehicle::parameter_schema`: the vehicle's parameter schema as rows.
+//! Bindings of `loco_core::vehicle::params::parameter_schema`: the vehicle's parameter schema as rows.
 
-use loco_core::vehicle::parameter_schema::{schema, RETIRED};
+use loco_core::vehicle::params::parameter_schema::{schema, RETIRED};
 use pyo3::prelude::*;
 
 /// One schema row: key, SI unit, kind, min, max, affects, description, why, optional.

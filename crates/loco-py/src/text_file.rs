@@ -1,4 +1,4 @@
-//! Input files read as UTF-8 text by the core's one rule (`loco_core::text_file`), for the files
+//! Input files read as UTF-8 text by the core's one rule (`loco_core::util::text_file`), for the files
 //! Python reads itself (the vehicle file).
 
 use crate::errors::run_detached;
@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 fn read_text_file(py: Python<'_>, path: String, kind: String) -> PyResult<String> {
     run_detached(py, move || {
         let kind = FileKind::from_name(&kind, "kind")?;
-        loco_core::text_file::read_text(std::path::Path::new(&path), kind)
+        loco_core::util::text_file::read_text(std::path::Path::new(&path), kind)
     })
 }
 

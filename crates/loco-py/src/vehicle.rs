@@ -6,18 +6,26 @@ use crate::errors::{run_detached, run_detached_monitored};
 use crate::scenario::PyRunScenario;
 use crate::vehicle_handle::PyVehicle;
 use loco_core::metrics::RunMetrics;
-use loco_core::vehicle::critical_speed::{nonlinear_critical_speed, RampOutcome, RampSettings};
-use loco_core::vehicle::layout::{body_names as core_body_names, dof_names as core_dof_names};
-use loco_core::vehicle::linear_critical_speed::{linear_critical_speed_cancellable, LinearSearch};
-use loco_core::vehicle::modes::{body_kind, mode_energies as core_mode_energies, MOTIONS};
-use loco_core::vehicle::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
-use loco_core::vehicle::run::RunOutput;
-use loco_core::vehicle::run_metrics::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
-use loco_core::vehicle::run_statistics::RunStatistics;
-use loco_core::vehicle::scenario::{linearised, simulate_cancellable};
-use loco_core::vehicle::wheel_channels::{
+use loco_core::vehicle::analysis::linear_critical_speed::{
+    linear_critical_speed_cancellable, LinearSearch,
+};
+use loco_core::vehicle::analysis::modes::{
+    body_kind, mode_energies as core_mode_energies, MOTIONS,
+};
+use loco_core::vehicle::model::layout::{
+    body_names as core_body_names, dof_names as core_dof_names,
+};
+use loco_core::vehicle::output::run::RunOutput;
+use loco_core::vehicle::output::run::{BOGIE_LATERAL, CARBODY_LATERAL, CARBODY_VERTICAL};
+use loco_core::vehicle::output::wheel_channels::{
     wheel_channel_table, wheelset_channel_table, FLANGE_CONTACT_ANGLE,
 };
+use loco_core::vehicle::params::parameters::{DEFAULT_VEHICLE_TOML, STUDY_PARAMETERS};
+use loco_core::vehicle::runs::critical_speed::{
+    nonlinear_critical_speed, RampOutcome, RampSettings,
+};
+use loco_core::vehicle::runs::simulate::{linearised, simulate_cancellable};
+use loco_core::vehicle::system::run_statistics::RunStatistics;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;

@@ -4,10 +4,10 @@
 //! overrides (the Dask executor sends a vehicle to its workers that way).
 
 use crate::errors::{run_detached, to_py_err};
-use loco_core::vehicle::layout::N_DOF;
-use loco_core::vehicle::parameter_schema::spec;
-use loco_core::vehicle::parameters::{resolve_name, ParameterSet};
-use loco_core::vehicle::structure::VehicleStructure;
+use loco_core::vehicle::model::layout::N_DOF;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameter_schema::spec;
+use loco_core::vehicle::params::parameters::{resolve_name, ParameterSet};
 use loco_core::LocoError;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
@@ -150,7 +150,8 @@ impl PyVehicle {
     /// The bogie mass m⁺ of the EN 14363 stability limit, kg: `assessment.bogie_mass` when the
     /// file or an override states it, else the heavier bogie's bodies.
     fn en14363_bogie_mass(&self) -> PyResult<f64> {
-        loco_core::vehicle::bogie_mass::en14363_bogie_mass(&self.structure).map_err(to_py_err)
+        loco_core::vehicle::model::bogie_mass::en14363_bogie_mass(&self.structure)
+            .map_err(to_py_err)
     }
 
     /// Mean axle load, N: the weight over the wheelsets.

@@ -7,14 +7,14 @@
 
 use loco_core::error::Result;
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};
-use loco_core::vehicle::creep_model::CreepModel;
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::run::Recorded;
-use loco_core::vehicle::scenario::{
-    build_track, build_wheel_rail, simulate_prepared, Scenario, SimulationResult,
-};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_rail::WheelRail;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::run::Recorded;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::creep_model::CreepModel;
+use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
+use loco_core::vehicle::runs::simulate::{simulate_prepared, SimulationResult};
+use loco_core::vehicle::scenarios::scenario::{build_track, Scenario};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use std::sync::Arc;
 
 /// Scenario `name` (`S_high`, `S_low`, ...) at 200 km/h over 500 m, track seed 1, with the creep

@@ -6,11 +6,11 @@
 //! turning into hundreds of failed samples.
 
 use crate::error::{LocoError, Result};
-use crate::vehicle::parameter_schema::{spec, unknown_key_reason, Affects};
-use crate::vehicle::parameters::{resolve_name, ParameterSet};
-use crate::vehicle::run_limits::MIN_SPEED;
-use crate::vehicle::scenario::MAX_SPEED;
-use crate::vehicle::structure::VehicleStructure;
+use crate::vehicle::model::structure::VehicleStructure;
+use crate::vehicle::params::parameter_schema::{spec, unknown_key_reason, Affects};
+use crate::vehicle::params::parameters::{resolve_name, ParameterSet};
+use crate::vehicle::scenarios::run_limits::MIN_SPEED;
+use crate::vehicle::scenarios::scenario::MAX_SPEED;
 use rayon::prelude::*;
 
 /// Name of the column that sets the running speed of each sample, m/s.

@@ -14,14 +14,14 @@ use super::status::SampleStatus;
 use crate::error::{LocoError, Result};
 use crate::metrics::RunMetrics;
 use crate::track::TrackIrregularity;
-use crate::vehicle::parameters::ParameterSet;
-use crate::vehicle::run::{Recorded, RunOutput};
-use crate::vehicle::run_statistics::RunStatistics;
-use crate::vehicle::scenario::{
-    build_track, shared_wheel_rail, simulate_prepared, Scenario, TrackSpec,
-};
-use crate::vehicle::structure::VehicleStructure;
-use crate::vehicle::wheel_rail::WheelRail;
+use crate::vehicle::model::structure::VehicleStructure;
+use crate::vehicle::output::run::{Recorded, RunOutput};
+use crate::vehicle::params::parameters::ParameterSet;
+use crate::vehicle::rail_contact::wheel_rail::WheelRail;
+use crate::vehicle::runs::simulate::simulate_prepared;
+use crate::vehicle::scenarios::scenario::{build_track, Scenario, TrackSpec};
+use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
+use crate::vehicle::system::run_statistics::RunStatistics;
 use rayon::prelude::*;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};

@@ -296,5 +296,4 @@ impl Swing<'_> {
 }
 
 #[cfg(test)]
-#[path = "conicity_tests.rs"]
 mod tests;

@@ -304,9 +304,7 @@ pub fn fastrip(
 }
 
 #[cfg(test)]
-#[path = "fastrip_tests.rs"]
 mod tests;
 
 #[cfg(test)]
-#[path = "fastrip_reference.rs"]
 mod reference;

@@ -296,5 +296,4 @@ pub(super) fn check_contact_inputs(
 }
 
 #[cfg(test)]
-#[path = "fastsim_tests.rs"]
 mod tests;

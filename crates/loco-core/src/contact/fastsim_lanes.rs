@@ -332,5 +332,4 @@ fn integrate<const W: usize, const G: usize, const T: usize>(
 }
 
 #[cfg(test)]
-#[path = "fastsim_lanes_tests.rs"]
 mod tests;

@@ -140,5 +140,4 @@ pub fn linear_parameters(
 }
 
 #[cfg(test)]
-#[path = "linear_parameters_tests.rs"]
 mod tests;

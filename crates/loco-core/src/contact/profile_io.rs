@@ -23,7 +23,7 @@ pub fn load_profile(
     drop_backtracking: bool,
 ) -> Result<Profile> {
     let label = path.display().to_string();
-    let text = crate::text_file::read_text(path, FileKind::Profile)?;
+    let text = crate::util::text_file::read_text(path, FileKind::Profile)?;
     let name = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())

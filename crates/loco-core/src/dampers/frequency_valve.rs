@@ -443,5 +443,4 @@ impl HydraulicValve {
 }
 
 #[cfg(test)]
-#[path = "frequency_valve_tests.rs"]
 mod tests;

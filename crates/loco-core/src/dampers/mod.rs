@@ -217,7 +217,7 @@ impl Damper {
     /// The decay rate `r` (1/s) of the internal state where the law is linear in it, a linear
     /// Maxwell element with a compliant series spring (`ẋ_d = r·(x − x_d)`, `r = k/c`): the
     /// exponential scheme solves that state exactly at any step
-    /// ([`crate::vehicle::exponential_rk4`]). `None` for every other law.
+    /// ([`crate::vehicle::time::exponential_rk4`]). `None` for every other law.
     pub fn linear_state_rate_per_s(&self) -> Option<f64> {
         match self {
             Self::Maxwell(d) if !d.has_rigid_series() && d.params().blow_off.is_none() => {

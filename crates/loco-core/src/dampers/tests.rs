@@ -362,7 +362,6 @@ fn bench_rejects_bad_input() {
 }
 
 /// The reduced laws of [`Damper::for_step`] (its own file).
-#[path = "for_step_tests.rs"]
 mod for_step;
 
 /// The step's end forms strokes only for the dampers with a valve: the others' `advance` must

@@ -140,5 +140,4 @@ fn mean_and_variation(peaks: &[f64]) -> (f64, f64) {
 }
 
 #[cfg(test)]
-#[path = "limit_cycle_tests.rs"]
 mod tests;

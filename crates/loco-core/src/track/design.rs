@@ -8,7 +8,7 @@
 //! changes linearly over its run-off (the whole transition by default, or a shorter run-off
 //! centred in it). Signs: curvature κ > 0 for a curve to the left (centre of curvature at +y);
 //! the cant raises the outer rail, so the track plane's roll θ (positive: left rail higher, the
-//! convention of `vehicle::rail_plane`) is `θ = −sign(κ)·atan(c / 2b)` with 2b the distance
+//! convention of `vehicle::rail_contact::rail_plane`) is `θ = −sign(κ)·atan(c / 2b)` with 2b the distance
 //! between the nominal contact points. Beyond the last section the end values continue (a run
 //! may end inside a steady curve; after a design that ends straight it runs on straight track,
 //! and a scenario refuses a run that would leave a design ending in a curve); before the first,
@@ -376,9 +376,7 @@ pub fn min_radius_of(max_radius_difference: f64, r0: f64, b: f64) -> f64 {
     2.0 * b * r0 / max_radius_difference
 }
 
-#[path = "design_at.rs"]
 mod at;
 
 #[cfg(test)]
-#[path = "design_tests.rs"]
 mod tests;

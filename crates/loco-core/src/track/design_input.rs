@@ -8,9 +8,9 @@
 //! order, empty cells for fields a section does not use).
 
 use super::design::{CurveDirection, DesignSection};
-use crate::csv_table::CsvTable;
 use crate::error::{FileKind, LocoError, Result};
-use crate::toml_fields::read_table;
+use crate::util::csv_table::CsvTable;
+use crate::util::toml_fields::read_table;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -173,7 +173,7 @@ pub fn parse_sections_csv(text: &str, path: &str) -> Result<Vec<SectionSetting>>
 
 /// Sections from a CSV file.
 pub fn load_sections_csv(path: &Path) -> Result<Vec<SectionSetting>> {
-    let text = crate::text_file::read_text(path, FileKind::Track)?;
+    let text = crate::util::text_file::read_text(path, FileKind::Track)?;
     parse_sections_csv(&text, &path.display().to_string())
 }
 
@@ -305,7 +305,7 @@ mod tests {
 
 #[cfg(test)]
 mod study_file_tests {
-    use crate::vehicle::scenario_settings::ScenarioSettings;
+    use crate::vehicle::scenarios::scenario_settings::ScenarioSettings;
     use std::path::Path;
 
     #[test]

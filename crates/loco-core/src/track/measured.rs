@@ -43,7 +43,7 @@ impl Default for MeasuredParams {
 
 /// Reads and validates the file at `path`.
 pub fn load_csv(path: &str, params: &MeasuredParams) -> Result<TrackIrregularity> {
-    let text = crate::text_file::read_text(std::path::Path::new(path), FileKind::Track)?;
+    let text = crate::util::text_file::read_text(std::path::Path::new(path), FileKind::Track)?;
     parse_csv(&text, path, params)
 }
 

@@ -1,92 +1,31 @@
-//! The 90-DOF B0-B0 locomotive (SPEC §1): parameters, bodies, suspension, equations of motion.
+//! The 90-DOF B0-B0 locomotive (SPEC §1): parameters, bodies, suspension, contact, equations of
+//! motion, runs and their analyses, one folder per layer. A layer uses only the layers before it
+//! in this list (`tests/test_module_graph.py` checks that no modules use each other):
 //!
-//! - [`parameters`]: the parameter file (embedded default vehicle, overrides by name), checked
-//!   against [`parameter_schema`] (unit, kind, physical range, what each key affects) with
-//!   [`units`] (the units a file may state a value in).
-//! - [`layout`]: the 90 coordinates and 25 bodies, `dof_names()`.
-//! - [`kinematics`]: small-motion maps from coordinates to body motions.
-//! - [`bodies`]: mass properties and positions of the bodies.
-//! - [`mass`]: the constant mass matrix and its block factorisation.
-//! - [`elements`]: bushings, springs, bump stops.
-//! - [`suspension`]: every suspension element placed on the vehicle.
-//! - [`structure`]: the assembled vehicle and its gravity, gyroscopic and spring forces.
-//! - [`integrator`]: fixed-step RK4.
-//! - [`linearise`]: the state matrix about equilibrium, its eigenvalues (nalgebra) and the
-//!   linear critical speed; [`critical_speed`]: the nonlinear critical speed by a speed ramp.
-//! - [`modes`]: which bodies and motions carry a mode's kinetic energy; [`mode_rules`]: which
-//!   mode is the carbody mode and which the bogie mode.
-//! - [`track_input`], [`shifted_hessenberg`], [`frequency_response`], [`response_psd`]: the model
-//!   linearised with the track as input, its transfer functions to every recorded channel and the
-//!   output spectra on a random track.
-//! - [`rail_plane`]: the rails' plane at a wheelset, in which the contact table is read (cross
-//!   level rolls it); [`track_limits`]: which irregularities the contact can follow.
-//! - [`scenario_settings`]: a scenario's user settings (TOML or keyword arguments) resolved once,
-//!   with the only defaults ([`scenario_settings::ScenarioSettings::defaults`]); [`presets`]: the
-//!   study's scenarios and yaw dampers by name;
-//!   [`creep_model`]: the creep model of a run by name (`fastsim`, `fastrip`, `table`).
-//! - [`statics`]: the static equilibrium every run starts from; [`stiffest_mode`]: the explicit
-//!   step its stiffest mode allows; [`suspects`]: the out-of-range parameters a model failure names;
-//!   [`run_statistics`]: what a run
-//!   cost (evaluations, steps, Newton iterations, wall time); [`run_limits`]: the cost bounds a
-//!   scenario must keep (lowest speed, most steps and samples, largest creep grid).
-//! - [`wheel_channels`]: the per-wheel and per-wheelset channels (Q, Y, Y/Q, ΔQ/Q0, T·γ, contact
-//!   angle, flange contact, ΣY), named once.
+//! - [`params`]: the parameter file (embedded default vehicle, overrides by name), its schema
+//!   (unit, kind, physical range, what each key affects), units, input ranges and presets.
+//! - [`model`]: the 90 coordinates and 25 bodies, kinematics, mass, suspension elements, the
+//!   bogie mass and the assembled [`model::structure::VehicleStructure`].
+//! - [`rail_contact`]: the wheel-rail forces ([`rail_contact::wheel_rail::WheelRail`]), the creep
+//!   model by name, the rails' plane at a wheelset, the irregularities the contact can follow.
+//! - [`curving`]: the track frame each body's coordinates are measured from on a curve.
+//! - [`time`]: the ODE trait, RK4 and the exponential RK4 with the parts it solves exactly.
+//! - [`system`]: [`system::simulation::VehicleSystem`], the equations of motion, and the static
+//!   equilibrium every run starts from.
+//! - [`output`]: a run ([`output::run::run`]) and what it records: channels, accelerometers,
+//!   wheel channels, the metrics of a run.
+//! - [`scenarios`]: a scenario's settings resolved once, its cost bounds and its contact.
+//! - [`analysis`]: the state matrix, modes, the stiffest mode, the linear critical speed, the
+//!   track-input model, its transfer functions and output spectra.
+//! - [`runs`]: `simulate`, `linearised` and the nonlinear critical speed of a scenario.
 
-pub mod accelerometer;
-pub mod bodies;
-pub mod bogie_mass;
-mod bushing_lanes;
-pub mod channel_set;
-#[cfg(feature = "record-contacts")]
-pub mod contact_recording;
-pub mod creep_decay;
-pub mod creep_model;
-pub mod critical_speed;
-pub mod damper_elements;
-mod damper_lanes;
-pub mod decaying_states;
-pub mod elements;
-pub mod exponential_rk4;
-pub mod frequency_response;
-pub mod input_ranges;
-pub mod integrator;
-pub mod kinematics;
-pub mod layout;
-pub mod linear_critical_speed;
-pub mod linearise;
-pub mod long_step_range;
-pub mod mass;
-pub mod mode_rules;
-pub mod modes;
-pub mod parameter_schema;
-pub mod parameters;
-mod pending_contact;
-pub mod presets;
-pub mod rail_plane;
-mod rail_planes;
-pub mod response_psd;
-mod row_groups;
-pub mod run;
-pub mod run_limits;
-pub mod run_metrics;
-pub mod run_statistics;
-pub mod scenario;
-pub mod scenario_settings;
-pub mod shifted_hessenberg;
-pub mod simulate;
-pub mod simulation;
-mod state_check;
-mod states_cache;
-pub mod statics;
-pub mod stiff_linear_part;
-pub mod stiffest_mode;
-pub mod structure;
-pub mod suspects;
-pub mod suspension;
-pub mod track_frame;
-pub mod track_input;
-pub mod track_limits;
-pub mod units;
-pub mod wheel_channels;
-pub mod wheel_rail;
-pub mod wheel_rail_cache;
+pub mod analysis;
+pub mod curving;
+pub mod model;
+pub mod output;
+pub mod params;
+pub mod rail_contact;
+pub mod runs;
+pub mod scenarios;
+pub mod system;
+pub mod time;

@@ -1,7 +1,7 @@
 //! The SPEC §6 parameter box as the integration tests sample it: the two opposite corners of
 //! the six parameters and the four damper corners, and the default vehicle with overrides.
 
-use loco_core::vehicle::parameters::ParameterSet;
+use loco_core::vehicle::params::parameters::ParameterSet;
 
 /// The softest bogie: least yaw damping, softest primary, the stiff-spring lateral damper (in
 /// its rigid form at 1 ms, compliant at 0.5 ms).

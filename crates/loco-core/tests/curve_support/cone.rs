@@ -6,10 +6,11 @@
 use super::{run_on_curve, CurveRun};
 use loco_core::contact::builtin::conical::conical_pair;
 use loco_core::track::{CurveDirection, DesignSection};
-use loco_core::vehicle::parameters::ParameterSet;
-use loco_core::vehicle::scenario::{build_wheel_rail, Scenario, TrackSpec};
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::wheel_rail::WheelRail;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::params::parameters::ParameterSet;
+use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
+use loco_core::vehicle::scenarios::scenario::{Scenario, TrackSpec};
+use loco_core::vehicle::scenarios::scenario_contact::build_wheel_rail;
 use std::sync::Arc;
 
 pub const G: f64 = 9.81;

@@ -1,17 +1,19 @@
 //! Test support shared by the curving integration tests: the locomotive run on a designed
 //! alignment from its static equilibrium, with the system and final state kept for inspection
-//! (`vehicle::scenario::simulate` keeps neither).
+//! (`vehicle::runs::simulate` keeps neither).
 
 use loco_core::track::DesignSection;
-use loco_core::vehicle::integrator::OdeSystem;
-use loco_core::vehicle::run::{run, Recorded, RunOutput, RunSettings};
-use loco_core::vehicle::scenario::{build_track, curve_design, start_distance, Scenario};
-use loco_core::vehicle::simulation::VehicleSystem;
-use loco_core::vehicle::statics::{static_equilibrium, StaticsSettings};
-use loco_core::vehicle::stiffest_mode::stable_step;
-use loco_core::vehicle::structure::VehicleStructure;
-use loco_core::vehicle::track_frame::CurvedTrack;
-use loco_core::vehicle::wheel_rail::WheelRail;
+use loco_core::vehicle::analysis::stiffest_mode::stable_step;
+use loco_core::vehicle::curving::track_frame::CurvedTrack;
+use loco_core::vehicle::model::structure::VehicleStructure;
+use loco_core::vehicle::output::run::{run, Recorded, RunOutput, RunSettings};
+use loco_core::vehicle::rail_contact::wheel_rail::WheelRail;
+use loco_core::vehicle::scenarios::scenario::{
+    build_track, curve_design, start_distance, Scenario,
+};
+use loco_core::vehicle::system::simulation::VehicleSystem;
+use loco_core::vehicle::system::statics::{static_equilibrium, StaticsSettings};
+use loco_core::vehicle::time::integrator::OdeSystem;
 use std::sync::Arc;
 
 pub mod cone;
