@@ -21,23 +21,22 @@ SEEDS = (0, 1)
 DAMPERS = {"YD1": loco.dampers.YD1, "YD2": loco.dampers.YD2, "FSD": loco.dampers.FSD}
 
 
-@functools.cache
-def metrics(scenario: str, damper: str) -> list[dict[str, float]]:
-    vehicle = loco.Locomotive.default()
+def _runs(damper: loco.dampers.Damper, **where: object) -> list[dict[str, float]]:
+    """The study's run (500 m at 200 km/h after 500 m of lead-in) on each seed of SEEDS."""
     return [
         loco.simulate(
-            vehicle,
+            loco.Locomotive.default(),
             loco.Scenario(
-                name=scenario,
-                speed=SPEED,
-                distance=500.0,
-                lead_in=500.0,
-                seed=seed,
-                yaw_damper=DAMPERS[damper],
+                speed=SPEED, distance=500.0, lead_in=500.0, seed=seed, yaw_damper=damper, **where
             ),
         ).metrics
         for seed in SEEDS
     ]
+
+
+@functools.cache
+def metrics(scenario: str, damper: str) -> list[dict[str, float]]:
+    return _runs(DAMPERS[damper], name=scenario)
 
 
 def values(scenario: str, damper: str, name: str) -> np.ndarray:
@@ -80,22 +79,8 @@ def premise_case_metrics(damper: str) -> list[dict[str, float]]:
     from loco.studies.premise_probability import DAMPERS as ALL_DAMPERS
 
     pair = ContactPair("jm3-new", "cn60", 20)
-    return [
-        loco.simulate(
-            loco.Locomotive.default(),
-            loco.Scenario(
-                wheel=pair.wheel,
-                rail=pair.rail,
-                rail_inclination=pair.inclination,
-                speed=SPEED,
-                distance=500.0,
-                lead_in=500.0,
-                seed=seed,
-                yaw_damper=ALL_DAMPERS[damper],
-            ),
-        ).metrics
-        for seed in SEEDS
-    ]
+    where = {"wheel": pair.wheel, "rail": pair.rail, "rail_inclination": pair.inclination}
+    return _runs(ALL_DAMPERS[damper], **where)
 
 
 def test_where_the_premise_holds_the_low_damping_rides_best_and_the_fsds_sit_between() -> None:
