@@ -380,6 +380,10 @@ def save_curving(study: CurvingStudy, out_dir: str | Path) -> StudyRecord:
         parameters=study.settings,
         seconds=study.seconds,
         notes=curving_notes(study),
+        captions={
+            figure.name: "Guiding forces (ΣY, Y/Q, Y_qst) against cant deficiency for each yaw "
+            "damper, with the EN 14363 limits as lines: a point above its line fails the limit."
+        },
     )
 
 

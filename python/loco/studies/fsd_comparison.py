@@ -463,4 +463,21 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         parameters={k: v for k, v in cmp.settings.items() if k != "dampers"},
         seconds=cmp.seconds + time.perf_counter() - start,
         notes=notes,
+        captions=FIGURE_CAPTIONS,
     )
+
+
+#: What to read from each figure of the damper comparison.
+FIGURE_CAPTIONS = {
+    "fsd_time_histories.png": "A_yc and A_yb with each damper on track 0: growing or steady "
+    "oscillations of large amplitude are a limit cycle (hunting), a decaying ripple a stable "
+    "vehicle.",
+    "fsd_psd.png": "PSDs of A_yc and A_yb with each damper, averaged over the tracks: the "
+    "damper with the lower, broader peak damps that mode better.",
+    "fsd_peaks.png": "The PSD peaks per damper and scenario with their 95 % intervals over the "
+    "tracks: compare the dampers within a scenario (lower is better).",
+    "fsd_valve.png": "The FSD's valve scale factor over time on track 0 (1 closed, high damping; "
+    "lower open, low damping): where it stays at 1 the FSD acts as the stiff damper YD2.",
+    "fsd_valve_hydraulic.png": "The same for FSD-H, the FSD with the hydraulic frequency "
+    "valve.",
+}

@@ -218,6 +218,11 @@ def run_fsd_design(
         parameters={k: v for k, v in settings.items() if k != "references"},
         seconds=seconds,
         notes=_notes(study, summary, critical, wall["optimisation"], speed_kmh),
+        captions={
+            figure.name: "The FSD designs found by NSGA-II on the simulator (their objectives "
+            "and the front) and the chosen design over conicity against the fixed dampers: a "
+            "design that stays below both fixed dampers across conicity holds every scenario."
+        },
     )
 
 

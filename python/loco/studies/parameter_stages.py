@@ -185,6 +185,19 @@ def run_sensitivity(
         ],
         parameters=settings,
         notes=notes,
+        captions={
+            **{
+                f"sobol_{d.metric}.png": f"First-order (S1, left) and total (ST, right) Sobol' "
+                f"indices of {d.metric} per parameter, direct and on the surrogate, with 95 % "
+                "bootstrap intervals: a tall ST is a parameter that matters; ST well above S1 "
+                "one that acts through interactions. A negative S1 is estimator noise around "
+                "zero (the true index is at least 0); with a small base sample N the direct "
+                "intervals are wide."
+                for d in direct
+            },
+            "sobol_convergence.png": "The direct indices against the Saltelli base sample N: "
+            "where they still move between the last sizes, N is too small to trust them.",
+        },
     )
 
 
@@ -313,6 +326,14 @@ def run_optimisation(
         ],
         parameters=settings,
         notes=notes,
+        captions={
+            "pareto.png": "The Pareto front of the two objectives found by NSGA-II on the "
+            "surrogate, and the parameters along it: each point is a design that no other beats "
+            "on both objectives; the trade-off is the front's slope.",
+            "pareto_verification.png": "Points of the front re-simulated (markers) against the "
+            "surrogate's front (grey): the gap is how far the surrogate's optimum is from the "
+            "simulator's.",
+        },
     )
 
 

@@ -250,6 +250,11 @@ def run_monte_carlo(
             save_json(settings, out_dir / "monte_carlo.json"),
         ],
         parameters=settings,
+        captions={
+            "monte_carlo.png": "Each objective against each of the six parameters over the "
+            "Latin hypercube: a clear trend in a panel is a parameter that drives that objective; "
+            "a shapeless cloud one that matters little alone."
+        },
         notes=f"{n_samples} samples; failed runs per objective: "
         + ", ".join(f"{r.objective} {r.n_failed}" for r in summary.itertuples()),
     )

@@ -109,6 +109,13 @@ class PremiseMapStage(Stage):
             figures=[figure],
             tables=tables,
             notes=premise_cells_note(cells),
+            captions={
+                figure.name: "Damping ratio ζ of the linearised carbody (top) and bogie (middle) "
+                "modes over conicity and yaw damping, on ideal cones and on real wheel-rail "
+                "pairs, and over speed (bottom): red cells (ζ < 0) are unstable; the premise "
+                "needs the carbody mode stable at low yaw damping and unstable at high, on low "
+                "conicity (left of the black line)."
+            },
         )
 
 
@@ -172,6 +179,11 @@ class ScreeningStage(Stage):
             title="Which estimates matter: Morris screening of the ranged inputs",
             figures=[figure],
             tables=[table_path, outputs_path],
+            captions={
+                figure.name: "Morris screening per output: μ* (mean absolute elementary "
+                "effect) against σ (its spread) for each ranged input: inputs far to the right "
+                "matter most; a high σ means a non-linear effect or interactions."
+            },
             notes=f"{len(frame)} points of {result['input'].nunique()} inputs{reused}. "
             + top_inputs_note(result),
         )
@@ -256,6 +268,12 @@ class PlausibleStage(Stage):
             title="The verdict's probability: plausible locomotives",
             figures=[figure],
             tables=[*paths.values(), meta_path],
+            captions={
+                figure.name: "The share of plausible locomotives on which the premise holds, "
+                "per wheel-rail pair and pooled, with 95 % Wilson intervals, and how the FSD "
+                "compares with the fixed dampers on them: a share near 0 or 1 with a narrow "
+                "interval is a firm answer."
+            },
             notes=probability_note(summary["fraction"], result.failed),
         )
 

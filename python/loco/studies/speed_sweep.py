@@ -396,4 +396,15 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
         parameters={k: v for k, v in sweep.settings.items() if k != "yaw_damper"},
         seconds=sweep.seconds + time.perf_counter() - start,
         notes=notes,
+        captions={
+            "speed_sweep.png": "W_y (left) and A_yb (right) against speed for each scenario, "
+            "with the yaw damper of the sweep: where a curve rises steeply the ride or the bogie "
+            "degrades; the bars are 95 % intervals over the tracks, the dashed line the study "
+            "speed.",
+            "speed_sweep_psd.png": "Power spectral densities of A_yc and A_yb at the study speed, "
+            "averaged over the tracks: a narrow peak is a lightly damped mode (carbody sway at "
+            "low frequency, bogie hunting at a few hertz).",
+            "speed_sweep_peaks.png": "The PSD peaks over speed with their 95 % intervals over the "
+            "tracks: which speed excites each mode most.",
+        },
     )
