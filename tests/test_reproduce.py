@@ -61,13 +61,9 @@ ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
 
 
 @pytest.fixture(scope="module")
-def run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str]:
-    """The tiny study, run once through the CLI; its output directory and printed log."""
-    out = tmp_path_factory.mktemp("reproduce")
-    buffer = io.StringIO()
-    with contextlib.redirect_stdout(buffer):
-        assert main([*ARGS, "--out", str(out)]) == 0
-    return out, buffer.getvalue()
+def run(tiny_study: tuple[Path, str]) -> tuple[Path, str]:
+    """The tiny study (``tiny_study`` of conftest.py, run once per session)."""
+    return tiny_study
 
 
 def test_every_stage_written(run: tuple[Path, str]) -> None:

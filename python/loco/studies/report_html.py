@@ -89,10 +89,13 @@ def _inline(text: str) -> str:
 def _figure(figure: Figure) -> str:
     data = base64.b64encode(Path(figure.path).read_bytes()).decode("ascii")
     alt = html.escape(figure.path.stem, quote=True)
+    name = html.escape(figure.path.name)
+    caption = _inline(figure.caption)
+    if figure.caption != figure.path.name:
+        caption += f' <span class="file">({name})</span>'
     return (
         f'<figure><img src="data:image/png;base64,{data}" alt="{alt}">'
-        f"<figcaption>{_inline(figure.caption)} "
-        f'<span class="file">({html.escape(figure.path.name)})</span></figcaption></figure>'
+        f"<figcaption>{caption}</figcaption></figure>"
     )
 
 
