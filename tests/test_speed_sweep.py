@@ -65,10 +65,13 @@ def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     for metric in ("wy_max", "ayb_peak_lp"):
         values = sweep.metric(metric)[2, j]
         assert values[0] == pytest.approx(single.metrics[metric], rel=1e-9)
-        assert sweep.at("S_high", metric, 200.0) == pytest.approx(values.mean(), rel=1e-12)
+        # The geometric mean, and the t interval of the logs taken back.
+        logs = np.log(values)
+        assert sweep.at("S_high", metric, 200.0) == pytest.approx(np.exp(logs.mean()), rel=1e-12)
         ci = sweep.interval("S_high", metric, 200.0)
-        half = 12.706 * values.std(ddof=1) / np.sqrt(2)  # t(0.975, 1 dof)
-        assert ci.high - ci.mean == pytest.approx(half, rel=1e-4)
+        half = 12.706 * logs.std(ddof=1) / np.sqrt(2)  # t(0.975, 1 dof)
+        assert np.log(ci.high / ci.mean) == pytest.approx(half, rel=1e-4)
+        assert np.log(ci.mean / ci.low) == pytest.approx(half, rel=1e-4) and ci.low > 0
     f, p = loco.metrics.psd(single.channel(A_YB[1]), single.sampling_rate)
     mean = sweep.spectra[("S_high", "A_yb")]
     np.testing.assert_allclose(mean.frequency, f)
@@ -92,12 +95,18 @@ def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
     assert len(summary) == 6 and (summary["n_tracks"] == TRACKS).all()
     row = summary[(summary["scenario"] == "S_low") & (summary["speed_kmh"] == 200.0)].iloc[0]
     ci = sweep.interval("S_low", "wy_max", 200.0)
-    assert row["W_y mean"] == pytest.approx(ci.mean)
+    assert row["W_y geomean"] == pytest.approx(ci.mean)
     assert row["W_y low"] == pytest.approx(ci.low) and row["W_y high"] == pytest.approx(ci.high)
-    assert row["W_y low"] < row["W_y mean"] < row["W_y high"]
+    assert 0 < row["W_y low"] < row["W_y geomean"] < row["W_y high"]
     peaks = pd.read_csv(tmp_path / "speed_sweep" / "speed_sweep_peaks.csv")
     assert len(peaks) == 6 and (peaks["speed_kmh"] == 200.0).all()
+    assert (0 < peaks["psd_peak_low"]).all()
     assert (peaks["psd_peak_low"] < peaks["psd_peak_high"]).all()
+    # The dominant frequency is the median of the tracks' values, each of them given (to 3
+    # significant digits, hence the tolerance).
+    for row in peaks.itertuples():
+        each = [float(v) for v in row.dominant_hz_tracks.split(", ")]
+        assert len(each) == TRACKS and row.dominant_hz == pytest.approx(np.median(each), rel=1e-2)
     settings = json.loads((tmp_path / "speed_sweep" / "speed_sweep.json").read_text())
     assert settings["loco_version"] == loco.__version__
     assert settings["distance_m"] == DISTANCE and settings["track_seed"] == SEED

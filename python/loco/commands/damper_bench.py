@@ -28,6 +28,7 @@ import pandas as pd
 import loco
 from loco import dampers
 from loco.commands.arguments import output_dir, positive_float
+from loco.studies import captions as figure_captions
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.stages import Runtime, Stage
@@ -202,21 +203,7 @@ def bench_study(
             *valve_tables,
         ],
         parameters={k: v for k, v in parameters.items() if k != "dampers"},
-        captions={
-            "damper_bench.png": "Force against velocity (top) and hysteresis loops (bottom) of "
-            "each yaw damper under sine strokes at 1 and 4 Hz: a steeper force-velocity curve is "
-            "more damping; a tilted, narrow loop is stiffness (the series stiffness), a wide one "
-            "dissipation.",
-            "valve_states.png": "Force, valve scale factor (0 open, 1 closed) and auxiliary "
-            "piston travel of the FSD frequency valve under sine strokes of the reference "
-            "amplitude, the rms-frequency estimate against the hydraulic valve: at which "
-            "frequencies the valve opens (low damping) and how quickly it follows.",
-            "valve_cutoff_vs_amplitude.png": "The valve's switching frequency against stroke "
-            "amplitude (log scales): which strokes, by amplitude and frequency, open it.",
-            "valve_two_tone.png": "The valve's open fraction under a 1.2 Hz stroke with a "
-            "dither added, against the dither's amplitude over the stroke's: how large a dither "
-            "keeps the valve from opening at the sway frequency.",
-        },
+        captions=figure_captions.DAMPER_BENCH,
         notes="Force-velocity curves (top) and hysteresis loops (bottom) over the last "
         f"{LOOP_CYCLES} of {CYCLES} cycles of sine excitation; FSD-H is the FSD with the "
         "hydraulic frequency valve. Valve bench at the reference stroke "

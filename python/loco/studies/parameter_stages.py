@@ -22,6 +22,7 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
+from loco.studies import captions as figure_captions
 from loco.studies.optimisation import ParetoResult, nsga2, pick_spread, plot_pareto, verify_points
 from loco.studies.parameter_study import (
     LOG_TARGET,
@@ -36,7 +37,7 @@ from loco.studies.parameters import names
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sensitivity import (
-    SobolIndices,
+    indices_note,
     plot_convergence,
     plot_indices,
     sobol_convergence,
@@ -49,14 +50,6 @@ from loco.studies.surrogate_validation import Training, surrogate_label
 __all__ = ["OptimisationStage", "SensitivityStage", "run_optimisation", "run_sensitivity"]
 
 FloatArray = npt.NDArray[np.float64]
-
-
-def _st_summary(indices: Sequence[SobolIndices]) -> str:
-    return "; ".join(
-        f"{ind.metric}: "
-        + ", ".join(f"{p} {v:.2f}" for p, v in zip(ind.parameters, ind.ST, strict=True))
-        for ind in indices
-    )
 
 
 def run_sensitivity(
@@ -168,9 +161,11 @@ def run_sensitivity(
         **setup.settings(),
     }
     notes = (
-        f"Total-order indices, direct: {_st_summary(direct)}. "
-        f"On the surrogate ({surrogate_name}): {_st_summary(surrogate)}. "
-        f"Saltelli base samples dropped for failed runs: {dropped}."
+        "Total-order (ST) and first-order (S1) indices with their 95 % bootstrap half-widths. "
+        + indices_note(direct, "Direct")
+        + " "
+        + indices_note(surrogate, f"On the surrogate ({surrogate_name})")
+        + f" Saltelli base samples dropped for failed runs: {dropped}."
     )
     return StudyRecord(
         name=out_dir.name,
@@ -185,19 +180,7 @@ def run_sensitivity(
         ],
         parameters=settings,
         notes=notes,
-        captions={
-            **{
-                f"sobol_{d.metric}.png": f"First-order (S1, left) and total (ST, right) Sobol' "
-                f"indices of {d.metric} per parameter, direct and on the surrogate, with 95 % "
-                "bootstrap intervals: a tall ST is a parameter that matters; ST well above S1 "
-                "one that acts through interactions. A negative S1 is estimator noise around "
-                "zero (the true index is at least 0); with a small base sample N the direct "
-                "intervals are wide."
-                for d in direct
-            },
-            "sobol_convergence.png": "The direct indices against the Saltelli base sample N: "
-            "where they still move between the last sizes, N is too small to trust them.",
-        },
+        captions=figure_captions.sobol_captions(d.metric for d in direct),
     )
 
 
@@ -326,14 +309,7 @@ def run_optimisation(
         ],
         parameters=settings,
         notes=notes,
-        captions={
-            "pareto.png": "The Pareto front of the two objectives found by NSGA-II on the "
-            "surrogate, and the parameters along it: each point is a design that no other beats "
-            "on both objectives; the trade-off is the front's slope.",
-            "pareto_verification.png": "Points of the front re-simulated (markers) against the "
-            "surrogate's front (grey): the gap is how far the surrogate's optimum is from the "
-            "simulator's.",
-        },
+        captions=figure_captions.OPTIMISATION,
     )
 
 

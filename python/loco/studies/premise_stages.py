@@ -31,6 +31,7 @@ import pandas as pd
 import loco
 from loco import campaign, uncertainty
 from loco.executors import task_pool
+from loco.studies import captions as figure_captions
 from loco.studies import premise_map, premise_probability
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
@@ -109,13 +110,7 @@ class PremiseMapStage(Stage):
             figures=[figure],
             tables=tables,
             notes=premise_cells_note(cells),
-            captions={
-                figure.name: "Damping ratio ζ of the linearised carbody (top) and bogie (middle) "
-                "modes over conicity and yaw damping, on ideal cones and on real wheel-rail "
-                "pairs, and over speed (bottom): red cells (ζ < 0) are unstable; the premise "
-                "needs the carbody mode stable at low yaw damping and unstable at high, on low "
-                "conicity (left of the black line)."
-            },
+            captions=figure_captions.PREMISE_MAP,
         )
 
 
@@ -179,11 +174,7 @@ class ScreeningStage(Stage):
             title="Which estimates matter: Morris screening of the ranged inputs",
             figures=[figure],
             tables=[table_path, outputs_path],
-            captions={
-                figure.name: "Morris screening per output: μ* (mean absolute elementary "
-                "effect) against σ (its spread) for each ranged input: inputs far to the right "
-                "matter most; a high σ means a non-linear effect or interactions."
-            },
+            captions=figure_captions.SCREENING,
             notes=f"{len(frame)} points of {result['input'].nunique()} inputs{reused}. "
             + top_inputs_note(result),
         )
@@ -268,12 +259,7 @@ class PlausibleStage(Stage):
             title="The verdict's probability: plausible locomotives",
             figures=[figure],
             tables=[*paths.values(), meta_path],
-            captions={
-                figure.name: "The share of plausible locomotives on which the premise holds, "
-                "per wheel-rail pair and pooled, with 95 % Wilson intervals, and how the FSD "
-                "compares with the fixed dampers on them: a share near 0 or 1 with a narrow "
-                "interval is a firm answer."
-            },
+            captions=figure_captions.PLAUSIBLE,
             notes=probability_note(summary["fraction"], result.failed),
         )
 

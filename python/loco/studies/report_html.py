@@ -5,9 +5,9 @@ it writes to ``report.md``, so the two never say different things. The page diff
 form: the first sections (the premise, the verdict) come right under the title, the run's details
 (version, platform, settings) fold into a line under them, a table of contents sits in a side
 column, the first sections stand side by side on a wide screen (so the verdict is in sight
-without scrolling), every figure is embedded as a base64 PNG ``data:`` URI under a ``<figure>`` with its
-caption, and the style sheet is inline: no file, font or script is fetched, so the page can be
-mailed or archived alone.
+without scrolling), every figure is embedded as a base64 PNG ``data:`` URI under a ``<figure>``
+with its caption, and the style sheet is inline: no file, font or script is fetched, so the page
+can be mailed or archived alone.
 """
 
 from __future__ import annotations

@@ -23,6 +23,7 @@ import numpy as np
 import pandas as pd
 
 import loco
+from loco.studies import captions as figure_captions
 from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray, load_monte_carlo
 from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
@@ -346,19 +347,5 @@ def validate_surrogate(
         ],
         parameters={k: v for k, v in settings.items() if k != "r2"},
         notes=notes,
-        captions=_captions(figures),
+        captions=figure_captions.parity_captions(figures),
     )
-
-
-def _captions(figures: list[Path]) -> dict[str, str]:
-    """What to read from each parity plot (``parity_<objective>[_used].png``)."""
-    captions = {}
-    for figure in figures:
-        objective = figure.stem.removeprefix("parity_").removesuffix("_used")
-        model = "the surrogate used" if figure.stem.endswith("_used") else "the SPEC network"
-        captions[figure.name] = (
-            f"{objective} predicted by {model} (held out by k-fold cross-validation) against the "
-            "simulated value: points on the diagonal are predicted well; a spread or a bend away "
-            "from it is the surrogate's error."
-        )
-    return captions
