@@ -15,6 +15,7 @@ from loco import dampers
 from loco.studies.speed_sweep import (
     A_YB,
     A_YC,
+    PEAK_METRICS,
     SCENARIOS,
     SpeedSweep,
     SpeedSweepStage,
@@ -76,10 +77,12 @@ def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     mean = sweep.spectra[("S_high", "A_yb")]
     np.testing.assert_allclose(mean.frequency, f)
     assert not np.allclose(mean.density, p)  # the mean of two different tracks
-    # The peaks are the track means of the core's run metrics, not recomputed in Python.
+    # The legend's peak is the geometric mean of the core's run metrics over the tracks and its
+    # dominant frequency their median, not recomputed in Python.
     peaks = sweep.metric("ayb_psd_peak")[2, j]
     assert peaks[0] == single.metrics["ayb_psd_peak"]
-    assert mean.peak == pytest.approx(peaks.mean(), rel=1e-12)
+    assert mean.peak == pytest.approx(np.exp(np.log(peaks).mean()), rel=1e-12)
+    assert mean.dominant_hz == np.median(sweep.metric(PEAK_METRICS["A_yb"][0])[2, j])
 
 
 def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
