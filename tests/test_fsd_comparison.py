@@ -46,7 +46,7 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     assert (table["n_tracks"] == TRACKS).all()
     assert (table["psd_peak_low"] < table["psd_peak"]).all()
     assert (table["psd_peak"] < table["psd_peak_high"]).all()
-    # The table's values are the track means of the core's run metrics of the case's quantity;
+    # The table summarises the core's run metrics of the case's quantity over the tracks;
     # track 0 is the single run on the seed's track.
     result = comparison.results[("S_high", "YD1")]
     assert result is not None

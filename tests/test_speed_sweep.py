@@ -58,7 +58,7 @@ def test_shapes_and_ranges(sweep: SpeedSweep) -> None:
 
 def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     """Track 0 at 200 km/h is the run loco.simulate makes with YD2 on the track of the seed; the
-    sweep's values are the track means, its spectra the track-mean PSDs."""
+    sweep's values are the tracks' geometric means, its spectra the track-mean PSDs."""
     scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=DISTANCE, seed=SEED,
                              yaw_damper=dampers.YD2)  # fmt: skip
     single = loco.simulate(loco.Locomotive.default(), scenario)

@@ -87,7 +87,7 @@ def plot_peaks(sweep: SpeedSweep, path: str | Path) -> Path:
 
 
 def _ci(interval: Interval) -> str:
-    return f"{interval.mean:.2f} [{interval.low:.2f}, {interval.high:.2f}]"
+    return f"{interval.mean:.3g} [{interval.low:.3g}, {interval.high:.3g}]"
 
 
 def sweep_notes(sweep: SpeedSweep) -> str:
