@@ -82,8 +82,9 @@ def open_page(path: Path, screenshot: Path) -> dict[str, Any]:
 
 
 def test_the_report_page_in_a_browser(tiny_study: tuple[Path, str]) -> None:
-    out, _ = tiny_study
+    out, log = tiny_study
     page_path = out / "report.html"
+    assert f"the report as a page: {page_path.resolve()}" in log
     markdown = (out / "report.md").read_text(encoding="utf-8")
     shown = open_page(page_path, ARTIFACTS / "report_first_screen.png")
     assert shown["errors"] == []
