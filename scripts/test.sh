@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs loco with its development tools and runs every check: formatting, lints, the Rust tests,
-# the type stubs against the native module, the documentation build, and pytest. This is the README's test command and what
+# the type stubs against the native module, the documentation build, Chromium for the report page's
+# browser test (from apt when missing), and pytest. This is the README's test command and what
 # CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,6 +37,17 @@ python3 -m mypy.stubtest loco._loco
 step "documentation (mkdocs, warnings and broken links are errors; into build/site/)"
 # (not --quiet: it hides the warnings that strict mode counts, so a broken link would pass)
 NO_MKDOCS_2_WARNING=1 python3 -m mkdocs build --strict
+
+step "Chromium (the report page's browser test drives the distribution's package)"
+if ! command -v chromium >/dev/null 2>&1; then
+    if command -v apt-get >/dev/null 2>&1; then
+        export DEBIAN_FRONTEND=noninteractive
+        apt-get update -qq >/dev/null
+        apt-get install -y -qq --no-install-recommends chromium >/dev/null
+    else
+        echo "chromium not found and no apt-get: tests/test_report_page.py will fail" >&2
+    fi
+fi
 
 step "pytest"
 python3 -m pytest tests

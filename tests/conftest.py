@@ -1,7 +1,10 @@
-"""Shared pytest fixtures: the reference data of ``shared/data`` (never copied into the repo)."""
+"""Shared pytest fixtures: the reference data of ``shared/data`` (never copied into the repo),
+and the tiny ``loco reproduce`` run that the reproduce and report-page tests read."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 from pathlib import Path
 
@@ -30,3 +33,19 @@ def shared_data() -> Path:
     if path is None:
         pytest.skip("reference data not found: set LOCO_SHARED_DATA or provide ../shared/data")
     return path
+
+
+#: The command line of the tiny study (the hidden preset: a few 300 m runs per stage).
+TINY_ARGS = ["reproduce", "--tiny", "--threads", "2", "--no-progress"]
+
+
+@pytest.fixture(scope="session")
+def tiny_study(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str]:
+    """The tiny study, run once through the CLI; its output directory and printed log."""
+    from loco.cli import main
+
+    out = tmp_path_factory.mktemp("reproduce")
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        assert main([*TINY_ARGS, "--out", str(out)]) == 0
+    return out, buffer.getvalue()

@@ -46,7 +46,7 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     assert (table["n_tracks"] == TRACKS).all()
     assert (table["psd_peak_low"] < table["psd_peak"]).all()
     assert (table["psd_peak"] < table["psd_peak_high"]).all()
-    # The table's values are the track means of the core's run metrics of the case's quantity;
+    # The table summarises the core's run metrics of the case's quantity over the tracks;
     # track 0 is the single run on the seed's track.
     result = comparison.results[("S_high", "YD1")]
     assert result is not None
@@ -58,9 +58,14 @@ def test_runs_and_table(comparison: FsdComparison) -> None:
     assert single.metrics["ayb_psd_peak"] == result.metrics["ayb_psd_peak"]
     runs = comparison.runs[("S_high", "YD1")]
     row = table[(table["scenario"] == "S_high") & (table["damper"] == "YD1")].iloc[0]
-    assert row["dominant_hz"] == pytest.approx(runs.values("ayb_f0_hz").mean())
-    assert row["psd_peak"] == pytest.approx(runs.values("ayb_psd_peak").mean())
-    assert row["rms"] == pytest.approx(runs.values("ayb_rms").mean())
+    # The dominant frequency as the median with each track's value; the positive quantities as
+    # geometric means.
+    assert row["dominant_hz"] == pytest.approx(np.median(runs.values("ayb_f0_hz")))
+    assert row["dominant_hz_tracks"] == ", ".join(f"{v:.3g}" for v in runs.values("ayb_f0_hz"))
+    for column, metric in (("psd_peak", "ayb_psd_peak"), ("rms", "ayb_rms")):
+        geometric = np.exp(np.log(runs.values(metric)).mean())
+        assert row[column] == pytest.approx(geometric)
+        assert 0 < row[f"{column}_low"] < row[column] < row[f"{column}_high"]
     assert runs.values("ayb_psd_peak")[0] == result.metrics["ayb_psd_peak"]
     # The dampers were applied: the three runs of a scenario differ.
     for scenario, _, channel in CASES:

@@ -15,6 +15,7 @@ from loco import dampers
 from loco.studies.speed_sweep import (
     A_YB,
     A_YC,
+    PEAK_METRICS,
     SCENARIOS,
     SpeedSweep,
     SpeedSweepStage,
@@ -57,7 +58,7 @@ def test_shapes_and_ranges(sweep: SpeedSweep) -> None:
 
 def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     """Track 0 at 200 km/h is the run loco.simulate makes with YD2 on the track of the seed; the
-    sweep's values are the track means, its spectra the track-mean PSDs."""
+    sweep's values are the tracks' geometric means, its spectra the track-mean PSDs."""
     scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=DISTANCE, seed=SEED,
                              yaw_damper=dampers.YD2)  # fmt: skip
     single = loco.simulate(loco.Locomotive.default(), scenario)
@@ -65,18 +66,23 @@ def test_matches_a_single_run(sweep: SpeedSweep) -> None:
     for metric in ("wy_max", "ayb_peak_lp"):
         values = sweep.metric(metric)[2, j]
         assert values[0] == pytest.approx(single.metrics[metric], rel=1e-9)
-        assert sweep.at("S_high", metric, 200.0) == pytest.approx(values.mean(), rel=1e-12)
+        # The geometric mean, and the t interval of the logs taken back.
+        logs = np.log(values)
+        assert sweep.at("S_high", metric, 200.0) == pytest.approx(np.exp(logs.mean()), rel=1e-12)
         ci = sweep.interval("S_high", metric, 200.0)
-        half = 12.706 * values.std(ddof=1) / np.sqrt(2)  # t(0.975, 1 dof)
-        assert ci.high - ci.mean == pytest.approx(half, rel=1e-4)
+        half = 12.706 * logs.std(ddof=1) / np.sqrt(2)  # t(0.975, 1 dof)
+        assert np.log(ci.high / ci.mean) == pytest.approx(half, rel=1e-4)
+        assert np.log(ci.mean / ci.low) == pytest.approx(half, rel=1e-4) and ci.low > 0
     f, p = loco.metrics.psd(single.channel(A_YB[1]), single.sampling_rate)
     mean = sweep.spectra[("S_high", "A_yb")]
     np.testing.assert_allclose(mean.frequency, f)
     assert not np.allclose(mean.density, p)  # the mean of two different tracks
-    # The peaks are the track means of the core's run metrics, not recomputed in Python.
+    # The legend's peak is the geometric mean of the core's run metrics over the tracks and its
+    # dominant frequency their median, not recomputed in Python.
     peaks = sweep.metric("ayb_psd_peak")[2, j]
     assert peaks[0] == single.metrics["ayb_psd_peak"]
-    assert mean.peak == pytest.approx(peaks.mean(), rel=1e-12)
+    assert mean.peak == pytest.approx(np.exp(np.log(peaks).mean()), rel=1e-12)
+    assert mean.dominant_hz == np.median(sweep.metric(PEAK_METRICS["A_yb"][0])[2, j])
 
 
 def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
@@ -92,12 +98,18 @@ def test_files(sweep: SpeedSweep, tmp_path: Path) -> None:
     assert len(summary) == 6 and (summary["n_tracks"] == TRACKS).all()
     row = summary[(summary["scenario"] == "S_low") & (summary["speed_kmh"] == 200.0)].iloc[0]
     ci = sweep.interval("S_low", "wy_max", 200.0)
-    assert row["W_y mean"] == pytest.approx(ci.mean)
+    assert row["W_y geomean"] == pytest.approx(ci.mean)
     assert row["W_y low"] == pytest.approx(ci.low) and row["W_y high"] == pytest.approx(ci.high)
-    assert row["W_y low"] < row["W_y mean"] < row["W_y high"]
+    assert 0 < row["W_y low"] < row["W_y geomean"] < row["W_y high"]
     peaks = pd.read_csv(tmp_path / "speed_sweep" / "speed_sweep_peaks.csv")
     assert len(peaks) == 6 and (peaks["speed_kmh"] == 200.0).all()
+    assert (0 < peaks["psd_peak_low"]).all()
     assert (peaks["psd_peak_low"] < peaks["psd_peak_high"]).all()
+    # The dominant frequency is the median of the tracks' values, each of them given (to 3
+    # significant digits, hence the tolerance).
+    for row in peaks.itertuples():
+        each = [float(v) for v in row.dominant_hz_tracks.split(", ")]
+        assert len(each) == TRACKS and row.dominant_hz == pytest.approx(np.median(each), rel=1e-2)
     settings = json.loads((tmp_path / "speed_sweep" / "speed_sweep.json").read_text())
     assert settings["loco_version"] == loco.__version__
     assert settings["distance_m"] == DISTANCE and settings["track_seed"] == SEED

@@ -112,7 +112,7 @@ def test_report_links_and_contents(tmp_path: Path) -> None:
     assert "![line](demo/line.png)" in text
     assert "[numbers.csv](demo/numbers.csv)" in text and "[meta.json](demo/meta.json)" in text
     assert "(20 of 25 rows shown.)" in text
-    assert "| seed | `1` |" in text and "- threads: `2`" in text
+    assert "| seed | 1 |" in text and "- threads: 2\n" in text
     assert "Some *notes*." in text
     for link in ("demo/line.png", "demo/numbers.csv"):
         assert (report.parent / link).is_file()

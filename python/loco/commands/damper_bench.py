@@ -28,6 +28,7 @@ import pandas as pd
 import loco
 from loco import dampers
 from loco.commands.arguments import output_dir, positive_float
+from loco.studies import captions as figure_captions
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.stages import Runtime, Stage
@@ -202,6 +203,7 @@ def bench_study(
             *valve_tables,
         ],
         parameters={k: v for k, v in parameters.items() if k != "dampers"},
+        captions=figure_captions.DAMPER_BENCH,
         notes="Force-velocity curves (top) and hysteresis loops (bottom) over the last "
         f"{LOOP_CYCLES} of {CYCLES} cycles of sine excitation; FSD-H is the FSD with the "
         "hydraulic frequency valve. Valve bench at the reference stroke "

@@ -39,7 +39,8 @@ inputs is skipped on a rerun, ``--force`` runs it again):
     600–7000 m at 0–150 mm cant deficiency, ΣY, Y/Q and Y_qst by EN 14363
     (:mod:`loco.studies.curving`).
 
-Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times.
+Then ``<out>/report.md`` shows every figure and table with settings, seeds, version, run times,
+and ``<out>/report.html`` the same report as one self-contained page (figures embedded).
 
 Every batch of a stage runs as a campaign (:mod:`loco.campaign`) on one executor — local threads
 (default), ``--workers N`` (a Dask ``LocalCluster``) or ``--scheduler tcp://host:8786`` (or
@@ -384,8 +385,8 @@ def reproduce(
     executor: Executor | None = None,
     chunk_size: int | None = None,
 ) -> Path:
-    """Run every stage (:func:`stages`) into ``out`` and write ``out/report.md``; return the
-    report's path.
+    """Run every stage (:func:`stages`) into ``out`` and write ``out/report.md`` (and the same
+    report as the page ``out/report.html``); return the Markdown report's path.
 
     ``seed`` seeds the track irregularities, the Latin hypercube, the Saltelli designs, the
     networks' K-means and NSGA-II. ``integrator`` is every run's scheme (at its own step; its
@@ -518,4 +519,5 @@ def run(args: argparse.Namespace) -> int:
             chunk_size=args.chunk_size,
         )
     print(f"done in {time.perf_counter() - start:.0f} s; report: {report.resolve()}")
+    print(f"the report as a page: {report.with_suffix('.html').resolve()}")
     return 0

@@ -35,6 +35,7 @@ import pandas as pd
 
 import loco
 from loco import _loco, assessment, dampers
+from loco.studies import captions as figure_captions
 from loco.studies import en14363, fsd_comparison
 from loco.studies.report import StudyRecord, save_json
 from loco.studies.stages import Demand, Runtime, Stage
@@ -380,6 +381,7 @@ def save_curving(study: CurvingStudy, out_dir: str | Path) -> StudyRecord:
         parameters=study.settings,
         seconds=study.seconds,
         notes=curving_notes(study),
+        captions=figure_captions.CURVING,
     )
 
 

@@ -29,12 +29,20 @@ import loco
 from loco import dampers
 from loco.channels import ChannelKind, Metric
 from loco.contact_pairs import ContactPair
+from loco.studies import captions as figure_captions
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
 from loco.studies.speed_sweep import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
 from loco.studies.stages import Demand, Runtime, Stage
-from loco.studies.statistics import Ranking, mean_interval, rank
+from loco.studies.statistics import (
+    Ranking,
+    geometric_interval,
+    mean_interval,
+    median_values,
+    rank,
+    track_values_text,
+)
 
 __all__ = [
     "CARBODY_CYCLE_COLUMNS",
@@ -100,6 +108,11 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     *LIMIT_CYCLE_COLUMNS,
     *CARBODY_CYCLE_COLUMNS,
 )
+#: Summary columns of positive quantities, given as the geometric mean over the tracks and its
+#: interval (:func:`loco.studies.statistics.geometric_interval`); ``dominant_hz`` is given as the
+#: median with every track's value; the others (fractions, flags, limit-cycle columns, which can
+#: be zero) as the arithmetic mean and its t interval.
+POSITIVE_COLUMNS: tuple[str, ...] = ("rms", "psd_peak", *JUDGED_BY.values())
 
 
 @dataclass(frozen=True)
@@ -174,8 +187,11 @@ class FsdComparison:
         """One row per (scenario, damper): the quantity, and of its rms (m/s²), dominant
         frequency (Hz), PSD peak ((m/s²)²/Hz) (the core's run metrics), W_y and A_yb peak, and
         the fraction of time the yaw damper valves were closed (FSD only, NaN for dampers without
-        a valve) the mean over the tracks (column named as the quantity) and its 95 % interval
-        (``_low``, ``_high``); the number of tracks that finished, and why the others failed."""
+        a valve) a value over the tracks (column named as the quantity) and its 95 % interval
+        (``_low``, ``_high``): for the positive :data:`POSITIVE_COLUMNS` the geometric mean, for
+        the others the mean; the dominant frequency as the median over the tracks with every
+        track's value (``dominant_hz_tracks``) instead of an interval; the number of tracks that
+        finished, and why the others failed."""
         errors = self.errors
         rows = []
         for scenario, label, channel in CASES:
@@ -187,7 +203,13 @@ class FsdComparison:
                     "channel": channel,
                 }
                 for column in SUMMARY_COLUMNS:
-                    ci = mean_interval(self.values(scenario, name, column))
+                    values = self.values(scenario, name, column)
+                    if column == "dominant_hz":
+                        median, each = median_values(values)
+                        row.update({column: median, f"{column}_tracks": track_values_text(each)})
+                        continue
+                    positive = column in POSITIVE_COLUMNS
+                    ci = geometric_interval(values) if positive else mean_interval(values)
                     row.update({column: ci.mean, f"{column}_low": ci.low,
                                 f"{column}_high": ci.high})  # fmt: skip
                 row["n_tracks"] = int(np.count_nonzero(self.runs[(scenario, name)].status == 0))
@@ -390,12 +412,14 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
 
     Files: ``fsd_time_histories.png`` and ``fsd_valve.png`` (track 0; and
     ``fsd_valve_hydraulic.png`` for FSD-H), ``fsd_psd.png`` (track-mean PSDs), ``fsd_peaks.png``
-    (per-track values, means and 95 % intervals), ``fsd_summary.csv`` (mean and interval per
-    case), ``fsd_tracks.csv`` (every track), ``fsd_rankings.csv`` (the paired tests),
+    (per-track values, geometric means and 95 % intervals), ``fsd_summary.csv`` (per case:
+    geometric mean and interval, median dominant frequency, :meth:`FsdComparison.table`),
+    ``fsd_tracks.csv`` (every track), ``fsd_rankings.csv`` (the paired tests),
     ``fsd_valve_open_fraction.csv`` (track 0), ``fsd_psd.csv``, ``fsd_time_histories.csv`` and
     ``fsd_comparison.json`` (loco version and settings).
     """
     from loco.studies.fsd_figures import (
+        comparison_notes,
         histories_frame,
         plot_peaks,
         plot_psds,
@@ -435,26 +459,7 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         save_table(valve_open_fractions(cmp), out / "fsd_valve_open_fraction.csv"),
         save_json(cmp.settings, out / "fsd_comparison.json"),
     ]
-    lead_in = cmp.settings.get("lead_in_m", 0.0)
-    peaks = "; ".join(
-        f"{row.scenario} {row.damper}: {row.quantity} dominant {row.dominant_hz:.2f} Hz, "
-        f"PSD peak {row.psd_peak:.3g} [{row.psd_peak_low:.3g}, {row.psd_peak_high:.3g}] "
-        "(m/s²)²/Hz"
-        for row in summary.itertuples()
-    )
-    notes = (
-        f"Recorded after {lead_in:g} m of lead-in (start transients settled), on "
-        f"{cmp.n_tracks} tracks, the same for every damper; mean [95 % interval]: {peaks}.\n\n"
-        "**Rankings** (lower is better; `<` a significant step, `≈` none):\n\n"
-        + "\n".join(f"- {r.statement()}." for r in rankings)
-    )
-    openings = valve_open_fractions(cmp)
-    bogies = openings[openings["valve"] == openings["bogie"]]
-    notes += ". Valve open fraction (1 - mean scale factor) by bogie: " + "; ".join(
-        f"{r.scenario} {r.damper} {r.bogie} {r.open_fraction:.2f}" for r in bogies.itertuples()
-    )
-    if cmp.errors:
-        notes += "\n\nFailed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())
+    notes = comparison_notes(cmp, summary, rankings)
     return StudyRecord(
         name=out.name,
         title="YD1, YD2 and FSD yaw dampers on S_low and S_high (SPEC §6.6)",
@@ -463,4 +468,5 @@ def save_fsd_comparison(cmp: FsdComparison, out_dir: str | Path) -> StudyRecord:
         parameters={k: v for k, v in cmp.settings.items() if k != "dampers"},
         seconds=cmp.seconds + time.perf_counter() - start,
         notes=notes,
+        captions=figure_captions.FSD_COMPARISON,
     )

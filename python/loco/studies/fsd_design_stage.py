@@ -23,6 +23,7 @@ import pandas as pd
 import loco
 from loco import dampers
 from loco.channels import Metric
+from loco.studies import captions as figure_captions
 from loco.studies import fsd_conicity, fsd_design
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
@@ -218,6 +219,7 @@ def run_fsd_design(
         parameters={k: v for k, v in settings.items() if k != "references"},
         seconds=seconds,
         notes=_notes(study, summary, critical, wall["optimisation"], speed_kmh),
+        captions=figure_captions.FSD_DESIGN,
     )
 
 

@@ -1,6 +1,7 @@
 """Figures of the yaw damper comparison (:mod:`loco.studies.fsd_comparison`): time histories and
-valve states on track 0, track-mean PSDs, and the per-track values with their means and 95 %
-intervals; and the wide table of the time histories behind the first figure."""
+valve states on track 0, track-mean PSDs, and the per-track values with their geometric means and
+95 % intervals; the wide table of the time histories behind the first figure; and the report
+paragraph of the comparison."""
 
 from __future__ import annotations
 
@@ -17,10 +18,19 @@ from loco.studies.fsd_comparison import (
     VALVE_SUFFIX,
     FsdComparison,
     valve_channels,
+    valve_open_fractions,
 )
 from loco.studies.plotting import draw_intervals, draw_spectra, pyplot, save_figure
+from loco.studies.statistics import Ranking
 
-__all__ = ["histories_frame", "plot_peaks", "plot_psds", "plot_time_histories", "plot_valves"]
+__all__ = [
+    "comparison_notes",
+    "histories_frame",
+    "plot_peaks",
+    "plot_psds",
+    "plot_time_histories",
+    "plot_valves",
+]
 
 
 def plot_time_histories(cmp: FsdComparison, path: str | Path) -> Path:
@@ -62,7 +72,10 @@ def plot_psds(cmp: FsdComparison, path: str | Path, *, fmax: float = 20.0) -> Pa
     for ax, (scenario, label, channel) in zip(axes, CASES, strict=True):
         lines = {name: spectra.get((scenario, name)) for name in cmp.dampers}
         draw_spectra(ax, lines, label, f"{label} ({channel}), {scenario}", fmax)
-    fig.suptitle(f"Mean over {cmp.n_tracks} tracks of the per-track PSDs; legend: track means")
+    fig.suptitle(
+        f"Mean over {cmp.n_tracks} tracks of the per-track PSDs; legend: the tracks' median "
+        "dominant frequency and geometric-mean PSD peak"
+    )
     return save_figure(fig, path)
 
 
@@ -97,7 +110,8 @@ def plot_valves(cmp: FsdComparison, path: str | Path, *, damper: str = "FSD") ->
 
 def plot_peaks(cmp: FsdComparison, path: str | Path) -> Path:
     """Save, per scenario, the PSD peak of its quantity and the metric that judges it
-    (:data:`JUDGED_BY`) for every damper as PNG: every track, the mean and its 95 % interval."""
+    (:data:`JUDGED_BY`) for every damper as PNG: every track, the geometric mean and its 95 %
+    interval."""
     plt = pyplot()
     fig, axes = plt.subplots(2, len(CASES), figsize=(11, 7), squeeze=False, layout="constrained")
     for c, (scenario, label, _) in enumerate(CASES):
@@ -108,8 +122,8 @@ def plot_peaks(cmp: FsdComparison, path: str | Path) -> Path:
             groups = {d: cmp.values(scenario, d, column) for d in cmp.dampers}
             draw_intervals(axes[r, c], groups, ylabel, f"{scenario}: {ylabel.split(' (')[0]}")
     fig.suptitle(
-        f"Yaw dampers over {cmp.n_tracks} tracks (the same for every damper): mean and 95 % "
-        "interval"
+        f"Yaw dampers over {cmp.n_tracks} tracks (the same for every damper): geometric mean "
+        "and 95 % interval"
     )
     return save_figure(fig, path)
 
@@ -129,3 +143,31 @@ def histories_frame(cmp: FsdComparison) -> pd.DataFrame:
                     columns[f"{scenario}_{name}_{v}"] = result.channel(v)
     length = min((len(v) for v in columns.values()), default=0)
     return pd.DataFrame({k: np.asarray(v)[:length] for k, v in columns.items()})
+
+
+def comparison_notes(cmp: FsdComparison, summary: pd.DataFrame, rankings: list[Ranking]) -> str:
+    """The report paragraph of the comparison: the PSD peaks per case (``summary``,
+    :meth:`FsdComparison.table`), the ``rankings``, the valves' open fractions, the failures."""
+    lead_in = cmp.settings.get("lead_in_m", 0.0)
+    peaks = "; ".join(
+        f"{row.scenario} {row.damper}: {row.quantity} dominant {row.dominant_hz:.2f} Hz "
+        f"({row.dominant_hz_tracks}), "
+        f"PSD peak {row.psd_peak:.3g} [{row.psd_peak_low:.3g}, {row.psd_peak_high:.3g}] "
+        "(m/s²)²/Hz"
+        for row in summary.itertuples()
+    )
+    notes = (
+        f"Recorded after {lead_in:g} m of lead-in (start transients settled), on "
+        f"{cmp.n_tracks} tracks, the same for every damper; dominant frequency the median (each "
+        f"track's), PSD peak the geometric mean [95 % interval]: {peaks}.\n\n"
+        "**Rankings** (lower is better; `<` a significant step, `≈` none):\n\n"
+        + "\n".join(f"- {r.statement()}." for r in rankings)
+    )
+    openings = valve_open_fractions(cmp)
+    bogies = openings[openings["valve"] == openings["bogie"]]
+    notes += ". Valve open fraction (1 - mean scale factor) by bogie: " + "; ".join(
+        f"{r.scenario} {r.damper} {r.bogie} {r.open_fraction:.2f}" for r in bogies.itertuples()
+    )
+    if cmp.errors:
+        notes += "\n\nFailed: " + "; ".join(f"{s} {d}: {m}" for (s, d), m in cmp.errors.items())
+    return notes

@@ -22,6 +22,7 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
+from loco.studies import captions as figure_captions
 from loco.studies.optimisation import ParetoResult, nsga2, pick_spread, plot_pareto, verify_points
 from loco.studies.parameter_study import (
     LOG_TARGET,
@@ -36,7 +37,7 @@ from loco.studies.parameters import names
 from loco.studies.plotting import pyplot, save_figure
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.sensitivity import (
-    SobolIndices,
+    indices_note,
     plot_convergence,
     plot_indices,
     sobol_convergence,
@@ -49,14 +50,6 @@ from loco.studies.surrogate_validation import Training, surrogate_label
 __all__ = ["OptimisationStage", "SensitivityStage", "run_optimisation", "run_sensitivity"]
 
 FloatArray = npt.NDArray[np.float64]
-
-
-def _st_summary(indices: Sequence[SobolIndices]) -> str:
-    return "; ".join(
-        f"{ind.metric}: "
-        + ", ".join(f"{p} {v:.2f}" for p, v in zip(ind.parameters, ind.ST, strict=True))
-        for ind in indices
-    )
 
 
 def run_sensitivity(
@@ -168,9 +161,11 @@ def run_sensitivity(
         **setup.settings(),
     }
     notes = (
-        f"Total-order indices, direct: {_st_summary(direct)}. "
-        f"On the surrogate ({surrogate_name}): {_st_summary(surrogate)}. "
-        f"Saltelli base samples dropped for failed runs: {dropped}."
+        "Total-order (ST) and first-order (S1) indices with their 95 % bootstrap half-widths. "
+        + indices_note(direct, "Direct")
+        + " "
+        + indices_note(surrogate, f"On the surrogate ({surrogate_name})")
+        + f" Saltelli base samples dropped for failed runs: {dropped}."
     )
     return StudyRecord(
         name=out_dir.name,
@@ -185,6 +180,7 @@ def run_sensitivity(
         ],
         parameters=settings,
         notes=notes,
+        captions=figure_captions.sobol_captions(d.metric for d in direct),
     )
 
 
@@ -313,6 +309,7 @@ def run_optimisation(
         ],
         parameters=settings,
         notes=notes,
+        captions=figure_captions.OPTIMISATION,
     )
 
 

@@ -30,6 +30,7 @@ import pandas as pd
 
 import loco
 from loco.channels import Metric
+from loco.studies import captions as figure_captions
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study_units
 from loco.studies.plotting import pyplot, save_figure
@@ -250,6 +251,7 @@ def run_monte_carlo(
             save_json(settings, out_dir / "monte_carlo.json"),
         ],
         parameters=settings,
+        captions=figure_captions.MONTE_CARLO,
         notes=f"{n_samples} samples; failed runs per objective: "
         + ", ".join(f"{r.objective} {r.n_failed}" for r in summary.itertuples()),
     )

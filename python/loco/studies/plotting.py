@@ -83,15 +83,16 @@ def draw_spectra(
 
 
 def draw_intervals(ax: Any, groups: Mapping[str, npt.ArrayLike], ylabel: str, title: str) -> None:
-    """Draw one column per group: the value of every track (dots), their mean (bar) and its 95 %
-    interval (error bar, :func:`loco.studies.statistics.mean_interval`); NaN tracks are left
+    """Draw one column per group of a positive quantity: the value of every track (dots), their
+    geometric mean (bar) and its 95 % interval (error bar,
+    :func:`loco.studies.statistics.geometric_interval`, never below zero); NaN tracks are left
     out."""
-    from loco.studies.statistics import mean_interval
+    from loco.studies.statistics import geometric_interval
 
     for k, values in enumerate(groups.values()):
         v = np.asarray(values, dtype=np.float64)
         v = v[np.isfinite(v)]
-        ci = mean_interval(v)
+        ci = geometric_interval(v)
         ax.bar(k, ci.mean, color=f"C{k}", alpha=0.35, width=0.6)
         if ci.n > 1:
             ax.errorbar(k, ci.mean, yerr=[[ci.mean - ci.low], [ci.high - ci.mean]],

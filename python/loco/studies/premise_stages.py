@@ -31,6 +31,7 @@ import pandas as pd
 import loco
 from loco import campaign, uncertainty
 from loco.executors import task_pool
+from loco.studies import captions as figure_captions
 from loco.studies import premise_map, premise_probability
 from loco.studies.fsd_comparison import LEAD_IN
 from loco.studies.plotting import pyplot, save_figure
@@ -110,6 +111,7 @@ class PremiseMapStage(Stage):
             figures=[figure],
             tables=tables,
             notes=premise_cells_note(cells),
+            captions=figure_captions.PREMISE_MAP,
         )
 
 
@@ -173,6 +175,7 @@ class ScreeningStage(Stage):
             title="Which estimates matter: Morris screening of the ranged inputs",
             figures=[figure],
             tables=[table_path, outputs_path],
+            captions=figure_captions.SCREENING,
             notes=f"{len(frame)} points of {result['input'].nunique()} inputs{reused}. "
             + top_inputs_note(result),
         )
@@ -260,6 +263,7 @@ class PlausibleStage(Stage):
             title="The verdict's probability: plausible locomotives",
             figures=[figure],
             tables=[*paths.values(), meta_path],
+            captions=figure_captions.PLAUSIBLE,
             notes=probability_note(summary["fraction"], result.failed),
         )
 

@@ -23,7 +23,7 @@ import loco
 from loco import metrics as _metrics
 from loco.batch import SPEED, run_batch
 from loco.studies.plotting import Spectrum
-from loco.studies.statistics import Interval, mean_interval
+from loco.studies.statistics import Interval, geometric_interval, mean_interval, median_values
 
 __all__ = ["TrackRuns", "run_over_tracks"]
 
@@ -117,8 +117,8 @@ def run_over_tracks(
             mean_spectra[label] = Spectrum(
                 frequency[label],
                 np.mean(densities[label], axis=0),
-                mean_interval(column[0]).mean,
-                mean_interval(column[1]).mean,
+                median_values(column[0])[0],
+                geometric_interval(column[1]).mean,
             )
     return TrackRuns(
         metric_names=names,

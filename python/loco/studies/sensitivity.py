@@ -44,6 +44,7 @@ __all__ = [
     "SobolConvergence",
     "SobolIndices",
     "analyse_saltelli",
+    "indices_note",
     "plot_convergence",
     "plot_indices",
     "sobol_convergence",
@@ -52,6 +53,11 @@ __all__ = [
 ]
 
 FloatArray = npt.NDArray[np.float64]
+
+#: Mean half-width of the 95 % intervals of an output's indices above which the report says the
+#: base sample is small for them (an index known to ±0.1 cannot order parameters whose indices
+#: differ by less).
+WIDE_INTERVAL = 0.1
 
 
 @dataclass(frozen=True)
@@ -83,6 +89,50 @@ class SobolIndices:
         frame["n_base"] = self.n_base - self.n_dropped
         frame["n_evaluations"] = self.n_evaluations
         return frame
+
+
+def indices_note(indices: Sequence[SobolIndices], method: str) -> str:
+    """The report's sentence on ``indices`` (one per output) estimated by ``method``: every
+    parameter's ST and S1 with their 95 % half-widths and the base sample N used; then where the
+    intervals are wide (mean half-width above :data:`WIDE_INTERVAL`) that N is small for them,
+    and that a negative S1 is estimator noise (a first-order index is at least 0)."""
+
+    def pm(value: float, conf: float) -> str:
+        return f"{value:.2f} ± {conf:.2f}"
+
+    parts, wide, negative = [], [], []
+    for ind in indices:
+        n = ind.n_base - ind.n_dropped
+        rows = zip(ind.parameters, ind.S1, ind.S1_conf, ind.ST, ind.ST_conf, strict=True)
+        values = [f"{p} ST {pm(st, stc)} (S1 {pm(s1, s1c)})" for p, s1, s1c, st, stc in rows]
+        parts.append(f"{ind.metric} (N = {n}): " + ", ".join(values))
+        half = float(np.nanmean(np.concatenate([ind.S1_conf, ind.ST_conf])))
+        if half > WIDE_INTERVAL:
+            wide.append(f"±{half:.2f} on {ind.metric} with N = {n}")
+        negative += [
+            (f"{p} on {ind.metric} {pm(s1, c)}", s1 + c >= 0)
+            for p, s1, c in zip(ind.parameters, ind.S1, ind.S1_conf, strict=True)
+            if round(float(s1), 2) < 0
+        ]
+    text = f"{method}: " + "; ".join(parts) + "."
+    if wide:
+        text += (
+            " The base sample is small for these indices (mean half-width of the intervals "
+            + ", ".join(wide)
+            + "): they are known to about that much, and four times the base sample halves it."
+        )
+    if negative:
+        reach = (
+            "each of these intervals reaches 0"
+            if all(ok for _, ok in negative)
+            else "where an interval stays below 0 the noise is larger than the bootstrap says"
+        )
+        text += (
+            " Negative S1 ("
+            + ", ".join(t for t, _ in negative)
+            + f") are estimator noise: a first-order index is at least 0, and {reach}."
+        )
+    return text
 
 
 def _bootstrap_seed(seed: int) -> int:

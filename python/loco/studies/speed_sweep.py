@@ -4,8 +4,10 @@ yaw damper, and the PSDs of A_yc and A_yb at 200 km/h.
 One ``loco.run_batch`` per (scenario, speed) with the tracks as samples
 (:func:`loco.studies.seeds.run_over_tracks`): track ``j`` is ChaCha stream ``j`` of the track seed,
 the same at every speed and in every scenario, over the same recorded ``distance``. Every quantity
-is given as its mean over the tracks with the 95 % interval (:mod:`loco.studies.statistics`); the
-PSDs at ``psd_speed_kmh`` are the track means of the per-track Welch PSDs.
+is positive and given as its geometric mean over the tracks with the 95 % interval of the logs
+taken back, the dominant frequencies as the median with every track's value
+(:mod:`loco.studies.statistics`); the PSDs at ``psd_speed_kmh`` are the track means of the
+per-track Welch PSDs.
 
 Quantities (names of the package's channels and metrics):
 
@@ -33,11 +35,12 @@ import pandas as pd
 import loco
 from loco import _loco, dampers, metrics
 from loco.channels import Metric
+from loco.studies import captions as figure_captions
 from loco.studies.plotting import Spectrum
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import run_over_tracks
 from loco.studies.stages import Demand, Runtime, Stage
-from loco.studies.statistics import Interval, mean_interval
+from loco.studies.statistics import Interval, geometric_interval, median_values, track_values_text
 
 __all__ = [
     "A_YB",
@@ -128,14 +131,21 @@ class SpeedSweep:
         return int(np.abs(self.speeds_kmh - speed_kmh).argmin())
 
     def interval(self, scenario: str, metric: str, speed_kmh: float) -> Interval:
-        """Mean and 95 % interval over the tracks of ``metric`` for ``scenario`` at the sweep
-        speed nearest ``speed_kmh``."""
+        """Geometric mean and 95 % interval over the tracks
+        (:func:`loco.studies.statistics.geometric_interval`) of ``metric``, a positive quantity,
+        for ``scenario`` at the sweep speed nearest ``speed_kmh``."""
         i, j = self.scenarios.index(scenario), self.speed_index(speed_kmh)
-        return mean_interval(self.metric(metric)[i, j])
+        return geometric_interval(self.metric(metric)[i, j])
 
     def at(self, scenario: str, metric: str, speed_kmh: float) -> float:
-        """Track mean of ``metric`` for ``scenario`` at the sweep speed nearest ``speed_kmh``."""
+        """Geometric mean over the tracks of ``metric`` for ``scenario`` at the sweep speed
+        nearest ``speed_kmh``."""
         return self.interval(scenario, metric, speed_kmh).mean
+
+    def median(self, scenario: str, metric: str, speed_kmh: float) -> tuple[float, list[float]]:
+        """Median over the tracks of ``metric`` (a dominant frequency) and each track's value."""
+        i, j = self.scenarios.index(scenario), self.speed_index(speed_kmh)
+        return median_values(self.metric(metric)[i, j])
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (scenario, speed, track): speed in km/h and m/s, status, message, every
@@ -157,8 +167,9 @@ class SpeedSweep:
         return pd.DataFrame(rows)
 
     def summary_frame(self) -> pd.DataFrame:
-        """W_y and A_yb (the :data:`SWEEP_METRICS`) per scenario and speed: track mean and 95 %
-        interval (``low``, ``high``), and the number of tracks that finished."""
+        """W_y and A_yb (the :data:`SWEEP_METRICS`) per scenario and speed: the geometric mean
+        over the tracks (``geomean``) and its 95 % interval (``low``, ``high``; the t interval of
+        the logs taken back, never below zero), and the number of tracks that finished."""
         rows = []
         for scenario in self.scenarios:
             for v in self.speeds_kmh:
@@ -166,7 +177,7 @@ class SpeedSweep:
                 for metric, label in SWEEP_METRICS:
                     ci = self.interval(scenario, metric, v)
                     name = label.split(" ")[0]
-                    row.update({f"{name} mean": ci.mean, f"{name} low": ci.low,
+                    row.update({f"{name} geomean": ci.mean, f"{name} low": ci.low,
                                 f"{name} high": ci.high})  # fmt: skip
                 row["n_tracks"] = ci.n
                 rows.append(row)
@@ -197,17 +208,20 @@ class SpeedSweep:
 
     def peaks_frame(self) -> pd.DataFrame:
         """Dominant frequency (Hz) and PSD peak ((m/s²)²/Hz) of each quantity at
-        ``psd_speed_kmh`` (the core's run metrics :data:`PEAK_METRICS`): track mean and 95 %
-        interval."""
+        ``psd_speed_kmh`` (the core's run metrics :data:`PEAK_METRICS`): the dominant frequency's
+        median over the tracks (``dominant_hz``) and every track's value (``dominant_hz_tracks``,
+        in track order, a dash for a failed run); the PSD peak's geometric mean (``psd_peak``)
+        and its 95 % interval (``psd_peak_low``, ``psd_peak_high``)."""
         rows = []
         for s in self.scenarios:
             for q, (frequency, peak) in PEAK_METRICS.items():
                 row: dict[str, Any] = {"scenario": s, "quantity": q}
                 row["speed_kmh"] = self.psd_speed_kmh
-                for column, metric in (("dominant_hz", frequency), ("psd_peak", peak)):
-                    ci = self.interval(s, metric, self.psd_speed_kmh)
-                    row.update({column: ci.mean, f"{column}_low": ci.low,
-                                f"{column}_high": ci.high})  # fmt: skip
+                median, each = self.median(s, frequency, self.psd_speed_kmh)
+                row.update({"dominant_hz": median, "dominant_hz_tracks": track_values_text(each)})
+                ci = self.interval(s, peak, self.psd_speed_kmh)
+                row.update({"psd_peak": ci.mean, "psd_peak_low": ci.low,
+                            "psd_peak_high": ci.high})  # fmt: skip
                 row["n_tracks"] = ci.n
                 rows.append(row)
         return pd.DataFrame(rows)
@@ -343,20 +357,17 @@ def run_speed_sweep(stage: SpeedSweepStage, runtime: Runtime | None = None) -> S
     )
 
 
-def _ci(interval: Interval) -> str:
-    return f"{interval.mean:.2f} [{interval.low:.2f}, {interval.high:.2f}]"
-
-
 def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
     """Write the figures, tables and settings of ``sweep`` into ``out_dir``; return the record.
 
     Files: ``speed_sweep.png``, ``speed_sweep_psd.png``, ``speed_sweep_peaks.png``,
-    ``speed_sweep_summary.csv`` (W_y and A_yb per speed and scenario, mean and 95 % interval over
-    the tracks), ``speed_sweep.csv`` (every metric of every run), ``speed_sweep_peaks.csv``
-    (dominant frequency and PSD peak, mean and interval), ``speed_sweep_psd.csv`` (the
+    ``speed_sweep_summary.csv`` (W_y and A_yb per speed and scenario, geometric mean and 95 %
+    interval over the tracks), ``speed_sweep.csv`` (every metric of every run),
+    ``speed_sweep_peaks.csv`` (dominant frequency: median and each track's; PSD peak: geometric
+    mean and interval; :meth:`SpeedSweep.peaks_frame`), ``speed_sweep_psd.csv`` (the
     track-mean spectra) and ``speed_sweep.json`` (loco version and settings).
     """
-    from loco.studies.speed_sweep_figures import plot_peaks, plot_psds, plot_sweep
+    from loco.studies.speed_sweep_figures import plot_peaks, plot_psds, plot_sweep, sweep_notes
 
     start = time.perf_counter()
     out = Path(out_dir)
@@ -373,21 +384,7 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
         save_table(sweep.psd_frame(), out / "speed_sweep_psd.csv"),
         save_json(sweep.settings, out / "speed_sweep.json"),
     ]
-    v = sweep.psd_speed_kmh
-    parts = [
-        f"{s}: W_y {_ci(sweep.interval(s, 'wy_max', v))}, "
-        f"A_yb {_ci(sweep.interval(s, 'ayb_peak_lp', v))} m/s²"
-        for s in sweep.scenarios
-    ]
-    n_failed = int((sweep.status != 0).sum())
-    notes = (
-        f"At {v:g} km/h with {sweep.damper_label}, mean [95 % interval] over {sweep.n_tracks} "
-        "tracks: " + "; ".join(parts) + "."
-    )
-    if n_failed:
-        notes += (
-            f" {n_failed} of {sweep.status.size} runs failed (× in the figure, NaN in the CSV)."
-        )
+    notes = sweep_notes(sweep)
     return StudyRecord(
         name=out.name,
         title=f"Speed sweep with the {sweep.damper_label} yaw damper (SPEC §6.1)",
@@ -396,4 +393,5 @@ def save_speed_sweep(sweep: SpeedSweep, out_dir: str | Path) -> StudyRecord:
         parameters={k: v for k, v in sweep.settings.items() if k != "yaw_damper"},
         seconds=sweep.seconds + time.perf_counter() - start,
         notes=notes,
+        captions=figure_captions.SPEED_SWEEP,
     )

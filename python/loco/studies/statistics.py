@@ -11,6 +11,16 @@ with s the sample standard deviation (ddof 1). It assumes the per-track values a
 with 3-8 tracks nothing better is identifiable, and it is the interval the reader can check by
 hand.
 
+Positive quantities (PSD peaks, rms, W_y, A_yb: :func:`geometric_interval`) vary by factors from
+track to track, and the t interval of their mean can reach below zero. They are given as the
+geometric mean exp(mean(ln x)) with exp(mean(ln x) ± t(0.975, n−1)·s_ln/√n), the t interval of the
+logs taken back: it is never below zero and is the interval of the median of a log-normal
+quantity (the same scale as the paired tests' ratios below).
+
+Dominant frequencies (:func:`median_values`) are not averaged: on one track the PSD peak is the
+carbody's sway near 1 Hz, on the next a bogie's mode near 10 Hz, and their mean is neither. They
+are given as the median over the tracks with every track's value.
+
 Paired test (:func:`paired_test`): every damper runs on the *same* tracks (common random numbers),
 so the comparison of dampers a and b is on the per-track differences, which removes the
 track-to-track variation the two share. The quantities are positive and vary by factors from
@@ -43,10 +53,13 @@ __all__ = [
     "Interval",
     "PairedTest",
     "Ranking",
+    "geometric_interval",
     "holm",
     "mean_interval",
+    "median_values",
     "paired_test",
     "rank",
+    "track_values_text",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -83,6 +96,40 @@ def mean_interval(values: npt.ArrayLike, confidence: float = CONFIDENCE) -> Inte
     std = float(x.std(ddof=1))
     half = float(stats.t.ppf(0.5 + confidence / 2, n - 1)) * std / np.sqrt(n)
     return Interval(mean, mean - half, mean + half, std, n)
+
+
+def geometric_interval(values: npt.ArrayLike, confidence: float = CONFIDENCE) -> Interval:
+    """Geometric mean and its interval (the t interval of the logs, taken back) of the finite
+    entries of ``values``, a positive quantity; ``std`` is the sample standard deviation of the
+    logs. A value at or below zero has no logarithm: then the arithmetic :func:`mean_interval`
+    is given, its interval cut at zero."""
+    x = np.asarray(values, dtype=np.float64).ravel()
+    x = x[np.isfinite(x)]
+    if len(x) and (x <= 0).any():
+        ci = mean_interval(x, confidence)
+        return Interval(ci.mean, max(ci.low, 0.0), ci.high, ci.std, ci.n)
+    logs = mean_interval(np.log(x), confidence) if len(x) else mean_interval(x)
+    return Interval(
+        float(np.exp(logs.mean)),
+        float(np.exp(logs.low)),
+        float(np.exp(logs.high)),
+        logs.std,
+        logs.n,
+    )
+
+
+def median_values(values: npt.ArrayLike) -> tuple[float, list[float]]:
+    """The median of the finite entries of ``values`` (NaN when none) and every entry (NaN for
+    a failed run), in track order."""
+    x = np.asarray(values, dtype=np.float64).ravel()
+    finite = x[np.isfinite(x)]
+    median = float(np.median(finite)) if len(finite) else float("nan")
+    return median, [float(v) for v in x]
+
+
+def track_values_text(values: Sequence[float], digits: int = 3) -> str:
+    """Per-track values as ``"1.12, 10.4, -"`` (a dash for a failed run)."""
+    return ", ".join(f"{v:.{digits}g}" if np.isfinite(v) else "-" for v in values)
 
 
 @dataclass(frozen=True)

@@ -23,6 +23,7 @@ import numpy as np
 import pandas as pd
 
 import loco
+from loco.studies import captions as figure_captions
 from loco.studies.parameter_study import LOG_TARGET, OBJECTIVES, FloatArray, load_monte_carlo
 from loco.studies.parameters import bounds_si
 from loco.studies.report import StudyRecord, jsonable, save_json, save_table
@@ -346,4 +347,5 @@ def validate_surrogate(
         ],
         parameters={k: v for k, v in settings.items() if k != "r2"},
         notes=notes,
+        captions=figure_captions.parity_captions(figures),
     )
