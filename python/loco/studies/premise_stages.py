@@ -202,8 +202,9 @@ class PlausibleStage(Stage):
     :data:`loco.studies.premise_probability.DAMPERS` on their S_low pair and on S_high,
     ``distance`` m at ``speed_kmh`` km/h after the lead-in, on ``n_tracks`` tracks. Writes
     ``plausible.csv`` (inputs, pair, metrics, premise and valve shares per locomotive),
-    ``plausible_fraction.csv``, ``plausible_fsd.csv``, ``plausible_importance.csv``,
-    ``plausible.json`` and ``plausible.png``."""
+    ``plausible_fraction.csv``, ``plausible_fsd.csv``, ``plausible_importance.csv`` (which
+    inputs decide the premise), ``plausible_advantage.csv`` (which decide the FSDs' advantage,
+    :mod:`loco.studies.premise_sensitivity`), ``plausible.json`` and ``plausible.png``."""
 
     name: ClassVar[str] = "plausible"
     n: int = 200
