@@ -33,17 +33,34 @@ def _vehicle_file(tmp_path: Path) -> Path:
     return path
 
 
+#: A ranges file of two inputs (a lighter carbody's mass and the yaw damping): the screening's
+#: trajectories and the plausible locomotives' hypercube are over these alone.
+RANGES = """
+[parameters.carbody]
+mass = { low = 36000.0, high = 40000.0, kind = "estimate", why = "a test", source = "a test" }
+[parameters.secondary]
+yaw_damper_damping = { low = 7e5, high = 9e5, kind = "tolerance", why = "test", source = "test" }
+"""
+
+
 def test_the_premise_study_runs_on_a_vehicle_file(tmp_path: Path) -> None:
     path = _vehicle_file(tmp_path)
+    ranges = tmp_path / "ranges.toml"
+    ranges.write_text(RANGES, encoding="utf-8")
     out = tmp_path / "premise"
     lines: list[str] = []
-    report = ps.premise_study(path, out, preset="tiny", progress=False, log=lines.append)
+    report = ps.premise_study(
+        path, out, preset="tiny", ranges_file=ranges, progress=False, log=lines.append
+    )
     text = report.read_text(encoding="utf-8")
     assert text.startswith("# The premise study")
     assert f"**On `{path}`: " in text
     plausible = pd.read_csv(out / "plausible" / "plausible.csv")
-    # The plausible locomotives scatter around this vehicle's carbody mass, not the default's.
-    assert plausible["carbody.mass"].median() < loco.Locomotive.default()["carbody.mass"]
+    # The plausible locomotives draw this file's ranges (the yaw damping is the presets').
+    assert list(plausible.columns[:1]) == ["carbody.mass"]
+    assert plausible["carbody.mass"].between(36000.0, 40000.0).all()
+    screened = pd.read_csv(out / "screening" / "morris.csv")
+    assert set(screened["input"]) == {"carbody.mass", "secondary.yaw_damper_damping"}
     fraction = pd.read_csv(out / "plausible" / "plausible_fraction.csv")
     row = fraction[(fraction["pair"] == "all pairs") & (fraction["rule"] == "premise")].iloc[0]
     assert f"The premise holds on {int(row['k'])} of 4 plausible locomotives" in text
@@ -51,7 +68,7 @@ def test_the_premise_study_runs_on_a_vehicle_file(tmp_path: Path) -> None:
     assert [line.split("]")[0][1:] for line in lines if line.endswith("running")] == stages
     # A rerun finds every stage finished.
     again: list[str] = []
-    ps.premise_study(path, out, preset="tiny", progress=False, log=again.append)
+    ps.premise_study(path, out, preset="tiny", ranges_file=ranges, progress=False, log=again.append)
     assert sum("skipped" in line for line in again) == len(stages)
     assert report.read_text(encoding="utf-8") == text
 
