@@ -85,3 +85,22 @@ def test_bad_input_is_refused_before_any_run(tmp_path: Path) -> None:
     with pytest.raises(loco.ParameterError, match=r"carbody\.mass"):
         ps.premise_study(None, tmp_path / "b", preset="tiny", ranges_file=ranges)
     assert not (tmp_path / "b").exists()
+
+
+def test_the_advantage_sensitivity_finds_the_input_that_sets_it() -> None:
+    # A known answer: the FSD's S_low advantage is exp(a) for an input `a`, noise `b` beside it;
+    # the forest must score well on held-out locomotives and rank `a` first.
+    import numpy as np
+
+    from loco.studies.premise_probability import DAMPERS, JUDGE, Plausible
+    from loco.studies.premise_sensitivity import advantage_sensitivity
+
+    rng = np.random.default_rng(3)
+    n = 60
+    inputs = pd.DataFrame({"a": rng.uniform(-1, 1, n), "b": rng.uniform(-1, 1, n)})
+    metrics = pd.DataFrame({f"{s} {d}": np.ones(n) for s in JUDGE for d in DAMPERS})
+    metrics["S_low FSD"] = np.exp(inputs["a"])
+    result = Plausible(inputs, ["pair"] * n, metrics, 0, {})
+    table = advantage_sensitivity(result, seed=0)
+    low = table[(table["damper"] == "FSD") & (table["scenario"] == "S_low")]
+    assert low["r2"].iloc[0] > 0.8 and low["input"].iloc[0] == "a"
