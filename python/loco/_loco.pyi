@@ -3,7 +3,9 @@
 Each section belongs to one binding file of ``crates/loco-py/src``; keep them in that order.
 """
 
+import os
 from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
 from typing import Any, ClassVar, final
 
 import numpy as _np
@@ -645,7 +647,7 @@ def retired_parameters() -> list[tuple[str, str]]: ...
 
 # --- batch (batch.rs) -----------------------------------------------------------------------------
 
-__all__ += ["batch_status_names", "run_batch", "run_statistics_names"]
+__all__ += ["batch_status_names", "run_batch", "run_statistics_names", "run_study_file"]
 
 def run_batch(
     vehicle: Vehicle,
@@ -666,6 +668,14 @@ def run_batch(
     list[tuple[int, NDArray[np.float64], list[str], NDArray[np.float64]]],
     NDArray[np.float64],
 ]: ...
+def run_study_file(
+    study: str | os.PathLike[str],
+    samples: str | os.PathLike[str],
+    output: str | os.PathLike[str],
+    *,
+    threads: int = 0,
+    progress: Callable[[int, int, int], object] | None = None,
+) -> tuple[int, list[tuple[str, int]], Path, list[Path]]: ...
 def batch_status_names() -> list[str]: ...
 def run_statistics_names() -> list[str]: ...
 

@@ -4,11 +4,12 @@ use crate::errors::{run_detached_monitored, InternalError};
 use crate::scenario::PyRunScenario;
 use crate::vehicle::channels_array;
 use crate::vehicle_handle::PyVehicle;
-use loco_core::batch::{run_batch as core_run_batch, BatchMonitor, BatchSpec};
+use loco_core::batch::{run_batch as core_run_batch, run_study, BatchMonitor, BatchSpec};
 use loco_core::vehicle::system::run_statistics::RunStatistics;
 use loco_core::LocoError;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
+use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
@@ -115,6 +116,51 @@ fn run_batch<'py>(
     ))
 }
 
+/// What `run_study_file` returns: samples run, (status name, count) of the statuses that
+/// occurred, the metrics CSV and the time-history CSVs written.
+type StudyTuple = (usize, Vec<(&'static str, usize)>, PathBuf, Vec<PathBuf>);
+
+/// Runs a study file over a samples CSV and writes the metrics CSV `output` (and the kept time
+/// histories beside it), as `loco-batch` does; see `loco batch`. `progress(done, failed, total)`
+/// is called about every 100 ms (`total` is 0 until the inputs are read and checked); Ctrl-C
+/// (or an exception from `progress`) cancels the batch.
+#[pyfunction]
+#[pyo3(signature = (study, samples, output, *, threads=0, progress=None))]
+fn run_study_file(
+    py: Python<'_>,
+    study: PathBuf,
+    samples: PathBuf,
+    output: PathBuf,
+    threads: usize,
+    progress: Option<Bound<'_, PyAny>>,
+) -> PyResult<StudyTuple> {
+    let monitor = Arc::new(BatchMonitor::default());
+    let worker_monitor = Arc::clone(&monitor);
+    let work = move || run_study(&study, &samples, &output, threads, &worker_monitor);
+    let poll = |_py: Python<'_>| -> PyResult<()> {
+        if let Some(callback) = &progress {
+            callback.call1((
+                monitor.done.load(Ordering::Relaxed),
+                monitor.failed.load(Ordering::Relaxed),
+                monitor.total.load(Ordering::Relaxed),
+            ))?;
+        }
+        Ok(())
+    };
+    let summary = run_detached_monitored(py, work, &monitor.cancel, poll)?;
+    let statuses = summary
+        .statuses
+        .iter()
+        .map(|(s, k)| (s.name(), *k))
+        .collect();
+    Ok((
+        summary.n_samples,
+        statuses,
+        summary.metrics_file,
+        summary.history_files,
+    ))
+}
+
 /// Names of the run statistics (`loco.SimulationResult.statistics` keys, batch columns).
 #[pyfunction]
 fn run_statistics_names() -> Vec<&'static str> {
@@ -133,6 +179,7 @@ fn batch_status_names() -> Vec<&'static str> {
 /// Adds this file's functions to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(run_study_file, m)?)?;
     m.add_function(wrap_pyfunction!(batch_status_names, m)?)?;
     m.add_function(wrap_pyfunction!(run_statistics_names, m)?)?;
     Ok(())

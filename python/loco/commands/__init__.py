@@ -8,6 +8,7 @@ COMMAND_MODULES: list[str] = [
     "contact_report",
     "info",
     "simulate",
+    "batch",
     "assess",
     "damper_bench",
     "frf",

@@ -52,6 +52,9 @@ pub struct BatchSpec {
 /// Counters shared with the caller while a batch runs: progress to show, and a flag to cancel.
 #[derive(Debug, Default)]
 pub struct BatchMonitor {
+    /// Samples in the batch, once known (0 before): a study run sets it when its inputs are
+    /// read and checked, for a progress bar's length.
+    pub total: AtomicUsize,
     /// Samples finished (successfully or not).
     pub done: AtomicUsize,
     /// Samples that failed.

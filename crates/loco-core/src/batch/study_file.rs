@@ -37,15 +37,15 @@
 //!
 //! Relative paths are relative to the study file. Every `[scenario]` key but `distance` and the
 //! speed is optional; left out, it takes the core default
-//! ([`loco_core::vehicle::scenarios::scenario_settings::ScenarioSettings`]). Settings that contradict each
+//! ([`crate::vehicle::scenarios::scenario_settings::ScenarioSettings`]). Settings that contradict each
 //! other (`spectrum`, `seed` or `band` with a perfect or measured track; `name` with `wheel`;
 //! `speed` with `speed_kmh`) are refused.
 
-use loco_core::error::FileKind;
-use loco_core::vehicle::params::parameters::ParameterSet;
-use loco_core::vehicle::scenarios::scenario::Scenario;
-use loco_core::vehicle::scenarios::scenario_settings::{GivenObjects, ScenarioSettings};
-use loco_core::{LocoError, Result};
+use crate::error::FileKind;
+use crate::vehicle::params::parameters::ParameterSet;
+use crate::vehicle::scenarios::scenario::Scenario;
+use crate::vehicle::scenarios::scenario_settings::{GivenObjects, ScenarioSettings};
+use crate::{LocoError, Result};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -91,7 +91,7 @@ pub struct Study {
 }
 
 fn read(path: &Path, kind: FileKind) -> Result<String> {
-    loco_core::util::text_file::read_text(path, kind)
+    crate::util::text_file::read_text(path, kind)
 }
 
 /// Reads and resolves the study file at `path`.

@@ -1,13 +1,13 @@
-//! The batch binary's CSV files: samples in, metrics and status out, time histories out.
+//! A study's CSV files: samples in, metrics and status out, time histories out.
 //!
 //! Numbers are written with Rust's shortest round-trip formatting, so a reader that parses them
 //! back (Python's `float`, pandas) gets the same `f64` bit for bit.
 
-use loco_core::batch::BatchOutput;
-use loco_core::util::csv_table::CsvTable;
-use loco_core::vehicle::output::run::RunOutput;
-use loco_core::vehicle::system::run_statistics::RunStatistics;
-use loco_core::{LocoError, Result};
+use crate::batch::BatchOutput;
+use crate::util::csv_table::CsvTable;
+use crate::vehicle::output::run::RunOutput;
+use crate::vehicle::system::run_statistics::RunStatistics;
+use crate::{LocoError, Result};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -22,8 +22,8 @@ pub struct Samples {
 /// the file and line.
 pub fn read_samples(path: &Path) -> Result<Samples> {
     let label = path.display().to_string();
-    let text = loco_core::util::text_file::read_text(path, loco_core::error::FileKind::Study)?;
-    let table = CsvTable::parse(&text, &label, loco_core::error::FileKind::Study)?;
+    let text = crate::util::text_file::read_text(path, crate::error::FileKind::Study)?;
+    let table = CsvTable::parse(&text, &label, crate::error::FileKind::Study)?;
     let mut values = Vec::new();
     for (line, cells) in &table.rows {
         for (cell, name) in cells.iter().zip(&table.names) {
