@@ -27,7 +27,11 @@ RESULTS = ROOT / "docs" / "study"
 #: the premise section read.
 TABLES: dict[str, tuple[str, ...]] = {
     "fsd_comparison": ("fsd_tracks.csv", "fsd_valve_open_fraction.csv"),
-    "premise_case": ("fsd_tracks.csv", "fsd_valve_open_fraction.csv", "premise_case_candidates.csv"),
+    "premise_case": (
+        "fsd_tracks.csv",
+        "fsd_valve_open_fraction.csv",
+        "premise_case_candidates.csv",
+    ),
     "premise_map": ("premise_cells.csv",),
     "screening": ("morris.csv",),
     "plausible": (

@@ -1,4 +1,4 @@
-"""Campaigns and their sample store (issue 15; the lost-work items of issue 13): a real
+"""Campaigns and their sample store (a killed campaign loses no finished sample): a real
 subprocess killed with SIGKILL loses no finished sample, damaged store files are detected and
 rerun, finished stages are checked by the content hash of their outputs. Short runs (300 m, the
 shortest record the metrics take at 200 km/h) on local threads."""

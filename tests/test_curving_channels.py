@@ -82,7 +82,7 @@ def test_unloading_is_relative_to_the_mean_static_wheel_load(deficient: tuple) -
 def test_balanced_cant_puts_no_lateral_force_on_the_vehicle(balanced: tuple) -> None:
     """At zero cant deficiency gravity on the cant balances the centripetal force: the rails'
     net track-plane force on the vehicle is m times the track-plane acceleration, < 0.01 m/s²
-    (issue 17's balanced-cant bound on the carbody acceleration)."""
+    (the balanced-cant bound on the carbody acceleration)."""
     result, speed = balanced
     total = _vehicle_sum_y(result)[_steady(result, speed)]
     assert np.abs(total).max() < VEHICLE.total_mass() * 0.01

@@ -1,4 +1,4 @@
-"""The Dask executor on a real ``LocalCluster`` of 2 worker processes (issue 15): metrics
+"""The Dask executor on a real ``LocalCluster`` of 2 worker processes: metrics
 bit-identical to local threads, NSGA-II generations through the cluster, a worker killed
 mid-chunk, and the error naming the extra when ``distributed`` is missing. Short runs (300 m)."""
 

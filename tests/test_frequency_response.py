@@ -1,4 +1,4 @@
-"""Frequency response and linear output PSDs of the linearised vehicle (issue 11): the measured-
+"""Frequency response and linear output PSDs of the linearised vehicle: the measured-
 track CSV input path against the transfer function, the PSD bookkeeping, typed errors, the CLI.
 The full time-domain verification matrix is in crates/loco-core/tests/frequency_response.rs."""
 

@@ -1,4 +1,4 @@
-"""The FSD design study (issue 14): its plumbing on a tiny case, the constraint NSGA-II uses, and
+"""The FSD design study: its plumbing on a tiny case, the constraint NSGA-II uses, and
 the conicity sweep's wheels measured by the core's EN 15302 equivalent conicity."""
 
 from __future__ import annotations

@@ -174,7 +174,8 @@ def _status_cases() -> list[Case]:
     from loco.commands import campaign as status_command
 
     def status(d: Path, content: bytes) -> Any:
-        store = d / "damaged" / "0123456789abcdef"
+        # A store directory named like a campaign's (a 16-digit hexadecimal key).
+        store = d / "damaged" / ("0" * 16)
         _file(store / "campaign.json", content)
         import argparse
         import contextlib

@@ -1,4 +1,4 @@
-"""Ctrl-C during a long ``loco.simulate`` (issue 13): the run is on a worker thread, the caller
+"""Ctrl-C during a long ``loco.simulate``: the run is on a worker thread, the caller
 checks for signals every 100 ms, so SIGINT stops it within a step as a ``KeyboardInterrupt``
 (never a panic), in a real subprocess."""
 

@@ -248,7 +248,7 @@ def test_rerun_skips_finished_stages(
 
 
 def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, str]) -> None:
-    """Issue 13: a truncated ``monte_carlo.csv`` (the file still exists) is not trusted; the stage
+    """A truncated ``monte_carlo.csv`` (the file still exists) is not trusted; the stage
     runs again and takes every sample from its store (no simulation), so the stages that read
     the table see the same content hash and stay finished."""
     out, _ = run

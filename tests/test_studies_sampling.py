@@ -59,7 +59,7 @@ def test_saltelli_blocks_are_a_prefix() -> None:
 
 def test_surrogate_training_design_extends_the_monte_carlo() -> None:
     """The surrogate's samples are the Monte Carlo's Latin hypercube unchanged, followed by an
-    independent one of the rest (issue 11: the SPEC network's R² stays on the SPEC's 200)."""
+    independent one of the rest (the SPEC network's R² stays on the SPEC's 200)."""
     x = training_design(30, 20, seed=3)
     assert x.shape == (30, 6)
     np.testing.assert_array_equal(x[:20], latin_hypercube(20, seed=3))

@@ -2,7 +2,8 @@
 
 The README, the documentation pages outside the Development section, the CLI help, and every
 line of the Python package and the crates' sources (docstrings, comments, report strings) are
-searched, with the crates' tests, benches and examples, the scripts and the examples, for the
+searched, with the crates' tests, benches and examples, the Python tests (all but this file,
+whose own examples are labels), the scripts and the examples, for the
 development log's labels ("stop 31", "issue 14", "(issue"), for run fingerprints
 (16 hexadecimal digits) and, in the CLI help, for "SPEC §" (the help names what a stage does,
 not a section number of the study text). A failure lists every place as file:line.
@@ -58,15 +59,16 @@ def development_pages(root: Path = ROOT) -> set[Path]:
 
 def user_files(root: Path = ROOT) -> list[Path]:
     """README, documentation outside Development, the package, the crates (sources, tests,
-    benches, examples), the scripts and the examples."""
+    benches, examples), the Python tests but this file, the scripts and the examples."""
     dev = development_pages(root)
     docs = [p for p in sorted((root / "docs").rglob("*.md")) if p.resolve() not in dev]
     sources = sorted((root / "python").rglob("*.py")) + sorted((root / "python").rglob("*.pyi"))
     crates = sorted((root / "crates").glob("*/**/*.rs"))
     crates += sorted((root / "crates").glob("*/src/**/*.toml"))
-    scripts = sorted((root / "scripts").glob("*.py")) + sorted((root / "scripts").glob("*.sh"))
+    tests = [p for p in sorted((root / "tests").rglob("*.py")) if p.name != Path(__file__).name]
+    scripts = sorted((root / "scripts").rglob("*.py")) + sorted((root / "scripts").rglob("*.sh"))
     examples = sorted((root / "examples").glob("*"))
-    return [root / "README.md", *docs, *sources, *crates, *scripts, *examples]
+    return [root / "README.md", *docs, *sources, *crates, *tests, *scripts, *examples]
 
 
 def findings(texts: Iterable[tuple[str, str]], pattern: re.Pattern[str]) -> list[str]:
