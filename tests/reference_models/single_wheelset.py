@@ -86,7 +86,8 @@ class SuspendedWheelset:
         return -eps2 / 2 + 5 * eps**2 / 8
 
     def critical_speed_closed_form(self) -> float:
-        """The Routh-Hurwitz critical speed (m/s) of the equations above, exact."""
+        """The Routh-Hurwitz critical speed (m/s) of the equations above, exact; ``inf`` when
+        the crossing condition has no real speed (stable at every speed)."""
         m, i, lam = self.mass, self.yaw_inertia, self.conicity
         r0, l0 = self.rolling_radius, self.contact_semi_distance
         kk, kp = self.lateral_stiffness + self.gravitational_stiffness, self.yaw_stiffness
@@ -94,6 +95,8 @@ class SuspendedWheelset:
         a3, a1, b = m * c1 + i * c2, c2 * kp + c1 * kk, m * kp + i * kk
         a0 = kk * kp + 4 * self.f11 * self.f22 * lam * l0 / r0
         denominator = a0 * a3**2 + m * i * a1**2 - a1 * a3 * b
+        if denominator <= 0.0:
+            return float("inf")
         return float(np.sqrt(a1 * a3 * c1 * c2 / denominator))
 
     def critical_speed_large_creep(self) -> float:

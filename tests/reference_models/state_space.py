@@ -10,6 +10,7 @@ bracket (the largest real part is continuous in V, so a sign change brackets a c
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable
 
 import numpy as np
@@ -49,7 +50,7 @@ def critical_speed(
     previous = largest_real_part(matrices, speeds[0])
     if previous >= 0.0:
         raise ValueError(f"unstable at the lowest speed {v_min} m/s (largest real part {previous})")
-    for lo, hi in zip(speeds[:-1], speeds[1:], strict=True):
+    for lo, hi in itertools.pairwise(speeds):
         current = largest_real_part(matrices, hi)
         if current >= 0.0:
             while hi - lo > rel_tol * hi:

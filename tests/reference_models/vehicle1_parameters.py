@@ -84,6 +84,8 @@ class Vehicle1:
     #: Spin creep (f23) in the wheelset forces; off in the table (textbook's simplest model).
     spin: bool = False
     gravitational_stiffness: float = 0.0
+    #: Creep coefficients to use instead of Hertz and Kalker's (for checks with f11 = f22).
+    creep_override: CreepCoefficients | None = None
 
     @property
     def total_mass(self) -> float:
@@ -97,6 +99,8 @@ class Vehicle1:
 
     def creep(self) -> CreepCoefficients:
         """Kalker's coefficients of one contact at the static wheel load."""
+        if self.creep_override is not None:
+            return self.creep_override
         return creep_coefficients(
             self.wheel_load, 1.0 / (2.0 * self.rolling_radius), 1.0 / (2.0 * self.rail_crown_radius)
         )

@@ -1,0 +1,97 @@
+"""Vehicle 1's reference results from the linear models, for the record and for the core's
+coach to be checked against: per conicity the linear critical speed and the hunting frequency
+there, the bogie kinematic mode at low speed against Wickens' rigid-bogie wavelength, and the
+steady-curving offsets and angles of attack.
+
+Run ``python -m reference_models.vehicle1_results`` from the ``tests`` directory to print the
+table. Speeds m/s (and km/h), frequencies Hz, wavelengths m, offsets mm, angles mrad.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import state_space as ss
+from .kinematic_wavelengths import rigid_bogie
+from .lateral_vehicle_model import model, running_gear_dofs
+from .steady_curving import vehicle_curving
+from .vehicle1_parameters import CONICITIES, Vehicle1
+
+#: The low speed at which the kinematic mode is read, m/s.
+LOW_SPEED = 2.0
+#: The curve of the curving table: radius (m) and the unbalanced lateral acceleration (m/s²).
+CURVE_RADIUS = 3000.0
+
+
+@dataclass(frozen=True)
+class Row:
+    """One conicity's results (SI unless named)."""
+
+    conicity: float
+    critical_speed: float
+    hunting_frequency: float
+    kinematic_wavelength: float
+    kinematic_frequency: float
+    rigid_bogie_wavelength: float
+    offsets: np.ndarray
+    attack_angles: np.ndarray
+
+
+def row(v: Vehicle1, conicity: float) -> Row:
+    """The results of one conicity."""
+    matrices = model(v, conicity)
+    vc = ss.critical_speed(matrices)
+    values = ss.eigen(matrices, vc)[0]
+    hunting = values[np.argmax(values.real)]
+    kinematic = ss.oscillatory_modes(matrices, LOW_SPEED, running_gear_dofs(v))[0]
+    cr = v.creep()
+    curving = vehicle_curving(v, conicity, CURVE_RADIUS)
+    return Row(
+        conicity=conicity,
+        critical_speed=vc,
+        hunting_frequency=abs(hunting.imag) / (2 * np.pi),
+        kinematic_wavelength=ss.wavelength(kinematic, LOW_SPEED),
+        kinematic_frequency=kinematic.imag / (2 * np.pi),
+        rigid_bogie_wavelength=rigid_bogie(
+            v.rolling_radius, v.contact_semi_distance, conicity, v.wheelbase_semi, cr.f22 / cr.f11
+        ),
+        offsets=curving.offsets,
+        attack_angles=curving.attack_angles,
+    )
+
+
+def table(v: Vehicle1 | None = None) -> list[Row]:
+    """The rows for the conicities 0.05, 0.1, 0.2, 0.3."""
+    v = v or Vehicle1()
+    return [row(v, lam) for lam in CONICITIES]
+
+
+def format_table(rows: list[Row]) -> str:
+    """The rows as a plain-text table."""
+    lines = [
+        "conicity | V_crit m/s (km/h) | f_hunt Hz | L_kin m at 2 m/s (f Hz) | L rigid bogie m"
+        f" | R {CURVE_RADIUS:.0f} m: y mm, psi mrad (wheelsets 1-4)"
+    ]
+    for r in rows:
+        curve = ", ".join(
+            f"{y * 1e3:.2f}/{p * 1e3:.3f}" for y, p in zip(r.offsets, r.attack_angles, strict=True)
+        )
+        lines.append(
+            f"{r.conicity:.2f} | {r.critical_speed:.2f} ({r.critical_speed * 3.6:.1f}) | "
+            f"{r.hunting_frequency:.3f} | {r.kinematic_wavelength:.3f} "
+            f"({r.kinematic_frequency:.4f}) | {r.rigid_bogie_wavelength:.3f} | {curve}"
+        )
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    vehicle = Vehicle1()
+    cr = vehicle.creep()
+    print(
+        f"wheel load {vehicle.wheel_load:.0f} N; ellipse a {cr.ellipse.a * 1e3:.3f} mm, "
+        f"b {cr.ellipse.b * 1e3:.3f} mm; f11 {cr.f11:.4e} N, f22 {cr.f22:.4e} N, "
+        f"f23 {cr.f23:.4e} N m"
+    )
+    print(format_table(table(vehicle)))
