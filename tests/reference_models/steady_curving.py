@@ -27,10 +27,7 @@ Two formulations, written separately so that each checks the other:
       Σ (s_i k_py Δ_i + k_pψ ε_i) − k_sψ (ψ_b − ψ_c) = 0
   (k_py, k_pψ = 2 k_x b² per wheelset; k_sy, k_sψ = 2 k_sx b_s² + anti-bending per bogie;
   y_c, ψ_c the car body's offset and yaw at the pivot from the bogie's local track).
-Closed forms for the tests: a wheelset free in yaw runs at y = −r0 l0/(λR) (pure rolling),
-and a rigid bogie (primary infinitely stiff, no secondary) at y_i = −(r0/(λR))(l0 + (f22/f11)
-a²/l0) with ψ = −a/R leading and +a/R trailing (from the rigid bogie's two equations).
-All SI.
+The closed forms they are checked against are in ``closed_forms``. All SI.
 """
 
 from __future__ import annotations
@@ -182,14 +179,3 @@ def boocock_bogie(
     j[5, 5] -= p.secondary_yaw
     rhs[5] -= p.secondary_yaw * body_yaw
     return np.linalg.solve(j, rhs)
-
-
-def pure_rolling_offset(v: Vehicle1, conicity: float, radius: float) -> float:
-    """y = −r0 l0 / (λ R), m: the offset at which a wheelset free in yaw rolls round the curve."""
-    return -v.rolling_radius * v.contact_semi_distance / (conicity * radius)
-
-
-def rigid_bogie_offset(p: BoocockBogie, conicity: float, radius: float) -> float:
-    """Both wheelsets' offset (m) of a rigid two-axle bogie with no secondary, no lateral load."""
-    l0, a = p.contact_semi_distance, p.semi_wheelbase
-    return -p.rolling_radius / (conicity * radius) * (l0 + p.f22 / p.f11 * a * a / l0)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from . import state_space as ss
-from .kinematic_wavelengths import klingel
+from .closed_forms import klingel
 from .single_wheelset import SuspendedWheelset
 
 

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from . import state_space as ss
+from .closed_forms import rigid_bogie_wavelength
 from .contact_coefficients import CreepCoefficients, Ellipse
-from .kinematic_wavelengths import rigid_bogie
 from .lateral_vehicle_model import layout, mirror, model, running_gear_dofs, suspension
 from .vehicle1_parameters import CONICITIES, Element, G, Vehicle1
 from .vehicle1_results import format_table, table
@@ -128,13 +128,15 @@ def test_the_bogie_kinematic_mode_has_wickens_rigid_bogie_wavelength() -> None:
     )
     for lam in CONICITIES:
         mode = ss.oscillatory_modes(model(v, lam), 1.0, running_gear_dofs(v))[0]
-        expected = rigid_bogie(v.rolling_radius, v.contact_semi_distance, lam, v.wheelbase_semi)
+        expected = rigid_bogie_wavelength(
+            v.rolling_radius, v.contact_semi_distance, lam, v.wheelbase_semi
+        )
         assert ss.wavelength(mode, 1.0) == pytest.approx(expected, rel=1e-5)
     # With the contact's own f22/f11 (0.92) the general form holds just as well.
     v = replace(v, creep_override=None)
     for lam in CONICITIES:
         mode = ss.oscillatory_modes(model(v, lam), 1.0, running_gear_dofs(v))[0]
-        expected = rigid_bogie(
+        expected = rigid_bogie_wavelength(
             v.rolling_radius, v.contact_semi_distance, lam, v.wheelbase_semi, cr.f22 / cr.f11
         )
         assert ss.wavelength(mode, 1.0) == pytest.approx(expected, rel=1e-5)

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import state_space as ss
-from .kinematic_wavelengths import rigid_bogie
+from .closed_forms import rigid_bogie_wavelength
 from .lateral_vehicle_model import model, running_gear_dofs
 from .steady_curving import vehicle_curving
 from .vehicle1_parameters import CONICITIES, Vehicle1
@@ -54,7 +54,7 @@ def row(v: Vehicle1, conicity: float) -> Row:
         hunting_frequency=abs(hunting.imag) / (2 * np.pi),
         kinematic_wavelength=ss.wavelength(kinematic, LOW_SPEED),
         kinematic_frequency=kinematic.imag / (2 * np.pi),
-        rigid_bogie_wavelength=rigid_bogie(
+        rigid_bogie_wavelength=rigid_bogie_wavelength(
             v.rolling_radius, v.contact_semi_distance, conicity, v.wheelbase_semi, cr.f22 / cr.f11
         ),
         offsets=curving.offsets,
