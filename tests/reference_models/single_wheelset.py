@@ -55,6 +55,18 @@ class SuspendedWheelset:
     yaw_stiffness: float = 2.0e6
     gravitational_stiffness: float = 0.0
 
+    @classmethod
+    def on_axle_boxes(
+        cls, lateral: float, longitudinal: float, semi_spacing: float, **kwargs: float
+    ) -> SuspendedWheelset:
+        """The wheelset held by two axle boxes, each of ``lateral`` and ``longitudinal``
+        stiffness (N/m), at ±``semi_spacing`` (m): k_y = 2 k_lat, k_ψ = 2 k_x b²."""
+        return cls(
+            lateral_stiffness=2 * lateral,
+            yaw_stiffness=2 * longitudinal * semi_spacing**2,
+            **kwargs,
+        )
+
     def free(self) -> SuspendedWheelset:
         """The same wheelset with no restraint (Klingel's free wheelset)."""
         return replace(self, lateral_stiffness=0.0, yaw_stiffness=0.0, gravitational_stiffness=0.0)

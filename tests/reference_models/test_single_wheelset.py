@@ -67,7 +67,8 @@ def test_large_creep_coefficients_approach_the_textbook_limit() -> None:
 def test_a_stiffly_held_wheelset_is_stable_at_every_speed() -> None:
     # Vehicle 1's primary suspension (2 × 3.884e6 N/m, 2 × 3.1391e7 N/m at ±1 m) to a fixed
     # frame: the crossing condition has no real speed, and no eigenvalue crosses up to 300 m/s.
-    w = replace(SuspendedWheelset(), lateral_stiffness=2 * 3.884e6, yaw_stiffness=2 * 3.1391e7)
+    w = SuspendedWheelset.on_axle_boxes(3.884e6, 3.1391e7, 1.0)
+    assert (w.lateral_stiffness, w.yaw_stiffness) == (2 * 3.884e6, 2 * 3.1391e7)
     assert w.critical_speed_closed_form() == float("inf")
     assert ss.critical_speed(w.matrices, 1.0, 300.0, 60) == float("inf")
 

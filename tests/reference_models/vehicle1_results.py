@@ -21,8 +21,10 @@ from .vehicle1_parameters import CONICITIES, Vehicle1
 
 #: The low speed at which the kinematic mode is read, m/s.
 LOW_SPEED = 2.0
-#: The curve of the curving table: radius (m) and the unbalanced lateral acceleration (m/s²).
+#: The curve of the curving table, radius (m).
 CURVE_RADIUS = 3000.0
+#: The cant deficiency case: 100 mm on the 1.5 m between rolling circles, g·0.1/1.5 (m/s²).
+UNBALANCED_ACCELERATION = 9.81 * 0.100 / 1.5
 
 
 @dataclass(frozen=True)
@@ -37,6 +39,8 @@ class Row:
     rigid_bogie_wavelength: float
     offsets: np.ndarray
     attack_angles: np.ndarray
+    offsets_cant_deficiency: np.ndarray
+    attack_angles_cant_deficiency: np.ndarray
 
 
 def row(v: Vehicle1, conicity: float) -> Row:
@@ -48,6 +52,7 @@ def row(v: Vehicle1, conicity: float) -> Row:
     kinematic = ss.oscillatory_modes(matrices, LOW_SPEED, running_gear_dofs(v))[0]
     cr = v.creep()
     curving = vehicle_curving(v, conicity, CURVE_RADIUS)
+    deficient = vehicle_curving(v, conicity, CURVE_RADIUS, UNBALANCED_ACCELERATION)
     return Row(
         conicity=conicity,
         critical_speed=vc,
@@ -59,6 +64,8 @@ def row(v: Vehicle1, conicity: float) -> Row:
         ),
         offsets=curving.offsets,
         attack_angles=curving.attack_angles,
+        offsets_cant_deficiency=deficient.offsets,
+        attack_angles_cant_deficiency=deficient.attack_angles,
     )
 
 
@@ -68,20 +75,27 @@ def table(v: Vehicle1 | None = None) -> list[Row]:
     return [row(v, lam) for lam in CONICITIES]
 
 
+def _pairs(offsets: np.ndarray, angles: np.ndarray) -> str:
+    return ", ".join(f"{y * 1e3:.2f}/{p * 1e3:.3f}" for y, p in zip(offsets, angles, strict=True))
+
+
 def format_table(rows: list[Row]) -> str:
-    """The rows as a plain-text table."""
-    lines = [
-        "conicity | V_crit m/s (km/h) | f_hunt Hz | L_kin m at 2 m/s (f Hz) | L rigid bogie m"
-        f" | R {CURVE_RADIUS:.0f} m: y mm, psi mrad (wheelsets 1-4)"
-    ]
+    """The rows as two plain-text tables: stability, then curving."""
+    lines = ["conicity | V_crit m/s (km/h) | f_hunt Hz | L_kin m at 2 m/s (f Hz) | L rigid bogie m"]
     for r in rows:
-        curve = ", ".join(
-            f"{y * 1e3:.2f}/{p * 1e3:.3f}" for y, p in zip(r.offsets, r.attack_angles, strict=True)
-        )
         lines.append(
             f"{r.conicity:.2f} | {r.critical_speed:.2f} ({r.critical_speed * 3.6:.1f}) | "
             f"{r.hunting_frequency:.3f} | {r.kinematic_wavelength:.3f} "
-            f"({r.kinematic_frequency:.4f}) | {r.rigid_bogie_wavelength:.3f} | {curve}"
+            f"({r.kinematic_frequency:.4f}) | {r.rigid_bogie_wavelength:.3f}"
+        )
+    lines.append(
+        f"R {CURVE_RADIUS:.0f} m, y mm / psi mrad of wheelsets 1-4: balance speed | "
+        f"{UNBALANCED_ACCELERATION:.3f} m/s2 unbalanced"
+    )
+    for r in rows:
+        lines.append(
+            f"{r.conicity:.2f} | {_pairs(r.offsets, r.attack_angles)} | "
+            f"{_pairs(r.offsets_cant_deficiency, r.attack_angles_cant_deficiency)}"
         )
     return "\n".join(lines)
 
