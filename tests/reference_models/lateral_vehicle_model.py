@@ -32,7 +32,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .vehicle1_parameters import G, Vehicle1
+from .state_space import Matrices
+from .vehicle1_parameters import Element, G, Vehicle1
 
 N_DOF = 17
 
@@ -47,6 +48,13 @@ class BodyDofs:
     phi: int | None
     x: float
     height: float
+
+    @property
+    def roll(self) -> int:
+        """The roll coordinate's index (bogies and car body; a wheelset has none)."""
+        if self.phi is None:
+            raise ValueError("a wheelset has no roll coordinate")
+        return self.phi
 
 
 def layout(v: Vehicle1) -> tuple[list[BodyDofs], list[BodyDofs], BodyDofs]:
@@ -91,9 +99,15 @@ def suspension(v: Vehicle1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     for b in [*bogies, carbody]:
         body = v.carbody if b is carbody else v.bogie
         m[b.y, b.y], m[b.psi, b.psi] = body.mass, body.yaw_inertia
-        m[b.phi, b.phi] = body.roll_inertia
+        m[b.roll, b.roll] = body.roll_inertia
 
-    def spring(lower: BodyDofs, upper: BodyDofs, point, direction, element) -> None:
+    def spring(
+        lower: BodyDofs,
+        upper: BodyDofs,
+        point: tuple[float, float, float],
+        direction: str,
+        element: Element,
+    ) -> None:
         g = _gradient(upper, point, direction) - _gradient(lower, point, direction)
         k[:] += element.stiffness * np.outer(g, g)
         c[:] += element.damping * np.outer(g, g)
@@ -148,7 +162,7 @@ def creep_terms(v: Vehicle1, conicity: float, speed: float) -> tuple[np.ndarray,
     return c, k
 
 
-def model(v: Vehicle1, conicity: float):
+def model(v: Vehicle1, conicity: float) -> Matrices:
     """The model as a function of speed: V -> (M, C, K) (SI), for ``state_space``."""
     m, cs, ks = suspension(v)
 

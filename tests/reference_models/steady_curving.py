@@ -86,7 +86,8 @@ def vehicle_curving(
         f[b.y] += v.bogie.mass * outward
     f[carbody.y] += v.carbody.mass * outward
     q = np.zeros(N_DOF)
-    fixed = sorted(clamped or {})
+    clamped = clamped or {}
+    fixed = sorted(clamped)
     free = [i for i in range(N_DOF) if i not in fixed]
     for i in fixed:
         q[i] = clamped[i]

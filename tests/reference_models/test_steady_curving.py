@@ -66,7 +66,7 @@ def test_boococks_bogie_equations_agree_with_the_assembled_model() -> None:
     # and −x_b/R from the bogie's local track; with cant deficiency (0.5 m/s² outward).
     v = Vehicle1()
     _wheelsets, bogies, car = layout(v)
-    clamps = {car.y: 0.0, car.psi: 0.0, car.phi: 0.0, bogies[0].phi: 0.0, bogies[1].phi: 0.0}
+    clamps = {car.y: 0.0, car.psi: 0.0, car.roll: 0.0, bogies[0].roll: 0.0, bogies[1].roll: 0.0}
     p = BoocockBogie.of(v)
     for conicity in CONICITIES:
         for radius in (1200.0, -3000.0):

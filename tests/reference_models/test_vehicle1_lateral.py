@@ -53,7 +53,7 @@ def test_car_body_on_the_secondary_has_the_hand_derived_frequencies() -> None:
     m2 = np.diag([v.carbody.mass, v.carbody.roll_inertia])
     sway = np.sort(np.sqrt(np.linalg.eigvals(np.linalg.solve(m2, k2)).real)) / (2 * np.pi)
     expected = np.sort([*sway, np.sqrt(yaw / v.carbody.yaw_inertia) / (2 * np.pi)])
-    got = clamped_frequencies(v, [car.y, car.psi, car.phi])
+    got = clamped_frequencies(v, [car.y, car.psi, car.roll])
     np.testing.assert_allclose(got, expected, rtol=1e-10)
     # The lower sway mode of a coach is slow, about 0.5-1 Hz.
     assert 0.3 < got[0] < 1.0
