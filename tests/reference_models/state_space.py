@@ -63,24 +63,41 @@ def critical_speed(
     return float("inf")
 
 
+def energy_shares(m: np.ndarray, vector: np.ndarray) -> np.ndarray:
+    """Each coordinate's share (–) of a mode's kinetic energy, ½ q̇ᵀ M q̇ with M diagonal,
+    from an eigenvector of the state [q, q̇]."""
+    n = m.shape[0]
+    energy = np.diag(m) * np.abs(vector[n:]) ** 2
+    return energy / energy.sum()
+
+
 def oscillatory_modes(
-    matrices: Matrices, speed: float, dofs: list[int], min_share: float = 0.5
+    matrices: Matrices, speed: float, dofs: list[int] | None = None, min_share: float = 0.0
 ) -> list[complex]:
-    """Eigenvalues with ω > 0 (and ω > 1e-3 |σ|: not a real pair split by round-off) whose
-    eigenvector's displacement part has at least ``min_share``
-    of its squared norm in the coordinates ``dofs``, sorted by frequency. The displacement
-    coordinates are compared as they are (m and rad), which is what singles out the running
-    gear's modes from the carbody's or the suspension's at low speed."""
+    """Eigenvalues with ω > 0 (and ω > 1e-3 |σ|: not a real pair split by round-off), sorted
+    by frequency; with ``dofs``, only those with at least ``min_share`` of their kinetic energy
+    in these coordinates."""
+    m = matrices(speed)[0]
     values, vectors = eigen(matrices, speed)
-    n = vectors.shape[0] // 2
     chosen = []
     for s, vec in zip(values, vectors.T, strict=True):
         if s.imag <= max(1e-6, 1e-3 * abs(s.real)):
             continue
-        q = np.abs(vec[:n]) ** 2
-        if q[dofs].sum() >= min_share * q.sum():
+        if dofs is None or energy_shares(m, vec)[dofs].sum() >= min_share:
             chosen.append(complex(s))
     return sorted(chosen, key=lambda s: s.imag)
+
+
+def kinematic_mode(matrices: Matrices, speed: float) -> complex:
+    """The kinematic mode at a low ``speed``: the slowest oscillation, whose frequency grows
+    in proportion to the speed (the suspension's modes keep theirs and the creep modes are
+    overdamped). Refused when the slowest oscillation at twice the speed is not about twice as
+    fast (then ``speed`` is not low enough for the kinematic mode to be the slowest)."""
+    slow = oscillatory_modes(matrices, speed)[0]
+    fast = oscillatory_modes(matrices, 2 * speed)[0]
+    if abs(fast.imag / slow.imag - 2.0) > 0.05:
+        raise ValueError(f"no kinematic mode at {speed} m/s: {slow} and {fast} at twice the speed")
+    return slow
 
 
 def wavelength(eigenvalue: complex, speed: float) -> float:

@@ -148,7 +148,7 @@ def test_the_bogie_kinematic_mode_has_wickens_rigid_bogie_wavelength() -> None:
         creep_override=CreepCoefficients(cr.f11, cr.f11, 0.0, Ellipse(0.0, 0.0)),
     )
     for lam in CONICITIES:
-        mode = ss.oscillatory_modes(model(v, lam), 1.0, running_gear_dofs(v))[0]
+        mode = ss.kinematic_mode(model(v, lam), 1.0)
         expected = rigid_bogie_wavelength(
             v.rolling_radius, v.contact_semi_distance, lam, v.wheelbase_semi
         )
@@ -156,7 +156,7 @@ def test_the_bogie_kinematic_mode_has_wickens_rigid_bogie_wavelength() -> None:
     # With the contact's own f22/f11 (0.92) the general form holds just as well.
     v = replace(v, creep_override=None)
     for lam in CONICITIES:
-        mode = ss.oscillatory_modes(model(v, lam), 1.0, running_gear_dofs(v))[0]
+        mode = ss.kinematic_mode(model(v, lam), 1.0)
         expected = rigid_bogie_wavelength(
             v.rolling_radius, v.contact_semi_distance, lam, v.wheelbase_semi, cr.f22 / cr.f11
         )
@@ -175,9 +175,11 @@ def test_vehicle1_hunts_in_its_bogies_above_a_critical_speed_falling_with_conici
         assert ss.largest_real_part(matrices, 0.999 * r.critical_speed) < 0.0
         assert ss.largest_real_part(matrices, 1.001 * r.critical_speed) > 0.0
         values, vectors = ss.eigen(matrices, r.critical_speed)
-        q = np.abs(vectors[:17, np.argmax(values.real)]) ** 2
-        # The unstable mode is the running gear's (bogie hunting), not the car body's.
-        assert q[running_gear_dofs(v)].sum() > 0.95 * q.sum()
+        shares = ss.energy_shares(matrices(r.critical_speed)[0], vectors[:, np.argmax(values.real)])
+        # The unstable mode is the running gear's (bogie hunting): most of its kinetic energy
+        # is in the wheelsets' and bogies' lateral and yaw motion (measured 0.78 at λ = 0.05,
+        # where the car body takes 0.21, to 0.96 at λ = 0.3).
+        assert shares[running_gear_dofs(v)].sum() > 0.5
         # The finite primary makes the bogie's kinematic wavelength shorter than the rigid
         # bogie's, more so as the creep stiffness (∝ λ) grows against the primary's.
         assert r.kinematic_wavelength < r.rigid_bogie_wavelength

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import state_space as ss
 from .closed_forms import rigid_bogie_wavelength
-from .lateral_vehicle_model import model, running_gear_dofs
+from .lateral_vehicle_model import model
 from .steady_curving import vehicle_curving
 from .vehicle1_parameters import CONICITIES, Vehicle1
 
@@ -49,7 +49,7 @@ def row(v: Vehicle1, conicity: float) -> Row:
     vc = ss.critical_speed(matrices)
     values = ss.eigen(matrices, vc)[0]
     hunting = values[np.argmax(values.real)]
-    kinematic = ss.oscillatory_modes(matrices, LOW_SPEED, running_gear_dofs(v))[0]
+    kinematic = ss.kinematic_mode(matrices, LOW_SPEED)
     cr = v.creep()
     curving = vehicle_curving(v, conicity, CURVE_RADIUS)
     deficient = vehicle_curving(v, conicity, CURVE_RADIUS, UNBALANCED_ACCELERATION)
