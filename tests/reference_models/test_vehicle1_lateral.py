@@ -12,7 +12,6 @@ import pytest
 
 from . import state_space as ss
 from .closed_forms import rigid_bogie_wavelength
-from .contact_coefficients import CreepCoefficients, Ellipse
 from .lateral_vehicle_model import layout, mirror, model, running_gear_dofs, suspension
 from .vehicle1_parameters import CONICITIES, Element, G, Vehicle1
 from .vehicle1_results import format_table, table
@@ -145,8 +144,7 @@ def test_the_bogie_kinematic_mode_has_wickens_rigid_bogie_wavelength() -> None:
         anti_roll_per_bogie=0.0,
         anti_bending_per_bogie=0.0,
         gravity=False,
-        creep_override=CreepCoefficients(cr.f11, cr.f11, 0.0, Ellipse(0.0, 0.0)),
-    )
+    ).with_contact(cr.f11, cr.f11)
     for lam in CONICITIES:
         mode = ss.kinematic_mode(model(v, lam), 1.0)
         expected = rigid_bogie_wavelength(

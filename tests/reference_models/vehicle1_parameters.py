@@ -26,9 +26,9 @@ What the README does not give, and is chosen here:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from .contact_coefficients import CreepCoefficients, creep_coefficients
+from .contact_coefficients import CreepCoefficients, Ellipse, creep_coefficients
 
 #: Gravitational acceleration, m/s².
 G = 9.81
@@ -103,6 +103,26 @@ class Vehicle1:
             return self.creep_override
         return creep_coefficients(
             self.wheel_load, 1.0 / (2.0 * self.rolling_radius), 1.0 / (2.0 * self.rail_crown_radius)
+        )
+
+    def with_contact(
+        self,
+        f11: float,
+        f22: float,
+        f23: float = 0.0,
+        gravitational_stiffness: float = 0.0,
+        contact_semi_distance: float | None = None,
+        rolling_radius: float | None = None,
+    ) -> Vehicle1:
+        """The vehicle with given linear contact parameters (per contact f11, f22 in N, f23 in
+        N·m; per wheelset k_g in N/m; l0, r0 in m), e.g. those another model's contact gives,
+        in place of the Hertz and Kalker ones."""
+        return replace(
+            self,
+            creep_override=CreepCoefficients(f11, f22, f23, Ellipse(float("nan"), float("nan"))),
+            gravitational_stiffness=gravitational_stiffness,
+            contact_semi_distance=contact_semi_distance or self.contact_semi_distance,
+            rolling_radius=rolling_radius or self.rolling_radius,
         )
 
 
