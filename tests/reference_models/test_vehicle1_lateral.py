@@ -13,6 +13,7 @@ import pytest
 from . import state_space as ss
 from .closed_forms import rigid_bogie_wavelength
 from .lateral_vehicle_model import layout, mirror, model, running_gear_dofs, suspension
+from .single_wheelset import SuspendedWheelset
 from .vehicle1_parameters import CONICITIES, Element, G, Vehicle1
 from .vehicle1_results import format_table, table
 
@@ -77,6 +78,34 @@ def test_at_vanishing_speed_the_bodies_move_as_on_the_suspension_alone() -> None
     # Measured: 1.1e-4 at 0.01 m/s, 1.1e-5 at 0.001 m/s (first order in V).
     assert gaps[1] < 2e-5
     assert gaps[1] < gaps[0] / 5
+
+
+def test_a_wheelset_of_the_assembled_model_is_the_suspended_wheelset() -> None:
+    # Every coordinate but one wheelset's held: the assembled model (elements and creep terms)
+    # must be the directly written two-coordinate wheelset on Vehicle 1's two axle boxes, with
+    # the same creep coefficients, at every speed and in both running directions.
+    v = Vehicle1()
+    cr = v.creep()
+    w = SuspendedWheelset.on_axle_boxes(
+        v.primary_lateral.stiffness,
+        v.primary_longitudinal.stiffness,
+        v.primary_semi_spacing,
+        f11=cr.f11,
+        f22=cr.f22,
+        conicity=0.2,
+    )
+    wheelset = layout(v)[0][1]
+    sub = np.ix_([wheelset.y, wheelset.psi], [wheelset.y, wheelset.psi])
+    for speed in (3.0, 60.0, -60.0):
+        m, c, k = model(v, 0.2)(speed)
+        mw, cw, kw = w.matrices(speed)
+        np.testing.assert_allclose(m[sub], mw, rtol=1e-14)
+        np.testing.assert_allclose(k[sub], kw, rtol=1e-12)
+        # The axle boxes' dampers are the assembled model's addition.
+        damping = np.diag(
+            [2 * v.primary_lateral.damping, 2 * v.primary_longitudinal.damping * 1.0**2]
+        )
+        np.testing.assert_allclose(c[sub], cw + damping, rtol=1e-12)
 
 
 def test_bogie_yaw_on_its_primary_and_secondary() -> None:
