@@ -205,7 +205,7 @@ def test_vehicle1_hunts_in_its_bogies_above_a_critical_speed_falling_with_conici
         shares = ss.energy_shares(matrices(r.critical_speed)[0], vectors[:, np.argmax(values.real)])
         # The unstable mode is the running gear's (bogie hunting): most of its kinetic energy
         # is in the wheelsets' and bogies' lateral and yaw motion (measured 0.78 at λ = 0.05,
-        # where the car body takes 0.21, to 0.96 at λ = 0.3).
+        # where the car body takes 0.21, to 0.95 at λ = 0.3).
         assert shares[running_gear_dofs(v)].sum() > 0.5
         # The finite primary makes the bogie's kinematic wavelength shorter than the rigid
         # bogie's, more so as the creep stiffness (∝ λ) grows against the primary's.
