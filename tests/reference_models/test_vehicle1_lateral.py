@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,7 +16,7 @@ from .closed_forms import rigid_bogie_wavelength
 from .lateral_vehicle_model import layout, mirror, model, running_gear_dofs, suspension
 from .single_wheelset import SuspendedWheelset
 from .vehicle1_parameters import CONICITIES, Element, G, Vehicle1
-from .vehicle1_results import format_table, table
+from .vehicle1_results import Row, format_table, table
 
 
 def clamped_frequencies(v: Vehicle1, dofs: list[int]) -> np.ndarray:
@@ -190,8 +191,32 @@ def test_the_bogie_kinematic_mode_has_wickens_rigid_bogie_wavelength() -> None:
         assert ss.wavelength(mode, 1.0) == pytest.approx(expected, rel=1e-5)
 
 
-def test_vehicle1_hunts_in_its_bogies_above_a_critical_speed_falling_with_conicity() -> None:
-    rows = table()
+@pytest.fixture(scope="module")
+def rows() -> list[Row]:
+    """Vehicle 1's results table, computed once."""
+    return table()
+
+
+def test_the_readme_records_the_current_results(rows: list[Row]) -> None:
+    # The README's results table, as printed, is what the models give now.
+    text = (Path(__file__).parent / "README.md").read_text(encoding="utf-8")
+    for r in rows:
+        line = (
+            f"| {r.conicity:.2f} | {r.critical_speed:.2f} ({r.critical_speed * 3.6:.1f}) | "
+            f"{r.hunting_frequency:.3f} | {r.kinematic_wavelength:.3f} "
+            f"({r.kinematic_frequency:.4f}) | {r.rigid_bogie_wavelength:.3f} |"
+        )
+        assert line in text, line
+        curving = ", ".join(
+            f"{y * 1e3:.2f}/{p * 1e3:.3f}".replace("-", "−")
+            for y, p in zip(r.offsets, r.attack_angles, strict=True)
+        )
+        assert f"| {r.conicity:.2f} | {curving} |" in text, curving
+
+
+def test_vehicle1_hunts_in_its_bogies_above_a_critical_speed_falling_with_conicity(
+    rows: list[Row],
+) -> None:
     print("\n" + format_table(rows))
     speeds = [r.critical_speed for r in rows]
     assert all(np.isfinite(speeds))
