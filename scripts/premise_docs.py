@@ -6,7 +6,7 @@ on the linearised vehicle, and which uncertain inputs move the modes it is about
     python scripts/premise_docs.py --check   # exit 1 when the page is out of date (CI test)
 
 The results themselves take minutes; the tests recompute a few of their cells
-(``tests/test_premise_map.py``, ``tests/test_uncertainty.py``).
+(``tests/studies/test_premise_map.py``, ``tests/studies/test_uncertainty.py``).
 """
 
 from __future__ import annotations

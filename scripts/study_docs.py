@@ -59,10 +59,9 @@ What the model says today on the [reference study](STUDY.md). This page is gener
 files of one `loco reproduce --quick` run, copied into `docs/study/`
 (`python scripts/study_docs.py --from DIR --write`; a test fails when the page is not what those
 files give). Its verdict and its premise section are computed by the report's own code from the
-damper comparisons' per-track tables; every other paragraph is the summary the stage wrote. The
-conclusions are pinned by tests that can fail (`tests/test_conclusions.py`,
-`tests/test_verdict.py`). The run's own report (`<out>/report.md` and `report.html`) has every
-table and figure.
+damper comparisons' per-track tables; every other paragraph is the summary the stage wrote.
+The conclusions are pinned by tests that can fail (`tests/conclusions/`). The run's own report
+(`<out>/report.md` and `report.html`) has every table and figure.
 """
 
 METHODS = """\

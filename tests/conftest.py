@@ -49,3 +49,10 @@ def tiny_study(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str]:
     with contextlib.redirect_stdout(buffer):
         assert main([*TINY_ARGS, "--out", str(out)]) == 0
     return out, buffer.getvalue()
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """Every test on the tiny study is slow: the study itself takes minutes (once per session)."""
+    for item in items:
+        if "tiny_study" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.slow)

@@ -9,7 +9,7 @@ temporaries of that size, along the p inputs of each pair, and stacks them twice
 :class:`ScaledKernelWithNoise` computes the same numbers, each with the same IEEE operations in
 the same order as scikit-learn's code, input by input into one preallocated array, so the
 optimiser follows the same path and every fitted model is the same bit for bit
-(``tests/test_gp_kernel.py`` compares both with ``np.array_equal``). Anything else (a cross
+(``tests/studies/test_gp_kernel.py`` compares both with ``np.array_equal``). Anything else (a cross
 kernel ``k(X, Y)``, no gradient, fixed hyperparameters, another composition) is scikit-learn's
 own code.
 """

@@ -1,6 +1,6 @@
 //! The 90-DOF B0-B0 locomotive (SPEC §1): parameters, bodies, suspension, contact, equations of
 //! motion, runs and their analyses, one folder per layer. A layer uses only the layers before it
-//! in this list (`tests/test_module_graph.py` checks that no modules use each other):
+//! in this list (`tests/api/test_module_graph.py` checks that no modules use each other):
 //!
 //! - [`params`]: the parameter file (embedded default vehicle, overrides by name), its schema
 //!   (unit, kind, physical range, what each key affects), units, input ranges and presets.

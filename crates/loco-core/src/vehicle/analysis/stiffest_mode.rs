@@ -68,7 +68,7 @@ fn check_step_for(mode: &StiffestMode, step: f64) -> Result<()> {
 
 /// Most RK4 substeps [`stable_step`] divides a step into. The physical ends of the schema's ranges
 /// need at most 4 at the default 1 ms step (the hollow shaft's lightest roll and yaw inertias; its
-/// stiffest bearings and the lightest motor inertias 2-3; `tests/test_fuzz_vehicle.py`); a
+/// stiffest bearings and the lightest motor inertias 2-3; `tests/api/test_fuzz_vehicle.py`); a
 /// vehicle needing more than twice that has a mode far beyond any physical one (a research value
 /// out of range, which the error then names), and its run would cost that many times more.
 pub const MAX_SUBSTEPS: f64 = 8.0;

@@ -75,6 +75,7 @@ def test_underivable_valve_is_an_infeasible_design() -> None:
     assert np.isnan(frame.loc[0, "W_y"])
 
 
+@pytest.mark.slow
 def test_nsga2_plumbing_on_a_tiny_case(monkeypatch: pytest.MonkeyPatch) -> None:
     """The whole loop with pymoo (2 generations of 4): every evaluated design is logged with its
     generation, and the front holds only feasible, non-dominated designs."""

@@ -12,7 +12,7 @@ import loco
 from loco.channels import CHANNEL_KINDS, METRIC_NAMES, ChannelKind, Metric, channel_table
 from script_modules import load_script
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 #: The metric columns as the SPEC's report reads them (an independent list, not the table).
 EXPECTED_METRICS = (

@@ -121,7 +121,7 @@ def test_the_committed_screening_is_what_the_model_gives_now() -> None:
 
     script = load_script("morris_screening")
     outputs = list(uncertainty.OUTPUTS)
-    results = Path(__file__).parents[1] / "docs" / "screening"
+    results = Path(__file__).parents[2] / "docs" / "screening"
     stored = pd.read_csv(results / "morris_outputs.csv")[outputs].to_numpy()
     x = uncertainty.morris_samples(None, outputs, script.TRAJECTORIES, script.SEED, script.LEVELS)
     table = uncertainty.screened_inputs(uncertainty.ranges(), outputs)

@@ -43,6 +43,7 @@ yaw_damper_damping = { low = 7e5, high = 9e5, kind = "tolerance", why = "test", 
 """
 
 
+@pytest.mark.slow
 def test_the_premise_study_runs_on_a_vehicle_file(tmp_path: Path) -> None:
     path = _vehicle_file(tmp_path)
     ranges = tmp_path / "ranges.toml"
@@ -87,6 +88,7 @@ def test_bad_input_is_refused_before_any_run(tmp_path: Path) -> None:
     assert not (tmp_path / "b").exists()
 
 
+@pytest.mark.slow
 def test_the_advantage_sensitivity_finds_the_input_that_sets_it() -> None:
     # A known answer: the FSD's S_low advantage is exp(a) for an input `a`, noise `b` beside it;
     # the forest must score well on held-out locomotives and rank `a` first.

@@ -20,7 +20,7 @@ import yaml
 
 from loco.cli import build_parser
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 #: Development labels and run fingerprints.
 #: Between a label's words: a space, or a line break with the next line's comment marker.

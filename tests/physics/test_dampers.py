@@ -136,6 +136,7 @@ def test_bench_rejects_bad_input() -> None:
         dampers.bench_recorded(dampers.YD1, [0.0, 1.0, 1.0], [0.0, 0.0, 0.0])
 
 
+@pytest.mark.slow
 def test_damper_bench_command(tmp_path: Path) -> None:
     assert main(["damper-bench", "--out", str(tmp_path)]) == 0
     assert (tmp_path / "damper_bench.png").stat().st_size > 10_000

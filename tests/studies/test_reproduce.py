@@ -196,6 +196,7 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     assert set(critical["damper"]) == set(sweep["damper"])
 
 
+@pytest.mark.slow
 def test_stages_request_what_they_demand(run: tuple[Path, str]) -> None:
     """The simulations each stage of the tiny run stored (its campaign stores) are those its
     ``demand()`` counts, so ``Sizes.runs()`` and the ``--quick``/``--full`` help count every
@@ -227,6 +228,7 @@ def test_stages_request_what_they_demand(run: tuple[Path, str]) -> None:
     assert f"~{QUICK.runs()} runs" in text and f"~{FULL.runs()} runs" in text
 
 
+@pytest.mark.slow
 def test_rerun_skips_finished_stages(
     run: tuple[Path, str], capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -247,6 +249,7 @@ def test_rerun_skips_finished_stages(
     assert len(pd.read_csv(out / "optimisation" / "pareto_verification.csv")) <= 2
 
 
+@pytest.mark.slow
 def test_damaged_monte_carlo_table_is_rebuilt_from_the_store(run: tuple[Path, str]) -> None:
     """A truncated ``monte_carlo.csv`` (the file still exists) is not trusted; the stage
     runs again and takes every sample from its store (no simulation), so the stages that read
@@ -314,6 +317,7 @@ def _variants(value: Any, files: list[DataFile]) -> list[Any]:
     raise AssertionError(f"no variants for a stage input of type {type(value).__name__}")
 
 
+@pytest.mark.slow
 def test_every_stage_input_changes_its_hash(tmp_path: Path) -> None:
     """Each stage's hash changes with every one of its fields, nested fields included, and with
     nothing else: the speed sweep's damper was once left out of a hand-made settings list. A
@@ -355,6 +359,7 @@ def _integrators(value: Any) -> list[str]:
     return found
 
 
+@pytest.mark.slow
 def test_the_integrator_reaches_every_stage_that_simulates(tmp_path: Path) -> None:
     """``--integrator rk4`` (the reference; the default is etdrk4) sets the scheme of every stage
     that runs the simulator (the surrogate, the damper bench, the premise map and the screening

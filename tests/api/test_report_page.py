@@ -15,7 +15,7 @@ import pytest
 from loco.studies import report_html
 
 #: Where the screenshot goes (kept by CI as a test artifact; ``build/`` is not tracked).
-ARTIFACTS = Path(__file__).resolve().parents[1] / "build" / "artifacts"
+ARTIFACTS = Path(__file__).resolve().parents[2] / "build" / "artifacts"
 #: The first screen: the viewport of a common laptop.
 VIEWPORT = {"width": 1280, "height": 900}
 BROWSERS = ("chromium", "chromium-browser", "google-chrome")

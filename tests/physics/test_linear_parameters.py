@@ -16,7 +16,7 @@ from loco._loco import conical_profiles
 from loco.cli import main
 from script_modules import load_script
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _docs_script() -> ModuleType:

@@ -13,7 +13,7 @@ import pytest
 
 import loco
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 BINARY = Path(os.environ.get("LOCO_BATCH_BIN", ROOT / "target" / "release" / "loco-batch"))
 
 pytestmark = pytest.mark.skipif(

@@ -36,6 +36,7 @@ def test_the_textbook_cone_shows_the_premise_at_conicity_0_04(cones: pd.DataFram
     assert low["carbody_zeta_low"] < 0 and low["carbody_zeta_high"] < 0
 
 
+@pytest.mark.slow
 def test_real_pairs_the_default_vehicle_holds_new_wheels_on_1_in_20_show_the_premise() -> None:
     result = pm.premise_map(dampings=PRESETS, families=("pair",), progress=False)
     cells = pm.premise_cells(result)
@@ -76,7 +77,7 @@ def test_the_committed_map_is_what_the_model_gives_now() -> None:
     # A few cells of the committed map recomputed (docs/screening, scripts/premise_map.py).
     from pathlib import Path
 
-    committed = pd.read_csv(Path(__file__).parents[1] / "docs/screening/premise_map.csv")
+    committed = pd.read_csv(Path(__file__).parents[2] / "docs/screening/premise_map.csv")
     fresh = pm.premise_map(
         conicities=(0.03,), dampings=(500e3,), families=("cone on CN60",), progress=False
     )
@@ -95,6 +96,7 @@ def test_the_premise_page_is_generated_from_the_committed_results() -> None:
     )
 
 
+@pytest.mark.slow
 def test_the_premise_case_is_new_wheels_on_rails_inclined_1_in_20() -> None:
     from loco.contact_pairs import ContactPair
     from loco.studies import premise_case
@@ -145,7 +147,7 @@ def test_the_committed_plausible_locomotives_are_what_the_model_gives_now() -> N
 
     from loco.studies import premise_probability as pp
 
-    results = Path(__file__).parents[1] / "docs" / "screening"
+    results = Path(__file__).parents[2] / "docs" / "screening"
     meta = json.loads((results / "plausible.json").read_text(encoding="utf-8"))
     frame = pd.read_csv(results / "plausible.csv")
     inputs, pairs = pp.sample_locomotives(meta["n"], meta["seed"])

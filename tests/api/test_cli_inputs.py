@@ -14,7 +14,7 @@ import pytest
 from loco.cli import main
 from loco.commands import arguments
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 BATCH = Path(os.environ.get("LOCO_BATCH_BIN", ROOT / "target" / "release" / "loco-batch"))
 
 #: (argv, the option the error must name): every numeric option of every subcommand.

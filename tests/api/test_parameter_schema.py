@@ -11,7 +11,7 @@ import loco
 from loco.studies.parameters import STUDY_PARAMETERS
 from script_modules import load_script
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _docs_script() -> ModuleType:

@@ -238,6 +238,7 @@ def _child(path: str) -> list[dict[str, Any]]:
     return [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path", ["overrides", "file", "runs"])
 def test_every_vehicle_parameter_gives_a_typed_error_naming_it_or_a_finite_run(path: str) -> None:
     import loco

@@ -16,7 +16,7 @@ from collections import defaultdict
 from itertools import pairwise
 from pathlib import Path
 
-SRC = Path(__file__).resolve().parents[1] / "crates" / "loco-core" / "src"
+SRC = Path(__file__).resolve().parents[2] / "crates" / "loco-core" / "src"
 
 _PATH_START = re.compile(r"\b(crate|super|self)::")
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")

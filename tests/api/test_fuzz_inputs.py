@@ -5,7 +5,7 @@ Each case must give a :class:`loco.LocoError` whose message names what is wrong 
 or the file), or a result: never an abort, a hang, a raw ``TypeError``/``ValueError``/
 ``KeyError``/``UnicodeDecodeError`` or a silent acceptance of what the case marks as bad. The
 cases run in one child process under a memory and CPU-time limit, as in
-``tests/test_fuzz_scenario.py``; none runs a simulation longer than 20 m, so the suite costs a
+``tests/api/test_fuzz_scenario.py``; none runs a simulation longer than 20 m, so the suite costs a
 few seconds.
 """
 
@@ -21,6 +21,8 @@ import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
+
+import pytest
 
 #: Address-space and CPU-time limits of the child, as for the scenario fuzz.
 MEMORY_LIMIT = 3 * 2**30
@@ -589,6 +591,7 @@ def _limit() -> None:
     resource.setrlimit(resource.RLIMIT_CPU, (CPU_LIMIT, CPU_LIMIT))
 
 
+@pytest.mark.slow
 def test_every_bad_input_gives_a_typed_error_naming_it() -> None:
     done = subprocess.run(
         [sys.executable, __file__],

@@ -44,6 +44,7 @@ def data() -> tuple[np.ndarray, np.ndarray]:
     return x, np.column_stack([smooth(x), smooth(x[:, ::-1])])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n_jobs", [1, 2])
 def test_tasks_give_the_loop_result(data: tuple[np.ndarray, np.ndarray], n_jobs: int) -> None:
     x, y = data

@@ -9,6 +9,8 @@ import subprocess
 import sys
 import time
 
+import pytest
+
 SCRIPT = """
 import loco
 print("started", flush=True)
@@ -98,6 +100,7 @@ for name in sys.argv[2:]:
 """
 
 
+@pytest.mark.slow
 def test_many_sigints_across_the_bindings() -> None:
     import json
 

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 #: Seconds one page's script may take (the examples are sized to run in seconds).
 PAGE_TIMEOUT_S = 300
 

@@ -12,7 +12,7 @@ import pytest
 import loco
 from loco.cli import main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE_STUDY = ROOT / "examples" / "study.toml"
 EXAMPLE_SAMPLES = ROOT / "examples" / "samples.csv"
 
