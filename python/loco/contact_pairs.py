@@ -7,7 +7,7 @@ and with a larger rail cant - adds the new and thin-flange JM3 on CN60 ground at
 (the built-in ``cn60-gauge-ground``) and on rails inclined 1:20. :data:`PAIRS` lists them once;
 :func:`pair_rows` gives per pair the EN 15302 equivalent conicity at 3 mm and the linear contact
 parameters of :func:`loco.contact.linear_parameters` (λ, ε, σ, the gravitational stiffness under
-the study locomotive's mean axle load). ``scripts/contact_pairs_docs.py`` writes them to
+the study locomotive's mean axle load). ``scripts/docs/contact_pairs_docs.py`` writes them to
 ``docs/contact_pairs.md``, ``loco contact-report`` to its ``contact_pairs.csv``/``.md``.
 """
 

@@ -65,7 +65,7 @@ TRIGGERS: tuple[str, ...] = tuple(_loco.fsd_trigger_names())
 """FSD trigger names, the default first: ``"rms-frequency"``, ``"hydraulic"``."""
 REFERENCE_STROKE_AMPLITUDE: float = _loco.fsd_reference_stroke_amplitude()
 """Stroke amplitude (m) at which the hydraulic valve's cut-off is f_p: the measured yaw damper
-stroke of the S_low sway (``scripts/fsd_reference_stroke.py``)."""
+stroke of the S_low sway (``experiments/fsd_reference_stroke.py``)."""
 _LABELS: dict[str, Damper] = {**PRESETS, "FSD-H": FSD_HYDRAULIC}
 
 

@@ -10,7 +10,7 @@ vehicle, scenario, design, seed, software build); its store is the directory
   (name), ``status_code``, ``message``, ``loco_version``, ``build``, ``vehicle_hash``,
   ``scenario_hash``.
 
-Why Parquet files and not Zarr: ``scripts/bench_store.py`` (docs/performance.md, "Campaigns on
+Why Parquet files and not Zarr: ``scripts/bench/bench_store.py`` (docs/performance.md, "Campaigns on
 Dask") measured appending chunks of 8 samples and reading the campaign back. Appending a Parquet
 part is one new file, written to a temporary name, fsynced and renamed, so a reader sees a whole
 file or none; a Zarr append rewrites array chunks and metadata in place, which a kill can leave

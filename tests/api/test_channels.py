@@ -40,7 +40,7 @@ def test_metric_constants_are_the_tables_names_in_column_order() -> None:
 def test_committed_metrics_page_is_the_generated_one() -> None:
     docs = _docs_script()
     assert docs.PAGE.read_text(encoding="utf-8") == docs.render(), (
-        "run python scripts/metric_docs.py --write"
+        "run python scripts/docs/metric_docs.py --write"
     )
     for name in METRIC_NAMES:
         assert f"`{name}`" in docs.render()

@@ -44,7 +44,7 @@ def test_the_docs_page_lists_exactly_the_schema_keys_and_is_current() -> None:
     docs = _docs_script()
     page = docs.PAGE.read_text(encoding="utf-8")
     generated = page[page.index(docs.BEGIN) : page.index(docs.END) + len(docs.END)]
-    assert generated == docs.render(), "run python scripts/parameter_docs.py --write"
+    assert generated == docs.render(), "run python scripts/docs/parameter_docs.py --write"
     listed: list[str] = []
     section = ""
     for line in generated.splitlines():

@@ -23,14 +23,14 @@ BROWSERS = ("chromium", "chromium-browser", "google-chrome")
 
 def browser_path() -> str:
     """The Chromium to drive: ``$LOCO_CHROMIUM``, else the first of :data:`BROWSERS` on PATH.
-    Fails (does not skip) without one: scripts/test.sh installs the distribution's package."""
+    Fails (does not skip) without one: scripts/ci/test.sh installs the distribution's package."""
     found = os.environ.get("LOCO_CHROMIUM") or next(
         (p for p in map(shutil.which, BROWSERS) if p), None
     )
     if not found:
         pytest.fail(
             "no Chromium found (looked for $LOCO_CHROMIUM and " + ", ".join(BROWSERS) + "): "
-            "install it, e.g. `apt-get install -y chromium` (scripts/test.sh does)"
+            "install it, e.g. `apt-get install -y chromium` (scripts/ci/test.sh does)"
         )
     return found
 

@@ -13,7 +13,7 @@ from script_modules import load_script
 def test_the_study_page_is_what_the_committed_run_files_give() -> None:
     docs = load_script("study_docs")
     assert docs.PAGE.read_text(encoding="utf-8") == docs.render(), (
-        "docs/study_results.md is out of date: run python scripts/study_docs.py --write"
+        "docs/study_results.md is out of date: run python scripts/docs/study_docs.py --write"
     )
 
 

@@ -3,7 +3,7 @@
 The README, the documentation pages outside the Development section, the CLI help, and every
 line of the Python package and the crates' sources (docstrings, comments, report strings) are
 searched, with the crates' tests, benches and examples, the Python tests (all but this file,
-whose own examples are labels), the scripts and the examples, for the
+whose own examples are labels), the scripts, the experiments and the examples, for the
 development log's labels ("stop 31", "issue 14", "(issue"), for run fingerprints
 (16 hexadecimal digits) and, in the CLI help, for "SPEC §" (the help names what a stage does,
 not a section number of the study text). A failure lists every place as file:line.
@@ -66,7 +66,11 @@ def user_files(root: Path = ROOT) -> list[Path]:
     crates = sorted((root / "crates").glob("*/**/*.rs"))
     crates += sorted((root / "crates").glob("*/src/**/*.toml"))
     tests = [p for p in sorted((root / "tests").rglob("*.py")) if p.name != Path(__file__).name]
-    scripts = sorted((root / "scripts").rglob("*.py")) + sorted((root / "scripts").rglob("*.sh"))
+    scripts = [
+        *sorted((root / "scripts").rglob("*.py")),
+        *sorted((root / "scripts").rglob("*.sh")),
+        *sorted((root / "experiments").rglob("*.py")),
+    ]
     examples = sorted((root / "examples").glob("*"))
     return [root / "README.md", *docs, *sources, *crates, *tests, *scripts, *examples]
 
@@ -148,6 +152,6 @@ def test_readme_is_one_or_two_screens_and_its_links_resolve() -> None:
         if "://" not in target:
             assert (ROOT / target).exists(), f"README.md links to a missing {target}"
     # The two set-up commands are what CI and the main job run.
-    assert "bash scripts/test.sh" in text
-    assert "bash scripts/test.sh" in (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert "bash scripts/ci/test.sh" in text
+    assert "bash scripts/ci/test.sh" in (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     assert "loco reproduce --quick --out results/reproduce" in text

@@ -74,7 +74,7 @@ def test_pairs_table_gives_what_the_model_measures() -> None:
 def test_committed_contact_pairs_page_is_the_generated_one() -> None:
     docs = _docs_script()
     assert docs.PAGE.read_text(encoding="utf-8") == docs.render(), (
-        "run python scripts/contact_pairs_docs.py --write"
+        "run python scripts/docs/contact_pairs_docs.py --write"
     )
 
 

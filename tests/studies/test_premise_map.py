@@ -74,7 +74,7 @@ def test_bad_families_and_pairs_are_refused() -> None:
 
 
 def test_the_committed_map_is_what_the_model_gives_now() -> None:
-    # A few cells of the committed map recomputed (docs/screening, scripts/premise_map.py).
+    # A few cells of the committed map recomputed (docs/screening, scripts/docs/premise_map.py).
     from pathlib import Path
 
     committed = pd.read_csv(Path(__file__).parents[2] / "docs/screening/premise_map.csv")
@@ -92,7 +92,7 @@ def test_the_premise_page_is_generated_from_the_committed_results() -> None:
 
     docs = load_script("premise_docs")
     assert docs.PAGE.read_text(encoding="utf-8") == docs.render(), (
-        "docs/premise.md is out of date: run python scripts/premise_docs.py --write"
+        "docs/premise.md is out of date: run python scripts/docs/premise_docs.py --write"
     )
 
 
@@ -141,7 +141,7 @@ def test_the_premise_section_reads_the_rule_from_the_tracks(tmp_path: Path) -> N
 
 
 def test_the_committed_plausible_locomotives_are_what_the_model_gives_now() -> None:
-    # docs/screening/plausible.csv (scripts/premise_probability.py): one locomotive's S_low
+    # docs/screening/plausible.csv (scripts/docs/premise_probability.py): one locomotive's S_low
     # runs re-simulated, and the committed shares are the summary of the committed table.
     import json
 

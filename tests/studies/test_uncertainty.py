@@ -114,7 +114,7 @@ def test_an_infeasible_wheel_corner_is_nan_not_an_error() -> None:
 
 
 def test_the_committed_screening_is_what_the_model_gives_now() -> None:
-    # docs/screening (scripts/morris_screening.py): the first points of the first trajectory
+    # docs/screening (scripts/docs/morris_screening.py): the first points of the first trajectory
     # re-evaluated as the screening did them, and the committed table is the analysis of the
     # committed outputs.
     from script_modules import load_script

@@ -4,7 +4,7 @@
 //!
 //! `cargo run --release -p loco-core --example run_fingerprint -- [fastsim|fastrip|table]
 //! [S_high|S_low] [prepare|curve|study_curve]` (`prepare`: build contact and track only, to
-//! subtract set-up cost; `curve`: the same run on the design of `scripts/curve_cost.py`, a 60 m
+//! subtract set-up cost; `curve`: the same run on the design of `experiments/curve_cost.py`, a 60 m
 //! transition into R = 1200 m with 100 mm cant, about 290 mm of cant deficiency at 200 km/h, to
 //! count what the curve terms cost against the straight run; `study_curve`: R = 3000 m with
 //! 60 mm cant, about 97 mm of deficiency, a case of the curving study).

@@ -3,7 +3,7 @@
 //! amplitude and phase of a sinusoid fitted after the transient, against `H·U`.
 //!
 //! CI runs a representative subset; `sinusoidal_full_matrix` (ignored, run by
-//! `scripts/frf_verification.sh`) runs every scenario, damper, channel and wavelength and prints
+//! `scripts/verify/frf_verification.sh`) runs every scenario, damper, channel and wavelength and prints
 //! the table docs/model/frequency_response.md reports.
 
 use loco_core::dampers::Damper;
@@ -304,10 +304,10 @@ fn wheelsets_follow_a_long_alignment_wave_with_their_delays() {
 }
 
 /// Every scenario, damper, channel and wavelength; prints the table (run by
-/// `scripts/frf_verification.sh`). Vertical and gauge inputs move the vehicle symmetrically:
+/// `scripts/verify/frf_verification.sh`). Vertical and gauge inputs move the vehicle symmetrically:
 /// their lateral responses are reported, not compared.
 #[test]
-#[ignore = "about 7 minutes on 2 cores: the full matrix, run by scripts/frf_verification.sh"]
+#[ignore = "about 7 minutes on 2 cores: the full matrix, run by scripts/verify/frf_verification.sh"]
 fn sinusoidal_full_matrix() {
     // The linearisation steps: `FRF_STEP` and `FRF_CONTACT_STEP` if set, else the defaults.
     let defaults = LinearisationSettings::default();

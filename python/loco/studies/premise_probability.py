@@ -315,7 +315,7 @@ def summarise(result: Plausible) -> dict[str, pd.DataFrame]:
 
 def to_frame(result: Plausible) -> pd.DataFrame:
     """One row per locomotive: its inputs, ``s_low_pair``, the metric of every case and
-    ``premise`` (what ``scripts/premise_probability.py`` writes as ``plausible.csv``)."""
+    ``premise`` (what ``scripts/docs/premise_probability.py`` writes as ``plausible.csv``)."""
     frame = pd.concat(
         [result.inputs, pd.Series(result.pairs, name="s_low_pair"), result.metrics], axis=1
     )

@@ -51,7 +51,7 @@ __all__ = [
 FloatArray = npt.NDArray[np.float64]
 
 #: Samples the surrogate of the optimisation learns from (``loco reproduce --quick`` and
-#: ``--full``). Measured by ``scripts/surrogate_learning_curve.py``
+#: ``--full``). Measured by ``experiments/surrogate_learning_curve.py``
 #: (docs/development/lab_notes.md, "How many samples the surrogate needs"): 5-fold held-out R²
 #: of the best candidate (the GP) on random subsets of one 300-sample design, n = 100 / 200 /
 #: 300: W_y 0.84 / 0.93 / 0.95, A_yb 0.83 / 0.90 / 0.91
@@ -63,7 +63,7 @@ FloatArray = npt.NDArray[np.float64]
 #: forces, it. The part of A_yb no smooth model can learn is small: the semivariogram at 2 % of
 #: the box is 0.9 % of the design's variance (R² bound 0.99), so the residual is structure at
 #: the sample spacing, which more samples resolve, not noise.
-#: On 500 fresh samples (``scripts/surrogate_holdout.py``, lab notes, "Held-out R²")
+#: On 500 fresh samples (``scripts/verify/surrogate_holdout.py``, lab notes, "Held-out R²")
 #: the chosen model at 300 reaches W_y 0.979 and A_yb 0.937 (0.946 at 500, 0.954 at 800); in
 #: ``loco reproduce --quick`` at 300 (its 200 fresh samples) A_yb was 0.880 [0.818, 0.925], so
 #: the margin at 300 does not hold in every design. 500 is the size at which the fresh-sample

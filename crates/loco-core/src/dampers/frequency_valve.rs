@@ -88,7 +88,7 @@ pub const ORBIT_STEPS: usize = 400;
 const LAMINAR_FLOW_COEFFICIENT: f64 = 0.2;
 
 /// The yaw damper stroke amplitude of the S_low carbody sway (m), measured by
-/// `scripts/fsd_reference_stroke.py` (S_low, 200 km/h, YD1, cn-hsr seed 0, 0.5–2 Hz band,
+/// `experiments/fsd_reference_stroke.py` (S_low, 200 km/h, YD1, cn-hsr seed 0, 0.5–2 Hz band,
 /// median of the four yaw dampers) with the rails rolled with the track: 0.261 mm (the dampers
 /// gave 0.316, 0.355, 0.195 and 0.207 mm), here to 0.01 mm. Before the fix the cross-level error
 /// inflated it to 2.3 mm; the derived valve's numbers below were first worked out there.

@@ -2,7 +2,7 @@
 //! column order. [`metric_table!`](crate::metric_table) hands the table to a macro, which
 //! generates from it what each consumer needs: the [`super::RunMetrics`] struct, its names and
 //! values ([`super::summary`]), the [`metric`] name constants, the Python `Metric` constants
-//! (`loco-py/src/names.rs`) and `docs/metrics.md` (`scripts/metric_docs.py` reads
+//! (`loco-py/src/names.rs`) and `docs/metrics.md` (`scripts/docs/metric_docs.py` reads
 //! [`METRIC_TABLE`]). A metric is added or renamed here only.
 
 /// Calls `$callback! { $( CONST field: type, "unit", "description"; )* }` with every run metric,

@@ -6,7 +6,7 @@
 //! a fixed step gives output at a fixed rate and results that are bit-identical run to run.
 //!
 //! **The reference**, [`Integrator::Rk4`] at 1 ms ([`REFERENCE_STEP`]), from the
-//! convergence study `scripts/convergence_study.py`: over the nominal vehicle and Latin-hypercube
+//! convergence study `scripts/verify/convergence_study.py`: over the nominal vehicle and Latin-hypercube
 //! samples of the six SPEC §6 parameters, halving it changes W_y (S_low) by at most 0.001 % and
 //! A_yb (S_high) by at most 0.06 %; the stiffest modes (hollow-shaft tilt in its gearbox
 //! bearings, ≈ 320 Hz; wheelset on the Hertz contact) stay inside RK4's stability region at that
@@ -30,7 +30,7 @@
 //! [`OdeSystem::after_step`].
 
 /// The reference step of the classical RK4 ([`Integrator::Rk4`]), s: the convergence study's
-/// (`scripts/convergence_study.py`), against which the exponential scheme is checked.
+/// (`scripts/verify/convergence_study.py`), against which the exponential scheme is checked.
 pub const REFERENCE_STEP: f64 = 1e-3;
 
 /// The default step of [`Integrator::ExponentialRk4`], s: with the gearbox

@@ -15,8 +15,8 @@ and the Dask overhead, it projects a Saltelli N = 1024 study (N·(k + 2) = 8192 
 for k = 6; 14 336 with the second-order terms) of two scenarios on a
 64-core cluster.
 
-    python scripts/bench_dask.py --samples 64 512 --distance 300 --repeat 2
-    python scripts/bench_dask.py --samples 64 --distance 500
+    python scripts/bench/bench_dask.py --samples 64 512 --distance 300 --repeat 2
+    python scripts/bench/bench_dask.py --samples 64 --distance 500
 """
 
 from __future__ import annotations

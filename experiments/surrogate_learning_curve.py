@@ -22,7 +22,7 @@ Writes into ``--out``: ``samples.csv`` (the design and both objectives), ``learn
 and ``surrogate_learning_curve.json``. The simulations are kept in ``<out>/store`` (an interrupted
 run resumes); ``--analyse`` only redoes the fits and the figure from ``samples.csv``/``noise.csv``.
 
-Usage: ``python scripts/surrogate_learning_curve.py [--n-total 800] [--threads 2]``.
+Usage: ``python experiments/surrogate_learning_curve.py [--n-total 800] [--threads 2]``.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ held-out prediction and fitted model's prediction at the samples (the same hash 
 after a change means the same numbers). To compare two versions of the code on a shared
 machine, alternate them (``PYTHONPATH`` pointing at each) several times and compare medians:
 
-    python scripts/bench_surrogate.py --out /tmp/quick
+    python scripts/bench/bench_surrogate.py --out /tmp/quick
 """
 
 from __future__ import annotations

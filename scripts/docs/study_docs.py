@@ -6,9 +6,9 @@ page is written from those copies with the report's own code (:mod:`loco.studies
 :mod:`loco.studies.premise_report`), so nothing on it is typed from a run:
 
     loco reproduce --quick --out results/quick
-    python scripts/study_docs.py --from results/quick --write   # copy the files, rewrite the page
-    python scripts/study_docs.py --write                        # rewrite the page from docs/study
-    python scripts/study_docs.py --check                        # exit 1 when the page is stale
+    python scripts/docs/study_docs.py --from results/quick --write  # copy the files, write the page
+    python scripts/docs/study_docs.py --write    # rewrite the page from docs/study
+    python scripts/docs/study_docs.py --check    # exit 1 when the page is stale
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import shutil
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "study_results.md"
 RESULTS = ROOT / "docs" / "study"
 
@@ -57,9 +57,10 @@ INTRO = """\
 
 What the model says today on the [reference study](STUDY.md). This page is generated from the
 files of one `loco reproduce --quick` run, copied into `docs/study/`
-(`python scripts/study_docs.py --from DIR --write`; a test fails when the page is not what those
-files give). Its verdict and its premise section are computed by the report's own code from the
-damper comparisons' per-track tables; every other paragraph is the summary the stage wrote.
+(`python scripts/docs/study_docs.py --from DIR --write`; a test fails when the page is not what
+those files give). Its verdict and its premise section are computed by the report's own code
+from the damper comparisons' per-track tables; every other paragraph is the summary the stage
+wrote.
 The conclusions are pinned by tests that can fail (`tests/conclusions/`). The run's own report
 (`<out>/report.md` and `report.html`) has every table and figure.
 """
@@ -178,7 +179,7 @@ def main() -> None:
     if args.write:
         PAGE.write_text(text, encoding="utf-8")
     elif text != current:
-        print(f"{PAGE} is out of date: run python scripts/study_docs.py --write")
+        print(f"{PAGE} is out of date: run python scripts/docs/study_docs.py --write")
         sys.exit(1)
 
 

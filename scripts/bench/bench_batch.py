@@ -5,7 +5,7 @@ through ``loco.run_batch`` on 1 and 2 threads and through the ``loco-batch`` bin
 ``--repeat`` times each, and prints the best wall-clock time of each with the derived figures
 (speed-up from 1 to 2 threads, Python overhead against the binary). Run it on a quiet machine:
 
-    python scripts/bench_batch.py --samples 8 --repeat 3
+    python scripts/bench/bench_batch.py --samples 8 --repeat 3
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import loco
 from loco.studies.parameters import names
 from loco.studies.sampling import latin_hypercube
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def main() -> None:

@@ -10,7 +10,7 @@ directory), as ``loco reproduce`` runs its stages, so a rerun after a kill simul
 is missing. Prints and writes (``--out``, JSON) the runs, the wall and CPU time, the runs per
 second and the first- and total-order indices with their 95 % half-widths.
 
-    python scripts/saltelli_direct.py --base 1024 --threads 2 --out saltelli_1024.json
+    python scripts/verify/saltelli_direct.py --base 1024 --threads 2 --out saltelli_1024.json
 """
 
 from __future__ import annotations

@@ -22,7 +22,8 @@ All runs are the study's: ``loco.run_batch`` on the seed-0 synthetic track, 500 
 W_y on S_low and A_yb on S_high (:class:`loco.studies.parameter_study.StudySetup`). They are kept
 in ``<out>/store`` (an interrupted run resumes); ``--analyse`` only redoes the fits.
 
-Usage: ``python scripts/surrogate_holdout.py --threads 2 [--holdout 400] [--blocks 200 300]``.
+Usage:
+``python scripts/verify/surrogate_holdout.py --threads 2 [--holdout 400] [--blocks 200 300]``.
 """
 
 from __future__ import annotations

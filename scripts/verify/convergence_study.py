@@ -7,7 +7,7 @@ rk4) and with half of it, and prints the relative change of each metric. The iss
 below 1 % everywhere. `cargo test --release --test parameter_box` checks the nominal vehicle and
 two corners of the box on every CI run.
 
-    python scripts/convergence_study.py [--samples 8] [--integrator etdrk4] [--step 2e-3]
+    python scripts/verify/convergence_study.py [--samples 8] [--integrator etdrk4] [--step 2e-3]
 """
 
 from __future__ import annotations

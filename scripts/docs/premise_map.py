@@ -5,7 +5,7 @@ speed with YD1 and YD2.
 
 Writes into ``--out`` (default ``docs/screening``): ``premise_map.csv``, ``premise_speed.csv``,
 ``premise_cells.csv`` (where the premise and its reverse hold) and ``premise_map.png``.
-Usage: ``python scripts/premise_map.py [--out docs/screening] [--workers 2]``.
+Usage: ``python scripts/docs/premise_map.py [--out docs/screening] [--workers 2]``.
 """
 
 from __future__ import annotations

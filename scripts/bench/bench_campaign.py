@@ -14,7 +14,7 @@ wall times summed over the run's: below the thread count, cores waited between s
 one way once and prints its times (to alternate two versions of the code, ``PYTHONPATH``
 pointing at each).
 
-    python scripts/bench_campaign.py --samples 256 --chunk-size 0 --store --repeat 3
+    python scripts/bench/bench_campaign.py --samples 256 --chunk-size 0 --store --repeat 3
 """
 
 from __future__ import annotations

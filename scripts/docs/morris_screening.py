@@ -8,7 +8,7 @@ in the order of ``loco.uncertainty.morris_samples`` with these settings, so that
 re-evaluate a few points and re-run the analysis: the committed table is what the model gives
 now), ``morris.json`` (settings, loco version, wall time, the workers'
 CPU time) and ``morris.png`` (μ* against σ, the five largest inputs of each output named).
-Usage: ``python scripts/morris_screening.py [--out docs/screening] [--workers 2]``.
+Usage: ``python scripts/docs/morris_screening.py [--out docs/screening] [--workers 2]``.
 """
 
 from __future__ import annotations

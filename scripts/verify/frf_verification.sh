@@ -5,6 +5,6 @@
 # FRF_STEP and FRF_CONTACT_STEP set the linearisation steps (Hertz side, across the contact;
 # default: LinearisationSettings's); FRF_CONTACT_STEP=5e-5 runs the candidate two groups.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 cargo test -p loco-core --release --test frequency_response -- --ignored --nocapture \
     sinusoidal_full_matrix cross_level

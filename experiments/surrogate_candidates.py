@@ -9,7 +9,7 @@ transform (log, square root, none) and its optimiser (restarts), each on the sam
 :func:`loco.studies.surrogate_selection.select_surrogate`), R² scored on the objective itself.
 Only the folds' training samples are fitted; the held-out ones are predicted.
 
-Usage: ``python scripts/surrogate_candidates.py results/reproduce [variant ...]`` (the directory
+Usage: ``python experiments/surrogate_candidates.py results/reproduce [variant ...]`` (the directory
 holds ``monte_carlo/monte_carlo.csv`` and ``surrogate_samples/surrogate_samples.csv``; a variant
 is a ``+``-joined name such as ``matern52+sqrt+restarts``, see :func:`variant`). Prints one line
 per objective and variant: mean and worst-fold R², and each fold.

@@ -6,7 +6,7 @@ after 500 m of lead-in) for YD1, YD2, FSD (rms-frequency trigger) and FSD-H (hyd
 each seed, and prints and writes (``--out``) the A_yc / A_yb rms, PSD peak and W_y of every run
 and the valve open fraction (time average of 1 - scale factor) per yaw damper and per bogie.
 
-Usage: ``python scripts/fsd_valve_vehicle.py [--seeds 0 1 2 3] [--out out/fsd_valve_vehicle]``.
+Usage: ``python experiments/fsd_valve_vehicle.py [--seeds 0 1 2 3] [--out out/fsd_valve_vehicle]``.
 """
 
 from __future__ import annotations

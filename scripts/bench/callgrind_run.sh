@@ -4,11 +4,11 @@
 # output (metrics, fingerprints) and the instruction count; the callgrind file is kept for
 # `callgrind_annotate`.
 #
-# usage: scripts/callgrind_run.sh [fastsim|fastrip|table] [S_high|S_low] [curve|study_curve]
+# usage: scripts/bench/callgrind_run.sh [fastsim|fastrip|table] [S_high|S_low] [curve|study_curve]
 #        (arguments as `examples/run_fingerprint.rs`; CALLGRIND_OUT sets the file, default
 #        target/callgrind.<arguments>.out)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 cargo build --release -q -p loco-core --example run_fingerprint
 name=$(IFS=_; echo "${*:-fastsim}")
 out=${CALLGRIND_OUT:-target/callgrind.$name.out}

@@ -1,7 +1,7 @@
 """FSD design study outside ``loco reproduce``: the ``fsd_design`` stage
 (:mod:`loco.studies.fsd_design_stage`) at a preset's sizes or at sizes given here.
 
-Usage: ``python scripts/fsd_design_study.py [--preset quick] [--pop N] [--gens N]
+Usage: ``python experiments/fsd_design_study.py [--preset quick] [--pop N] [--gens N]
 [--tracks N] [--conicities 0.02 0.1 ...] [--out out/fsd_design]``. Writes the stage's files
 (population, front, conicity sweep, critical speeds, ``fsd_design.png``, ``fsd_design.json``
 with the run time) into ``--out``.

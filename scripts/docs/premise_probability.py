@@ -9,7 +9,7 @@ metric of every case, whether the premise holds), ``plausible_fraction.csv``,
 decide each FSD's advantage) and ``plausible.json`` (settings, the classifier's held-out accuracy,
 wall and CPU time). ``--store DIR`` keeps finished runs there
 (a rerun after an interruption does only what is missing).
-Usage: ``python scripts/premise_probability.py [--n 200] [--tracks 2] [--store DIR]``.
+Usage: ``python scripts/docs/premise_probability.py [--n 200] [--tracks 2] [--store DIR]``.
 """
 
 from __future__ import annotations

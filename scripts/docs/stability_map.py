@@ -14,7 +14,8 @@ with its working valve, both triggers (:data:`WORKING_VALVE`), whose valve moves
 
 Writes ``stability_map.png``, ``stability_map.csv`` (conicity sweep), ``stability_map_wheels.csv``
 (built-in pairs) and ``stability_map.json`` (loco version and settings) into ``--out``.
-Usage: ``python scripts/stability_map.py [--out out/stability_map] [--points 16] [--nonlinear]``.
+Usage:
+``python scripts/docs/stability_map.py [--out out/stability_map] [--points 16] [--nonlinear]``.
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@
 # browser test (from apt when missing), and pytest. This is the README's test command and what
 # CI runs (.ci/run).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 
 step() { printf '\n=== %s ===\n' "$*"; }
 
@@ -27,8 +27,8 @@ step "loco-batch binary (compared with loco.run_batch by pytest)"
 cargo build --release -p loco-batch
 
 step "ruff"
-python3 -m ruff check python tests scripts
-python3 -m ruff format --check python tests scripts
+python3 -m ruff check python tests scripts experiments
+python3 -m ruff format --check python tests scripts experiments
 
 step "mypy"
 python3 -m mypy

@@ -1,6 +1,6 @@
 """Cost of a curved run against a straight one (same vehicle, speed, distance, perfect track).
 
-Usage: python scripts/curve_cost.py [repeats]. Prints the best wall time of each and the ratio.
+Usage: python experiments/curve_cost.py [repeats]. Prints the best wall time of each and the ratio.
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@ a wheel to ΔQ/Q0 = 0.95: the wheelset motion in the curve, its frequency agains
 kinematic (Klingel) frequency at the curve's operating point, how it develops along a longer
 curve, and the linear critical speed at the conicity the wheelsets see there.
 
-    python scripts/curving_unloading.py [--curve 200] [--dampers YD1,YD2,FSD] [--csv out.csv]
+    python experiments/curving_unloading.py [--curve 200] [--dampers YD1,YD2,FSD] [--csv out.csv]
 
 Prints, per yaw damper: where and on which wheel ΔQ/Q0 is largest, the leading wheelset's mean
 offset and oscillation (peak-to-peak, dominant frequency by FFT, in the first and the last 100 m

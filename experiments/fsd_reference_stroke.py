@@ -10,7 +10,7 @@ opening frequency f_p/4), band-passed with a zero-phase Butterworth filter; its 
 given as a sine's, √2·rms. Prints one line per yaw damper and the median, and writes a JSON file
 with the numbers and settings (``--out``).
 
-Usage: ``python scripts/fsd_reference_stroke.py [--seed 0] [--distance 500] [--out FILE]``.
+Usage: ``python experiments/fsd_reference_stroke.py [--seed 0] [--distance 500] [--out FILE]``.
 Re-run it after changes to the vehicle or track model and pass the new median to
 ``loco.dampers.fsd(trigger="hydraulic", reference_stroke_amplitude=...)``.
 """

@@ -7,7 +7,7 @@ place; read back with ``xarray.open_zarr(...).load()``). The rows are those of a
 the six study parameters, the run metrics, status, message and the provenance columns. Needs
 ``zarr`` (not a loco dependency) for the second half.
 
-    python scripts/bench_store.py --chunks 64 --rows 8 --repeat 3
+    python scripts/bench/bench_store.py --chunks 64 --rows 8 --repeat 3
 """
 
 from __future__ import annotations
