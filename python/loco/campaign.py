@@ -159,12 +159,9 @@ def campaign_inputs(
     per_sample_track: bool = False,
 ) -> dict[str, Any]:
     """Everything a campaign's numbers depend on, as JSON: its key is the hash of this."""
-    vehicle_desc = {
-        "toml_sha256": None
-        if vehicle.toml_text is None
-        else hashlib.sha256(vehicle.toml_text.encode("utf-8")).hexdigest(),
-        "overrides": {k: repr(v) for k, v in sorted(vehicle.overrides.items())},
-    }
+    # The resolved parameters (after overrides): a vehicle file's comments, sources and units
+    # do not change the key, a value does.
+    vehicle_desc = {"parameters_sha256": vehicle.parameters_sha256()}
     # Every setting, given or default: a default the core changes changes the key.
     scenario_desc = {name: _describe(getattr(scenario, name)) for name in SETTINGS}
     return {

@@ -7,6 +7,7 @@ names there: ``K_px``, ``K_py``, ``C_sx``, ``C_sy``, ``K_ncsx``, ``K_ncsy``.
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -101,6 +102,15 @@ class Locomotive:
     def parameters(self) -> dict[str, Parameter]:
         """All parameters after overrides, by key."""
         return {k: Parameter(k, v, u, s) for k, v, u, s in self.native.parameters_table()}
+
+    def parameters_sha256(self) -> str:
+        """SHA-256 of the resolved parameters: every key with its SI value after overrides, in
+        key order. It is what a run of this vehicle depends on, and nothing of how the file is
+        written: comments, sources, the units values are stated in, the order of keys and the
+        ``allow_out_of_range`` list leave it unchanged. Stage and campaign hashes use it, so an
+        edit that changes no value reruns nothing."""
+        lines = [f"{k}={v!r}\n" for k, v, _unit, _source in self.native.parameters_table()]
+        return hashlib.sha256("".join(lines).encode("utf-8")).hexdigest()
 
     def __getitem__(self, name: str) -> float:
         """The value (SI) of a parameter by key or study alias, read from the built vehicle."""

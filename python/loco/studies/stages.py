@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
-import functools
 import hashlib
 import json
 import shutil
@@ -92,23 +91,14 @@ class Demand:
         return Demand(self.simulations + other.simulations, self.simulated_s + other.simulated_s)
 
 
-def _sha256(text: str) -> str:
-    return hashlib.sha256(text.encode("utf-8")).hexdigest()
-
-
-@functools.cache
-def _default_vehicle_sha256() -> str:
-    return _sha256(_loco.default_vehicle_toml())
-
-
 def encode(value: Any) -> Any:
     """A stage input as canonical, JSON-ready content (what the stage hash is taken of).
 
     Numbers, strings, booleans and None stand for themselves (a non-finite float as its name);
     sequences and mappings element by element, a mapping as ``[key, value]`` pairs in its order
     (the order of e.g. a damper set changes the tables); a yaw damper as its kind and parameters;
-    a vehicle as the SHA-256 of its parameter file (the embedded one's when it has none) and its
-    overrides;
+    a vehicle as the SHA-256 of its resolved parameters (:meth:`loco.Locomotive.parameters_sha256`:
+    a comment or a source edited in its file changes nothing, a value does);
     a :class:`DataFile` as the SHA-256 of its content; a dataclass as its class name and fields.
     Anything else is a ``TypeError``: a new kind of input needs its encoding here.
     """
@@ -125,9 +115,7 @@ def encode(value: Any) -> Any:
     if isinstance(value, _loco.Damper):
         return {"damper": value.kind, **jsonable(value.parameters())}
     if isinstance(value, loco.Locomotive):
-        text = value.toml_text
-        sha = _default_vehicle_sha256() if text is None else _sha256(text)
-        return {"vehicle_file_sha256": sha, "overrides": encode(sorted(value.overrides.items()))}
+        return {"vehicle_parameters_sha256": value.parameters_sha256()}
     if isinstance(value, DataFile):
         return {"file_sha256": file_sha256(value.path) if value.path.is_file() else None}
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
