@@ -47,8 +47,10 @@ CURVES = [
         "spin = drift/r0)",
         lambda r: (
             f"{r.get('curve_balanced_cant', 'largest_acceleration')} "
-            f"(`{r.quantity('curve_balanced_cant', 'largest_acceleration_at').value}`; "
-            "[Curves and the track frame](model/curves.md))"
+            f"(`{r.quantity('curve_balanced_cant', 'largest_acceleration_at').value}`); frames "
+            f"≤ {r.get('curve_balanced_cant', 'largest_acceleration_frames')}, traction rods ≤ "
+            f"{r.get('curve_balanced_cant', 'largest_acceleration_traction_rods')} "
+            "([Curves and the track frame](model/curves.md))"
         ),
     ),
     Row(

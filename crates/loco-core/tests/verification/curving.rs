@@ -90,6 +90,14 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         "acceleration {largest:.2e} at {}",
         names[at]
     );
+    // The same, per group of bodies: the frames' and the traction rods' largest.
+    let group = |prefix: &str| {
+        (0..N_DOF)
+            .filter(|i| !along.contains(i) && names[*i].starts_with(prefix))
+            .flat_map(|i| window.iter().map(move |r| r.dy[N_DOF + i].abs()))
+            .fold(0.0_f64, f64::max)
+    };
+    let (frames, rods) = (group("frame"), group("traction_rod"));
     let acc = &r.dy[N_DOF..2 * N_DOF];
     let drift = acc[CARBODY + X];
     for b in 0..N_BOGIES {
@@ -183,6 +191,8 @@ fn balanced_cant_gives_no_lateral_acceleration_and_no_net_guiding_force() {
         .count("instants", window.len())
         .within("largest_acceleration", largest, "SI", 2, "<", 1e-3)
         .label("largest_acceleration_at", &names[at])
+        .value("largest_acceleration_frames", frames, "SI", 2)
+        .value("largest_acceleration_traction_rods", rods, "SI", 2)
         .value("sum_y", total_y, "N", 2)
         .value("largest_wheelset_y", largest_y, "N", 2)
         .value("wheel_load_unbalance", unbalance, "", 2)
