@@ -206,11 +206,17 @@ impl Record {
     /// `LOCO_UPDATE_RECORDS=1`.
     pub fn check(self) {
         let path = self.path();
+        let update = std::env::var("LOCO_UPDATE_RECORDS").as_deref() == Ok("1");
+        self.check_at(&path, update);
+    }
+
+    /// [`Record::check`] against the record at `path`, rewriting it when `update`.
+    fn check_at(self, path: &std::path::Path, update: bool) {
         let text = self.render();
-        let committed = std::fs::read_to_string(&path).unwrap_or_default();
-        if std::env::var("LOCO_UPDATE_RECORDS").as_deref() == Ok("1") {
+        let committed = std::fs::read_to_string(path).unwrap_or_default();
+        if update {
             if committed != text {
-                std::fs::write(&path, &text)
+                std::fs::write(path, &text)
                     .unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
             }
             return;
@@ -267,6 +273,40 @@ mod tests {
         assert_eq!(limit_text(0.01), "0.01");
         assert_eq!(limit_text(1e-9), "1e-9");
         assert_eq!(limit_text(1.1 * 0.0093503), "0.0103");
+    }
+
+    #[test]
+    fn a_stale_record_fails_naming_the_case_and_an_update_rewrites_it() {
+        let dir = std::env::temp_dir().join(format!("loco-record-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("example.json");
+        let _ = std::fs::remove_file(&path);
+        let measured =
+            |value: f64| Record::new("example", "tests/x.rs").value("error", value, "", 2);
+        let stale = |value: f64| {
+            let p = path.clone();
+            std::panic::catch_unwind(move || measured(value).check_at(&p, false))
+                .err()
+                .and_then(|e| e.downcast_ref::<String>().cloned())
+        };
+        let missing = stale(0.0042).expect("a missing record is stale");
+        assert!(
+            missing.contains("verification record example is stale"),
+            "{missing}"
+        );
+        measured(0.0042).check_at(&path, true);
+        assert!(std::fs::read_to_string(&path)
+            .unwrap()
+            .contains("\"value\": \"0.0042\""));
+        assert_eq!(
+            stale(0.0042),
+            None,
+            "the same measurement matches its record"
+        );
+        assert_eq!(stale(0.00421), None, "so does one that rounds the same");
+        let changed = stale(0.0043).expect("another value is stale");
+        assert!(changed.contains("error = 0.0043"), "{changed}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
