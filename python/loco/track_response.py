@@ -49,8 +49,8 @@ DEFAULT_OUTPUTS: tuple[str, ...] = (
 #: numerical noise of the left/right symmetric model, not physics: vertical and gauge
 #: irregularities drive no lateral motion there, and the central differences of the
 #: linearisation leave them at 1e-9 to 1e-12 of the alignment response
-#: (``crates/loco-core/tests/frequency_response.rs`` asserts < 1e-8). The figures leave such
-#: couplings out and say so; the data keep them.
+#: (``crates/loco-core/tests/verification/frequency_response.rs`` asserts < 1e-8). The figures
+#: leave such couplings out and say so; the data keep them.
 NOISE_RATIO: Final = 1e-6
 
 

@@ -6,5 +6,5 @@
 # default: LinearisationSettings's); FRF_CONTACT_STEP=5e-5 runs the candidate two groups.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-cargo test -p loco-core --release --test frequency_response -- --ignored --nocapture \
-    sinusoidal_full_matrix cross_level
+cargo test -p loco-core --release --test verification -- --ignored --nocapture \
+    frequency_response::sinusoidal_full_matrix frequency_response::cross_level

@@ -12,6 +12,7 @@ import pytest
 import loco
 from loco import conicity
 from loco.cli import main
+from verification_records import record
 
 #: EN 15302 benchmark Δr grids: first lateral point (mm), step 0.1 mm (shared data README).
 GRID_START_MM = {1: -6.8, 2: -6.8, 3: -6.8, 4: -7.1, 5: -6.8, 6: -6.9, 7: -6.8, 8: -7.1, 9: -6.8}
@@ -46,8 +47,8 @@ def test_en15302_benchmark_case(shared_data: Path, case: int) -> None:
     dr = np.loadtxt(shared_data / "en15302" / f"dr_E{case}.dat").ravel() * 1e-3
     y = (GRID_START_MM[case] + 0.1 * np.arange(dr.size)) * 1e-3
     ref = np.loadtxt(shared_data / "en15302" / f"ben_E{case}.dat")
-    checked = 0
-    for amplitude_mm, _, hi1, lo1, hi2, lo2 in ref:
+    checked, worst = 0, 0.0
+    for amplitude_mm, tan_ref, hi1, lo1, hi2, lo2 in ref:
         try:
             tan = conicity.conicity_from_delta_r(y, dr, [amplitude_mm * 1e-3])[0]
         except loco.ParameterError as err:
@@ -55,8 +56,15 @@ def test_en15302_benchmark_case(shared_data: Path, case: int) -> None:
             continue
         assert max(lo1, lo2) <= tan <= min(hi1, hi2), (amplitude_mm, tan)
         checked += 1
+        worst = max(worst, abs(tan - tan_ref))
     # Every case is covered at least up to 5 mm (50 % of the table and more).
     assert checked >= 41
+    (
+        record(f"conicity_given_dr_e{case}", __file__)
+        .count("amplitudes", checked)
+        .value("largest_deviation", worst, "", 2)
+        .check()
+    )
 
 
 def test_jm3_states_on_cn60_match_the_scenarios() -> None:

@@ -24,6 +24,7 @@ from loco.creep import (
     linear_creep_forces,
     wheelset_creepages,
 )
+from verification_records import record
 
 G_REF = 82e9
 NU_REF = 0.28
@@ -137,6 +138,10 @@ def test_fastsim_tends_to_linear_theory(creep: tuple[float, float, float]) -> No
     f = fastsim(**REF, creepage_long=creep[0], creepage_lat=creep[1], spin=creep[2], grid=(50, 50))
     lin = linear_creep_forces(4e-3 * 2, 4e-3, *creep, shear_modulus=G_REF)
     assert f.fx + f.fy == pytest.approx(lin.fx + lin.fy, rel=0.01)
+    which = ("longitudinal", "lateral", "spin")[next(i for i, c in enumerate(creep) if c)]
+    deviation = abs((f.fx + f.fy) / (lin.fx + lin.fy) - 1)
+    case = record(f"fastsim_linear_{which}", __file__)
+    case.within("deviation", deviation, "", 2, "<", 0.01).check()
 
 
 def test_fastsim_saturates_at_mu_n() -> None:

@@ -15,6 +15,7 @@ import pytest
 import loco
 from loco import dampers
 from loco.cli import main
+from verification_records import record
 
 
 def test_presets_have_the_spec_values() -> None:
@@ -63,6 +64,17 @@ def test_maxwell_bench_matches_closed_form(damper: dampers.Damper, frequency: fl
     energy = np.pi * c_closed * 2 * np.pi * frequency * amplitude**2
     assert result.energy_per_cycle == pytest.approx(energy, rel=0.01)
     assert dampers.maxwell_closed_form(c, k, frequency) == pytest.approx((c_closed, k_closed))
+    closed = dampers.maxwell_closed_form(c, k, frequency)
+    function_error = max(abs(closed[0] / c_closed - 1), abs(closed[1] / k_closed - 1))
+    name = "yd1" if damper is dampers.YD1 else "yd2"
+    (
+        record(f"maxwell_{name}_{str(frequency).replace('.', 'p')}_hz", __file__)
+        .below("c_eff", abs(result.equivalent_damping / c_closed - 1), "", 1e-12, "<", 0.01)
+        .below("k_eff", abs(result.equivalent_stiffness / k_closed - 1), "", 1e-12, "<", 0.01)
+        .below("energy", abs(result.energy_per_cycle / energy - 1), "", 1e-12, "<", 0.01)
+        .below("closed_form_function", function_error, "", 1e-12, "<", 1e-6)
+        .check()
+    )
 
 
 def test_bench_returns_consistent_arrays() -> None:

@@ -1,6 +1,7 @@
 """Frequency response and linear output PSDs of the linearised vehicle: the measured-
 track CSV input path against the transfer function, the PSD bookkeeping, typed errors, the CLI.
-The full time-domain verification matrix is in crates/loco-core/tests/frequency_response.rs."""
+The full time-domain verification matrix is in
+crates/loco-core/tests/verification/frequency_response.rs."""
 
 from __future__ import annotations
 

@@ -7,6 +7,7 @@ import pytest
 
 import loco
 from loco import metrics
+from verification_records import record
 
 FS = 500.0
 
@@ -41,6 +42,13 @@ def test_sperling_single_sine_matches_formula(a: float, f: float, direction: str
     assert len(w.segments) == 2
     np.testing.assert_allclose(w.segments, expected, rtol=1e-3)
     assert w.max == pytest.approx(expected, rel=1e-3)
+    deviation = float(np.max(np.abs(np.asarray(w.segments) / expected - 1)))
+    (
+        record(f"sperling_{direction}_{str(f).replace('.', 'p')}_hz", __file__)
+        .value("hand_value", expected, "", 4)
+        .below("deviation", deviation, "", 1e-9, "<", 1e-3)
+        .check()
+    )
 
 
 def test_sperling_hand_value_and_rating() -> None:

@@ -8,6 +8,7 @@ import pytest
 
 import loco
 import loco.conicity
+from verification_records import record
 
 
 def test_hunting_mode_loses_damping_with_speed_and_weak_yaw_dampers() -> None:
@@ -37,6 +38,13 @@ def test_critical_speed_rises_with_the_stiffer_yaw_damper() -> None:
     )
     assert 20.0 < yd1 < 300 / 3.6
     assert yd2 > yd1
+    (
+        record("stability_yd1_yd2", __file__)
+        .value("yd1", yd1, "m/s", 3)
+        .value("yd2", yd2, "m/s", 3)
+        .value("bisection_tolerance", 2.0, "m/s", 1)
+        .check()
+    )
 
 
 def test_linear_critical_speed_brackets_the_loss_of_damping_of_eigen() -> None:

@@ -9,6 +9,7 @@ import pytest
 
 import loco
 from loco import _loco, track
+from verification_records import record
 
 
 def test_synthetic_is_reproducible_from_seed_and_stream() -> None:
@@ -26,15 +27,19 @@ def test_rms_matches_integral_of_spectrum() -> None:
     # Without run-in and over one FFT period (8192 points of 0.1 m) the mean square is the sum
     # of the component variances, i.e. the band integral of the target spectrum.
     t = track.synthetic("german-high", length=819.1, seed=5, run_in=0.0)
+    worst = 0.0
     for name in track.CHANNELS:
         x = t.channel(name)
         target = _loco.track_spectrum_variance("german-high", name, 1 / 200, 1 / 2)
         assert np.mean(x**2) == pytest.approx(target, rel=2e-3)
+        worst = max(worst, abs(np.mean(x**2) / target - 1))
+    record("track_rms", __file__).within("mean_square", worst, "", 2, "<", 2e-3).check()
 
 
 def test_welch_psd_follows_target_across_the_band() -> None:
     # 20 km, 400 m segments: ~99 averages; octave-band sums within 3 sigma (K/2 effective).
     t = track.synthetic("cn-hsr", length=20_000.0, seed=3)
+    worst, bands = 0.0, 0
     for name in track.CHANNELS:
         f, p = t.psd(name, segment_length=409.6)
         k = len(t.vertical) * t.step / 409.6 * 2 - 1
@@ -44,6 +49,13 @@ def test_welch_psd_follows_target_across_the_band() -> None:
             target = track.target_psd("cn-hsr", name, f[band]).sum()
             tol = 3 / np.sqrt(k * band.sum() / 2)
             assert measured / target == pytest.approx(1.0, abs=tol), (name, lo)
+            worst, bands = max(worst, abs(measured / target - 1) / tol), bands + 1
+    (
+        record("track_welch_psd", __file__)
+        .count("octave_bands", bands)
+        .within("largest_deviation_in_3_sigma", worst, "", 2, "≤", 1.0)
+        .check()
+    )
 
 
 def test_run_in_and_rails() -> None:

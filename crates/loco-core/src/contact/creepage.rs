@@ -234,7 +234,7 @@ impl WheelsetMotion {
 /// the lead is a fraction of a mm, but a flange contact (γ ≈ 1.2 rad) yawed by 15 mrad leads by
 /// about 17 mm. There the wheel material moves vertically at Ω·x, which the steep contact plane
 /// turns into lateral creepage (Manchester benchmark, flange cases: 0.04 against 0.006
-/// without the lead; `tests/manchester_normal_force.rs`). The vehicle model places its contact
+/// without the lead; `tests/verification/manchester_normal_force.rs`). The vehicle model places its contact
 /// points with it (`vehicle::rail_contact::wheel_rail`); [`WheelsetMotion::creepages`] does not.
 pub fn contact_lead(
     side: Side,

@@ -32,7 +32,7 @@
 //! `gauge_height = 0.014 + max(z)` (the gauge point then lands on the file's first point) with
 //! gauge 1.435 m and back-to-back 1.360 m: the file's origin is then on the taping line, 750 mm
 //! from the track centre, as the standard's Δr functions confirm
-//! (`tests/conicity_en15302_profiles.rs`).
+//! (`tests/verification/conicity_en15302_profiles.rs`).
 //!
 //! # Interpolant
 //!

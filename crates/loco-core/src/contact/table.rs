@@ -11,7 +11,7 @@
 //! rolls a little more or less relative to its rails (elastic load transfer, and on a gauge
 //! irregularity each wheel is read at its own rail's offset, where the rigid roll differs: on the
 //! conformal worn tread, 0.43 rad/m of rigid roll against lateral position). Measured in
-//! `tests/rolled_rails.rs`: up to 2.5e-4 rad on S_high, 5e-5 on S_norm and S_low — enough to
+//! `tests/verification/rolled_rails.rs`: up to 2.5e-4 rad on S_high, 5e-5 on S_norm and S_low — enough to
 //! move a conformal contact point by a tenth of a millimetre and the study's S_high metrics by
 //! about 2 %. So each wheel's contact is also solved at the rigid roll ± [`ROLL_LAYER`], each
 //! wheel lowered onto its own rail ([`ContactGeometry::solve_rolled`]), and
@@ -226,7 +226,7 @@ impl ContactTable {
 /// the unrolled wheelset. From the reference profiles, unrolled Δr matches them at the grid points
 /// to a median of 0.002–0.025 mm per case, rolled Δr only to 0.04–0.25 mm (and by up to 8 mm near
 /// flange contact, where 0.5–1 mrad of roll turns the flange r·φ ≈ 0.25–0.45 mm further toward
-/// the rail); see `tests/conicity_en15302_profiles.rs`. On the tread the two differ little, but
+/// the rail); see `tests/verification/conicity_en15302_profiles.rs`. On the tread the two differ little, but
 /// a conformal worn tread (`jm3-worn` on CN60) rolls enough to change tan γe(3 mm) by 0.07.
 pub fn rolling_radius_difference(geometry: &ContactGeometry, ys: &[f64]) -> Result<Vec<f64>> {
     let mut ws = ContactWorkspace::default();

@@ -39,7 +39,7 @@
 //!   0.638, as the nearest band radius inside the tolerance that keeps the rigid wheelset's
 //!   behaviour: a conicity nearly constant for small amplitudes (0.89–0.91 up to 1 mm; 0.76
 //!   before), 0.73 at 3 mm as before, and hunting with YD1 that is still subcritical
-//!   (`tests/vehicle_stability.rs`).
+//!   (`tests/verification/vehicle_stability.rs`).
 //!
 //! The conicities are those of EN 15302's Δr, the wheelset translated without roll
 //! ([`crate::contact::rolling_radius_difference`]). The rigidly rolled wheelset of the vehicle

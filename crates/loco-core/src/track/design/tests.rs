@@ -11,63 +11,6 @@ fn curve(radius: f64, cant: f64, direction: CurveDirection) -> DesignSection {
     }
 }
 
-fn entry(direction: CurveDirection) -> TrackDesign {
-    TrackDesign::new(
-        &[
-            DesignSection::Straight { length: 50.0 },
-            DesignSection::Transition {
-                length: 100.0,
-                cant_run_off: None,
-            },
-            curve(600.0, 0.12, direction),
-        ],
-        B,
-        100.0,
-    )
-    .unwrap()
-}
-
-#[test]
-fn clothoid_offset_and_heading_are_the_textbook_ones() {
-    // Clothoid of length L into radius R: heading L/(2R) and lateral offset L²/(6R) at its end
-    // (small angles); in the curve the heading grows by σ/R.
-    let d = entry(CurveDirection::Left);
-    let end = d.at(150.0);
-    assert!((end.heading - 100.0 / 1200.0).abs() < 1e-15);
-    assert!((end.heading_integral - 100.0f64.powi(2) / 3600.0).abs() < 1e-12);
-    assert!((end.curvature - 1.0 / 600.0).abs() < 1e-15);
-    let mid = d.at(100.0);
-    assert!((mid.curvature - 0.5 / 600.0).abs() < 1e-15);
-    assert!((mid.curvature_rate - 1.0 / 60_000.0).abs() < 1e-18);
-    // Linear run-off: half the cant in the middle; the right (outer) rail is the high one.
-    assert!((mid.roll + (0.06f64 / (2.0 * B)).atan()).abs() < 1e-15);
-    let inside = d.at(300.0);
-    assert!((inside.heading - (100.0 / 1200.0 + 150.0 / 600.0)).abs() < 1e-14);
-    assert!((inside.roll + (0.12f64 / (2.0 * B)).atan()).abs() < 1e-15);
-    assert_eq!(inside.roll_rate, 0.0);
-    assert_eq!(inside.curvature_rate, 0.0);
-    // Beyond the end the steady curve continues; before the start the straight.
-    let beyond = d.at(400.0);
-    assert!((beyond.heading - (100.0 / 1200.0 + 250.0 / 600.0)).abs() < 1e-14);
-    assert_eq!(beyond.curvature, 1.0 / 600.0);
-    assert_eq!(d.at(-10.0), DesignPoint::default());
-    assert!(!d.is_straight());
-}
-
-#[test]
-fn a_right_curve_is_the_mirror_image() {
-    let (l, r) = (entry(CurveDirection::Left), entry(CurveDirection::Right));
-    for s in [-5.0, 20.0, 75.0, 120.0, 150.0, 260.0, 500.0] {
-        let (a, b) = (l.at(s), r.at(s));
-        assert_eq!(a.curvature, -b.curvature);
-        assert_eq!(a.curvature_rate, -b.curvature_rate);
-        assert_eq!(a.roll, -b.roll);
-        assert_eq!(a.roll_rate, -b.roll_rate);
-        assert_eq!(a.heading, -b.heading);
-        assert_eq!(a.heading_integral, -b.heading_integral);
-    }
-}
-
 #[test]
 fn a_shorter_run_off_is_centred_in_its_transition() {
     let d = TrackDesign::new(

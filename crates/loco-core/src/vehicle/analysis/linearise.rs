@@ -30,7 +30,7 @@
 //!   span several cells and its creepages (about 1e-4) that structure, so these would take
 //!   `contact_step` = [`HALF_TABLE_CELL`] (5e-5: one table cell, a creepage of 1e-6 at 200 km/h).
 //!
-//! Measured against the time domain (0.2 mm sinusoids, `tests/frequency_response.rs`,
+//! Measured against the time domain (0.2 mm sinusoids, `tests/verification/frequency_response.rs`,
 //! docs/model/frequency_response.md): one step of 1e-7 for everything puts S_norm + YD1 alignment at 20 m at
 //! −11.4 % / −5.4° (carbody); one step of 5e-5 for everything passes it but takes S_low cross
 //! level at 150 m to +5.7 % (the Hertz secant of the roll columns: a roll step of 5e-5 alone gives

@@ -19,7 +19,7 @@
 //! The long step itself is taken only where it resolves the creep forces' decay
 //! ([`crate::vehicle::analysis::stiffest_mode::stable_step`], [`crate::vehicle::analysis::creep_decay`]): at 10 m/s (`λ h` = 1.82 at
 //! 2 ms) a vehicle running at 5–9 mm in a curve on a cone rang at 0.6 m/s² with it, where it
-//! rests at 1 ms (tests/curving_quasi_static.rs).
+//! rests at 1 ms (tests/verification/curving_quasi_static.rs).
 
 use crate::vehicle::model::layout::{wheelset, N_DOF, N_WHEELSETS, Y};
 use crate::vehicle::rail_contact::wheel_rail::WheelRail;

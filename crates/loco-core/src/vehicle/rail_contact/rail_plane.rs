@@ -29,7 +29,7 @@
 //!
 //! The table is read at the table's own relative roll (the rigid pose); the elastic penetrations
 //! roll the wheelset relative to the rails by a little more (about 1e-4 rad, measured in
-//! `tests/rolled_rails.rs` for every scenario and in flange contact), which moves a contact point
+//! `tests/verification/rolled_rails.rs` for every scenario and in flange contact), which moves a contact point
 //! by about r0 times that (< 0.1 mm, the table's grid step), so the table needs no relative-roll
 //! axis.
 

@@ -12,19 +12,19 @@
 //! bearings, ≈ 320 Hz; wheelset on the Hertz contact) stay inside RK4's stability region at that
 //! step. A Maxwell damper whose internal pole k/c is too fast for the step (SPEC §6 reaches
 //! 5·10³ 1/s) is integrated as the pure damper, its series spring rigid, with the error bound of
-//! [`crate::dampers`]; `tests/parameter_box.rs` runs every damper corner of the box and checks
+//! [`crate::dampers`]; `tests/verification/parameter_box.rs` runs every damper corner of the box and checks
 //! the step convergence on every CI run.
 //!
 //! **The default**, [`Integrator::ExponentialRk4`] at 2 ms ([`crate::vehicle::time::exponential_rk4`]), takes
 //! RK4's stages for everything but the gearbox bearings' springs and the linear Maxwell dampers'
 //! series springs, which it solves exactly ([`crate::vehicle::time::stiff_linear_part`],
 //! [`crate::vehicle::time::decaying_states`]), so that a 2 ms step is stable with the damper laws of the 1 ms
-//! reference: `tests/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
+//! reference: `tests/verification/exponential_step.rs` keeps W_y, A_yb and the A_yc PSD peak within 0.5 % of
 //! the reference over the SPEC §6 box on the study's 500 m runs, and halving its step changes
 //! W_y by at most 0.011 % and A_yb by at most 0.2 % (the convergence study). Steps are cut to 1 ms
 //! while a wheel is outside its pair's smooth contact range ([`crate::vehicle::output::long_step_range`]). Solved exactly, the
 //! bearings' modes keep only their physical damping (`hollow_shaft.bearing_damping_time`), which
-//! brings a steady curve to rest (`tests/curving.rs`); RK4 at 1 ms damps them numerically as well.
+//! brings a steady curve to rest (`tests/verification/curving.rs`); RK4 at 1 ms damps them numerically as well.
 //!
 //! Discrete states (the FSD valve) are advanced once per accepted step through
 //! [`OdeSystem::after_step`].
@@ -35,7 +35,7 @@ pub const REFERENCE_STEP: f64 = 1e-3;
 
 /// The default step of [`Integrator::ExponentialRk4`], s: with the gearbox
 /// bearings solved exactly the vehicle is stable at 2 ms, and 500 Hz output stays on whole steps
-/// (`tests/exponential_step.rs`).
+/// (`tests/verification/exponential_step.rs`).
 pub const EXPONENTIAL_STEP: f64 = 2e-3;
 
 /// The time integration scheme of a run, both with a fixed step.
@@ -46,7 +46,7 @@ pub enum Integrator {
     /// ETDRK4 with the gearbox bearings' stiff springs and the linear dampers' series springs
     /// solved exactly ([`crate::vehicle::time::exponential_rk4`]), at [`EXPONENTIAL_STEP`]: the
     /// default, 1.6–1.8× faster than the reference and within 0.5 % of it in W_y, A_yb and the
-    /// A_yc PSD peak over the SPEC §6 box on 500 m runs (`tests/exponential_step.rs`).
+    /// A_yc PSD peak over the SPEC §6 box on 500 m runs (`tests/verification/exponential_step.rs`).
     #[default]
     ExponentialRk4,
 }
