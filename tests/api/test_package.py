@@ -52,3 +52,18 @@ def test_objects_print_readably() -> None:
     assert repr(loco.Locomotive.default().replace(C_sx=2e5)) == (
         "Locomotive(default vehicle, overrides={'C_sx': 200000.0})"
     )
+
+
+def test_the_studies_package_names_every_module_it_has() -> None:
+    """Each module of ``loco.studies`` is in its ``__all__`` and named in its docstring (which
+    says which stage it belongs to), so a new module cannot be left out of the map."""
+    from pathlib import Path
+
+    import loco.studies as studies
+
+    folder = Path(studies.__file__).parent
+    modules = sorted(p.stem for p in folder.glob("*.py") if p.stem != "__init__")
+    assert sorted(studies.__all__) == modules
+    doc = studies.__doc__ or ""
+    missing = [m for m in modules if f"loco.studies.{m}`" not in doc.replace("\n  ", "")]
+    assert not missing, f"modules the loco.studies docstring does not name: {missing}"

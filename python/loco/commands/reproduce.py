@@ -77,7 +77,6 @@ from typing import Any
 
 import loco
 from loco import dampers
-from loco.commands import damper_bench
 from loco.commands.arguments import (
     UsageError,
     add_integrator_argument,
@@ -88,6 +87,7 @@ from loco.commands.arguments import (
 from loco.executors import Executor, LocalExecutor, executor_from_options
 from loco.studies import (
     curving,
+    damper_bench,
     fsd_comparison,
     fsd_design_stage,
     parameter_stages,

@@ -1,45 +1,86 @@
-"""Parameter studies of SPEC §6, each usable on its own.
+"""The study of SPEC §6 as stages of ``loco reproduce`` (:mod:`loco.commands.reproduce`), and
+the methods they share, each usable on its own.
 
-- :mod:`loco.studies.parameters`: the six study parameters, their ranges, SI conversion.
-- :mod:`loco.studies.sampling`: Latin hypercube and Saltelli designs.
-- :mod:`loco.studies.evaluators`: the ``evaluate(params, names) -> metrics`` protocol every study
+Each stage (a frozen dataclass of its inputs, :mod:`loco.studies.stages`) and the module it
+lives in, with the modules only it uses:
+
+- ``speed_sweep``: :mod:`~loco.studies.speed_sweep` (W_y and A_yb against speed, PSDs at
+  200 km/h, §6.1), figures in :mod:`~loco.studies.speed_sweep_figures`.
+- ``monte_carlo``: :mod:`~loco.studies.parameter_study` (the objectives, the Latin hypercube
+  Monte Carlo, §6.2).
+- ``surrogate_samples``, ``surrogate_holdout``: :mod:`~loco.studies.surrogate_samples`,
+  :mod:`~loco.studies.surrogate_holdout` (the samples the surrogates learn from and are scored on).
+- ``surrogate``: :mod:`~loco.studies.surrogate_validation` (R² and the surrogate used, §6.3),
+  with :mod:`~loco.studies.surrogate` (the RBF network), :mod:`~loco.studies.surrogate_reference`
+  and :mod:`~loco.studies.gp_kernel` (the Gaussian processes), :mod:`~loco.studies.
+  surrogate_selection` and :mod:`~loco.studies.surrogate_fits` (the choice by cross-validation).
+- ``sensitivity``, ``optimisation``: :mod:`~loco.studies.parameter_stages` (Sobol' indices,
+  NSGA-II, §6.2, §6.4), with :mod:`~loco.studies.sensitivity` and
+  :mod:`~loco.studies.optimisation`.
+- ``damper_bench``: :mod:`~loco.studies.damper_bench` (§6.5), with
+  :mod:`~loco.studies.valve_bench` (the FSD's frequency valve).
+- ``fsd_comparison``: :mod:`~loco.studies.fsd_comparison` (YD1, YD2, FSD and FSD-H on S_low and
+  S_high, §6.6), figures in :mod:`~loco.studies.fsd_figures`.
+- ``fsd_design``: :mod:`~loco.studies.fsd_design_stage`, with :mod:`~loco.studies.fsd_design`
+  (NSGA-II on the simulator) and :mod:`~loco.studies.fsd_conicity` (the conicity sweep).
+- ``premise_case``: :mod:`~loco.studies.premise_case` (the comparison where the premise holds).
+- ``premise_map``, ``screening``, ``plausible``: :mod:`~loco.studies.premise_stages`, with
+  :mod:`~loco.studies.premise_map`, :mod:`~loco.studies.premise_probability` and
+  :mod:`~loco.studies.premise_sensitivity`; :mod:`~loco.studies.premise_study` runs them on any
+  vehicle file.
+- ``curving`` (``--curving``): :mod:`~loco.studies.curving`, figures in
+  :mod:`~loco.studies.curving_figures`, EN 14363 processing in :mod:`~loco.studies.en14363`.
+
+Shared by the stages:
+
+- :mod:`~loco.studies.quantities`: the scenarios, channels and metrics of W_y, A_yb and A_yc,
+  named once.
+- :mod:`~loco.studies.parameters`: the six study parameters, their ranges, SI conversion.
+- :mod:`~loco.studies.sampling`: Latin hypercube and Saltelli designs.
+- :mod:`~loco.studies.evaluators`: the ``evaluate(params, names) -> metrics`` protocol every study
   takes, and the simulator evaluator (``loco.run_batch``).
-- :mod:`loco.studies.sensitivity`: Sobol' indices, direct and on a surrogate; convergence.
-- :mod:`loco.studies.surrogate`: the RBF neural network, cross-validated R², parity plot;
-  :mod:`loco.studies.surrogate_reference`: the Gaussian process; :mod:`loco.studies.
-  surrogate_selection`: the surrogate the optimisation uses, chosen by cross-validation.
-- :mod:`loco.studies.seeds`: one case on several synthesised tracks (one batch, tracks as
-  samples); :mod:`loco.studies.statistics`: means, 95 % intervals, paired tests, rankings.
-- :mod:`loco.studies.optimisation`: NSGA-II Pareto front, spread of points, re-simulation.
-- :mod:`loco.studies.report`: study records, CSV/JSON output, the Markdown report.
-- :mod:`loco.studies.stages`: a stage as a frozen dataclass of its inputs, hashed from them, and
+- :mod:`~loco.studies.seeds`: one case on several synthesised tracks (one batch, tracks as
+  samples); :mod:`~loco.studies.statistics`: geometric means, intervals, paired tests, rankings.
+- :mod:`~loco.studies.stages`: a stage as a frozen dataclass of its inputs, hashed from them, and
   the runner that skips a stage finished with the same inputs.
-
-The studies of SPEC §6, each writing its figures, tables and report record:
-
-- :mod:`loco.studies.speed_sweep`: W_y and A_yb against speed, PSDs at 200 km/h (§6.1); its
-  figures in :mod:`loco.studies.speed_sweep_figures`.
-- :mod:`loco.studies.parameter_study`: objectives, Latin hypercube Monte Carlo (§6.2);
-  :mod:`loco.studies.surrogate_validation`: surrogate R² and the surrogate used (§6.3);
-  :mod:`loco.studies.parameter_stages`: Sobol' indices and NSGA-II (§6.2, §6.4).
-- :mod:`loco.studies.fsd_comparison`: YD1, YD2 and FSD on S_low and S_high (§6.6); its
-  figures in :mod:`loco.studies.fsd_figures`.
-
-``loco reproduce`` (:mod:`loco.commands.reproduce`) runs them all.
+- :mod:`~loco.studies.report`, :mod:`~loco.studies.report_html`: study records, CSV/JSON
+  output, the Markdown report and the HTML page; :mod:`~loco.studies.captions`: what to read
+  from each figure; :mod:`~loco.studies.plotting`: the figures' shared set-up.
+- :mod:`~loco.studies.verdict`: which yaw damper holds which scenario;
+  :mod:`~loco.studies.premise_report`: "Does the premise hold?".
 
 The submodules are imported on demand (``from loco.studies import sensitivity``): SALib, pymoo and
 scikit-learn load only when a study needs them.
 """
 
 __all__ = [
+    "captions",
+    "curving",
+    "curving_figures",
+    "damper_bench",
+    "en14363",
     "evaluators",
     "fsd_comparison",
+    "fsd_conicity",
+    "fsd_design",
+    "fsd_design_stage",
     "fsd_figures",
+    "gp_kernel",
     "optimisation",
     "parameter_stages",
     "parameter_study",
     "parameters",
+    "plotting",
+    "premise_case",
+    "premise_map",
+    "premise_probability",
+    "premise_report",
+    "premise_sensitivity",
+    "premise_stages",
+    "premise_study",
+    "quantities",
     "report",
+    "report_html",
     "sampling",
     "seeds",
     "sensitivity",
@@ -48,7 +89,12 @@ __all__ = [
     "stages",
     "statistics",
     "surrogate",
+    "surrogate_fits",
+    "surrogate_holdout",
     "surrogate_reference",
+    "surrogate_samples",
     "surrogate_selection",
     "surrogate_validation",
+    "valve_bench",
+    "verdict",
 ]

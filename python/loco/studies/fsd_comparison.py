@@ -31,9 +31,9 @@ from loco.channels import ChannelKind, Metric
 from loco.contact_pairs import ContactPair
 from loco.studies import captions as figure_captions
 from loco.studies.plotting import Spectrum
+from loco.studies.quantities import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import TrackRuns, run_over_tracks
-from loco.studies.speed_sweep import A_YB, A_YC, PEAK_METRICS, RMS_METRICS
 from loco.studies.stages import Demand, Runtime, Stage
 from loco.studies.statistics import (
     Ranking,

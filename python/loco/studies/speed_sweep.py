@@ -33,10 +33,20 @@ import numpy.typing as npt
 import pandas as pd
 
 import loco
-from loco import _loco, dampers, metrics
+from loco import dampers
 from loco.channels import Metric
 from loco.studies import captions as figure_captions
 from loco.studies.plotting import Spectrum
+from loco.studies.quantities import (
+    A_YB,
+    A_YC,
+    CHANNELS,
+    METRIC_CHANNELS,
+    PEAK_METRICS,
+    RMS_METRICS,
+    SCENARIOS,
+    spectrum,
+)
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.seeds import run_over_tracks
 from loco.studies.stages import Demand, Runtime, Stage
@@ -59,41 +69,11 @@ __all__ = [
 
 FloatArray = npt.NDArray[np.float64]
 
-#: The three wheel states of SPEC §2.
-SCENARIOS: tuple[str, ...] = ("S_low", "S_norm", "S_high")
-#: Channel of each quantity whose metrics the core computes (``A_yc``, ``A_zc``, ``A_yb``), as the
-#: core names it.
-METRIC_CHANNELS: dict[str, str] = dict(_loco.metric_channels())
-#: (label, channel) of the carbody floor lateral acceleration A_yc.
-A_YC: tuple[str, str] = ("A_yc", METRIC_CHANNELS["A_yc"])
-#: (label, channel) of the bogie frame lateral acceleration A_yb.
-A_YB: tuple[str, str] = ("A_yb", METRIC_CHANNELS["A_yb"])
-#: Channel of each quantity of the sweep's spectra.
-CHANNELS: dict[str, str] = dict((A_YC, A_YB))
 #: Metrics plotted against speed: (metric name, axis label).
 SWEEP_METRICS: tuple[tuple[str, str], ...] = (
     (Metric.WY_MAX, "W_y (Sperling, lateral)"),
     (Metric.AYB_PEAK_LP, "A_yb peak, 10 Hz low-pass (m/s²)"),
 )
-
-
-#: Run metrics (the core's) of the PSD peak of each quantity: (dominant frequency Hz, PSD peak
-#: (m/s²)²/Hz). A_yc is searched over 0.2-20 Hz, A_yb over the EN 14363 f0 band.
-PEAK_METRICS: dict[str, tuple[str, str]] = {
-    "A_yc": (Metric.AYC_DOMINANT_HZ, Metric.AYC_PSD_PEAK),
-    "A_yb": (Metric.AYB_F0_HZ, Metric.AYB_PSD_PEAK),
-}
-#: Run metric of the rms of each quantity, m/s².
-RMS_METRICS: dict[str, str] = {"A_yc": Metric.AYC_RMS, "A_yb": Metric.AYB_RMS}
-
-
-def spectrum(result: loco.SimulationResult, quantity: str) -> Spectrum:
-    """The :class:`Spectrum` of ``quantity`` (``"A_yc"`` or ``"A_yb"``) of a run: the Welch PSD of
-    its channel by :func:`loco.metrics.psd` (for the curves), its peak from the run's metrics
-    (:data:`PEAK_METRICS`)."""
-    f, p = metrics.psd(result.channel(CHANNELS[quantity]), result.sampling_rate)
-    frequency, peak = PEAK_METRICS[quantity]
-    return Spectrum(f, p, result.metrics[frequency], result.metrics[peak])
 
 
 @dataclass(frozen=True)

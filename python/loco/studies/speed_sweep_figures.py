@@ -10,7 +10,8 @@ import numpy as np
 
 import loco
 from loco.studies.plotting import draw_intervals, draw_spectra, pyplot, save_figure
-from loco.studies.speed_sweep import CHANNELS, PEAK_METRICS, SWEEP_METRICS, SpeedSweep
+from loco.studies.quantities import CHANNELS, PEAK_METRICS
+from loco.studies.speed_sweep import SWEEP_METRICS, SpeedSweep
 from loco.studies.statistics import Interval, track_values_text
 
 __all__ = ["plot_peaks", "plot_psds", "plot_sweep", "sweep_notes"]
