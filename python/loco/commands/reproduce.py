@@ -90,6 +90,7 @@ from loco.studies import (
     damper_bench,
     fsd_comparison,
     fsd_design_stage,
+    monte_carlo,
     parameter_stages,
     parameter_study,
     premise_case,
@@ -341,7 +342,7 @@ def stages(
             yaw_damper=dampers.YD2,
             integrator=integrator,
         ),
-        parameter_study.MonteCarloStage(setup, sizes.lhs_samples, seed),
+        monte_carlo.MonteCarloStage(setup, sizes.lhs_samples, seed),
         surrogate_samples.SurrogateSamplesStage(
             setup, sizes.surrogate_samples, sizes.lhs_samples, seed
         ),

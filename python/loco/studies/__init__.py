@@ -6,8 +6,9 @@ lives in, with the modules only it uses:
 
 - ``speed_sweep``: :mod:`~loco.studies.speed_sweep` (W_y and A_yb against speed, PSDs at
   200 km/h, §6.1), figures in :mod:`~loco.studies.speed_sweep_figures`.
-- ``monte_carlo``: :mod:`~loco.studies.parameter_study` (the objectives, the Latin hypercube
-  Monte Carlo, §6.2).
+- ``monte_carlo``: :mod:`~loco.studies.monte_carlo` (the Latin hypercube Monte Carlo, §6.2),
+  with :mod:`~loco.studies.parameter_study` (the objectives and the samples' table, which the
+  surrogate stages share).
 - ``surrogate_samples``, ``surrogate_holdout``: :mod:`~loco.studies.surrogate_samples`,
   :mod:`~loco.studies.surrogate_holdout` (the samples the surrogates learn from and are scored on).
 - ``surrogate``: :mod:`~loco.studies.surrogate_validation` (R² and the surrogate used, §6.3),
@@ -66,6 +67,7 @@ __all__ = [
     "fsd_design_stage",
     "fsd_figures",
     "gp_kernel",
+    "monte_carlo",
     "optimisation",
     "parameter_stages",
     "parameter_study",
