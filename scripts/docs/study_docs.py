@@ -89,7 +89,8 @@ the FSD design study at full size, a direct Sobol' design of N = 1024) are descr
 
 def _stage_names() -> list[str]:
     """The stages in the order `loco reproduce --quick` runs them."""
-    from loco.commands.reproduce import QUICK, stages
+    from loco.studies.reproduce import stages
+    from loco.studies.sizes import QUICK
 
     return [s.name for s in stages(QUICK, ".", choose_premise_pair=False)]
 

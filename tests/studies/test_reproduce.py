@@ -21,10 +21,11 @@ import loco
 from loco import dampers
 from loco.cli import build_parser, main
 from loco.commands import reproduce as reproduce_command
-from loco.commands.reproduce import FULL, QUICK, TINY, reproduce, stages
 from loco.store import find_campaigns
 from loco.studies import fsd_comparison, fsd_design_stage
 from loco.studies.parameters import names
+from loco.studies.reproduce import reproduce, stages
+from loco.studies.sizes import FULL, QUICK, TINY
 from loco.studies.stages import MARKER, DataFile, encode
 from loco.studies.surrogate_selection import CANDIDATES
 from loco.studies.verdict import verdict_from_csv

@@ -1,4 +1,4 @@
-"""The study of SPEC §6 as stages of ``loco reproduce`` (:mod:`loco.commands.reproduce`), and
+"""The study of SPEC §6 as stages of ``loco reproduce`` (:mod:`loco.studies.reproduce`), and
 the methods they share, each usable on its own.
 
 Each stage (a frozen dataclass of its inputs, :mod:`loco.studies.stages`) and the module it
@@ -34,6 +34,8 @@ lives in, with the modules only it uses:
 
 Shared by the stages:
 
+- :mod:`~loco.studies.reproduce`: the stages in order and the report; :mod:`~loco.studies.sizes`:
+  the presets' sizes.
 - :mod:`~loco.studies.quantities`: the scenarios, channels and metrics of W_y, A_yb and A_yc,
   named once.
 - :mod:`~loco.studies.parameters`: the six study parameters, their ranges, SI conversion.
@@ -83,9 +85,11 @@ __all__ = [
     "quantities",
     "report",
     "report_html",
+    "reproduce",
     "sampling",
     "seeds",
     "sensitivity",
+    "sizes",
     "speed_sweep",
     "speed_sweep_figures",
     "stages",
