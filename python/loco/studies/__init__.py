@@ -21,7 +21,8 @@ lives in, with the modules only it uses:
 - ``damper_bench``: :mod:`~loco.studies.damper_bench` (§6.5), with
   :mod:`~loco.studies.valve_bench` (the FSD's frequency valve).
 - ``fsd_comparison``: :mod:`~loco.studies.fsd_comparison` (YD1, YD2, FSD and FSD-H on S_low and
-  S_high, §6.6), figures in :mod:`~loco.studies.fsd_figures`.
+  S_high, §6.6), its runs and tables in :mod:`~loco.studies.fsd_tables`, figures in
+  :mod:`~loco.studies.fsd_figures`.
 - ``fsd_design``: :mod:`~loco.studies.fsd_design_stage`, with :mod:`~loco.studies.fsd_design`
   (NSGA-II on the simulator) and :mod:`~loco.studies.fsd_conicity` (the conicity sweep).
 - ``premise_case``: :mod:`~loco.studies.premise_case` (the comparison where the premise holds).
@@ -29,8 +30,9 @@ lives in, with the modules only it uses:
   :mod:`~loco.studies.premise_map`, :mod:`~loco.studies.premise_probability` and
   :mod:`~loco.studies.premise_sensitivity`; :mod:`~loco.studies.premise_study` runs them on any
   vehicle file.
-- ``curving`` (``--curving``): :mod:`~loco.studies.curving`, figures in
-  :mod:`~loco.studies.curving_figures`, EN 14363 processing in :mod:`~loco.studies.en14363`.
+- ``curving`` (``--full``): :mod:`~loco.studies.curving`, its curves and sizes in
+  :mod:`~loco.studies.curving_cases`, figures in :mod:`~loco.studies.curving_figures`, EN 14363
+  processing in :mod:`~loco.studies.en14363`.
 
 Shared by the stages:
 
@@ -59,6 +61,7 @@ scikit-learn load only when a study needs them.
 __all__ = [
     "captions",
     "curving",
+    "curving_cases",
     "curving_figures",
     "damper_bench",
     "en14363",
@@ -68,6 +71,7 @@ __all__ = [
     "fsd_design",
     "fsd_design_stage",
     "fsd_figures",
+    "fsd_tables",
     "gp_kernel",
     "monte_carlo",
     "optimisation",

@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 import loco
-from loco.studies.fsd_comparison import (
+from loco.studies.fsd_tables import (
     CASES,
     JUDGED_BY,
     VALVE_SUFFIX,
