@@ -20,11 +20,13 @@ from loco.simulation import INTEGRATOR_STEPS, INTEGRATORS, Scenario
 __all__ = [
     "UsageError",
     "add_integrator_argument",
+    "existing_file",
     "finite_float",
     "non_negative_int",
     "output_dir",
     "positive_float",
     "positive_int",
+    "thread_count",
 ]
 
 
@@ -46,6 +48,22 @@ def positive_int(text: str) -> int:
     if n < 1:
         raise argparse.ArgumentTypeError(f"must be >= 1, got {n}")
     return n
+
+
+def thread_count(text: str) -> int:
+    """A thread count from 0 (one per core) to 1024, as the core's batch takes it."""
+    n = _integer(text)
+    if not 0 <= n <= 1024:
+        raise argparse.ArgumentTypeError(f"must be in 0..1024, got {n}")
+    return n
+
+
+def existing_file(text: str) -> Path:
+    """The path of a file that exists (an input file: vehicle, study, samples, curve)."""
+    path = Path(text)
+    if not path.is_file():
+        raise argparse.ArgumentTypeError(f"no such file: {text!r}")
+    return path
 
 
 def non_negative_int(text: str) -> int:

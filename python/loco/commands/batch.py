@@ -17,6 +17,7 @@ from pathlib import Path
 
 from loco import _loco
 from loco.batch import _ProgressBar
+from loco.commands.arguments import existing_file, thread_count
 
 NAME = "batch"
 HELP = "a batch of runs from a study file (TOML) and a samples CSV: metrics CSV, time histories"
@@ -30,32 +31,15 @@ files written:
 """
 
 
-def _existing_file(text: str) -> Path:
-    path = Path(text)
-    if not path.is_file():
-        raise argparse.ArgumentTypeError(f"no such file: {text!r}")
-    return path
-
-
-def _threads(text: str) -> int:
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
-    if not 0 <= n <= 1024:
-        raise argparse.ArgumentTypeError(f"must be in 0..1024, got {n}")
-    return n
-
-
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = EPILOG
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument(
-        "study", type=_existing_file, help="study file (TOML): vehicle, scenario, outputs"
+        "study", type=existing_file, help="study file (TOML): vehicle, scenario, outputs"
     )
     parser.add_argument(
         "samples",
-        type=_existing_file,
+        type=existing_file,
         help="samples (CSV): parameter names, one row of SI values per sample",
     )
     parser.add_argument(
@@ -64,7 +48,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "-t",
         "--threads",
-        type=_threads,
+        type=thread_count,
         default=0,
         help="worker threads (0: one per core); the results do not depend on it",
     )

@@ -21,6 +21,7 @@ from loco.channels import channel_table, metric_table
 from loco.commands.arguments import (
     UsageError,
     add_integrator_argument,
+    existing_file,
     finite_float,
     non_negative_int,
     output_dir,
@@ -55,13 +56,6 @@ output files in --out DIR:
 """
 
 
-def _existing_file(text: str) -> Path:
-    path = Path(text)
-    if not path.is_file():
-        raise argparse.ArgumentTypeError(f"no such file: {text!r}")
-    return path
-
-
 def _speed_kmh(text: str) -> float:
     v = positive_float(text)
     if v > MAX_SPEED_KMH:
@@ -72,7 +66,7 @@ def _speed_kmh(text: str) -> float:
 def _track(text: str) -> str:
     if text in ("synthetic", "perfect"):
         return text
-    return str(_existing_file(text))
+    return str(existing_file(text))
 
 
 def _lead_in(text: str) -> float:
@@ -87,7 +81,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = EPILOG
     parser.add_argument("--out", type=Path, default=Path("out/simulate"), help="output directory")
     parser.add_argument(
-        "--vehicle", type=_existing_file, default=None, help="vehicle TOML file (default: embedded)"
+        "--vehicle", type=existing_file, default=None, help="vehicle TOML file (default: embedded)"
     )
     wheel_rail = parser.add_mutually_exclusive_group()
     wheel_rail.add_argument(
@@ -131,7 +125,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--seed", type=non_negative_int, default=None, help="synthetic track seed")
     parser.add_argument(
-        "--curve", type=_existing_file, default=None, help="designed alignment: a sections CSV"
+        "--curve", type=existing_file, default=None, help="designed alignment: a sections CSV"
     )
     parser.add_argument(
         "--yaw-damper",
