@@ -367,6 +367,7 @@ def channel_table(vehicle: Vehicle) -> list[tuple[str, str, str]]: ...
 
 __all__ += [
     "Damper",
+    "compared_dampers",
     "damper_bench_recorded",
     "damper_bench_sine",
     "damper_bench_sweep",
@@ -445,6 +446,7 @@ def damper_hydraulic(
 def damper_hydraulic_defaults() -> dict[str, float | bool | str | None]: ...
 def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
 def damper_preset_names() -> list[str]: ...
+def compared_dampers() -> list[tuple[str, Damper]]: ...
 def damper_bench_sine(
     damper: Damper,
     frequency: float,
@@ -516,7 +518,7 @@ class RunScenario:
 
 # --- mode rules (mode_rules.rs) -----------------------------------------------------------------
 
-__all__ += ["mode_rules", "select_mode"]
+__all__ += ["least_damped_mode", "mode_rules", "oscillatory_modes", "select_mode"]
 
 def mode_rules() -> list[
     tuple[str, tuple[float, float], tuple[float, float], float, float, float]
@@ -528,6 +530,14 @@ def select_mode(
     damping_ratios: NDArray[np.float64],
     shares: NDArray[np.float64],
     motions: NDArray[np.float64],
+) -> int | None: ...
+def oscillatory_modes(
+    re: NDArray[np.float64], im: NDArray[np.float64]
+) -> tuple[list[int], list[float], list[float]]: ...
+def least_damped_mode(
+    frequencies: NDArray[np.float64],
+    damping_ratios: NDArray[np.float64],
+    band: tuple[float, float],
 ) -> int | None: ...
 
 # --- input ranges (input_ranges.rs) -------------------------------------------------------------

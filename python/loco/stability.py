@@ -57,11 +57,16 @@ class Eigen:
         return f"Eigen(speed={self.speed:g} m/s, {len(self.modes)} modes{least})"
 
     def least_damped(self, min_frequency: float = 0.3, max_frequency: float = 20.0) -> Mode:
-        """The least damped mode within a frequency band (hunting and body modes, not drift)."""
-        band = [m for m in self.modes if min_frequency <= m.frequency <= max_frequency]
-        if not band:
+        """The least damped mode within a frequency band (hunting and body modes, not drift), by
+        the core's rule (the one the linear critical speed uses)."""
+        index = _loco.least_damped_mode(
+            np.array([m.frequency for m in self.modes], dtype=np.float64),
+            np.array([m.damping_ratio for m in self.modes], dtype=np.float64),
+            (float(min_frequency), float(max_frequency)),
+        )
+        if index is None:
             raise _loco.ParameterError("invalid parameter `band`: no mode in the frequency band")
-        return band[0]
+        return self.modes[index]
 
     def carbody_mode(self) -> Mode:
         """The carbody-coupled lateral mode (carbody hunting, the low-conicity problem).
@@ -172,8 +177,12 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
     scenario = with_conicity(scenario, conicity)
     a = _loco.linearise(vehicle.native, scenario.native())
     values, vectors = np.linalg.eig(a)
-    # One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
-    keep = np.flatnonzero(values.imag > 1e-6)
+    # The core's rule: one of each conjugate pair, with its frequency and damping ratio; real
+    # (overdamped) roots are not modes of oscillation.
+    keep, frequencies, damping_ratios = _loco.oscillatory_modes(
+        np.ascontiguousarray(values.real, dtype=np.float64),
+        np.ascontiguousarray(values.imag, dtype=np.float64),
+    )
     energies = mode_energies(vectors[:, keep].T, vehicle.native)
     kinds = dict(zip(energies.names, energies.kinds, strict=True))
     modes = []
@@ -181,8 +190,8 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
         lam = values[k]
         modes.append(
             Mode(
-                frequency=float(abs(lam.imag) / (2 * np.pi)),
-                damping_ratio=float(-lam.real / abs(lam)),
+                frequency=frequencies[i],
+                damping_ratio=damping_ratios[i],
                 eigenvalue=complex(lam),
                 bodies=energies.bodies(i),
                 motions=energies.body_motions(i),

@@ -392,6 +392,16 @@ fn damper_preset_names() -> Vec<&'static str> {
     presets::DAMPER_PRESETS.to_vec()
 }
 
+/// The yaw dampers the studies compare by label (the presets and `FSD-H`, the FSD with the
+/// hydraulic valve), in order.
+#[pyfunction]
+fn compared_dampers() -> Vec<(&'static str, PyDamper)> {
+    presets::compared_dampers()
+        .into_iter()
+        .map(|(label, inner)| (label, PyDamper { inner }))
+        .collect()
+}
+
 /// Adds this file's functions and classes to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyDamper>()?;
@@ -401,6 +411,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damper_hydraulic_defaults, m)?)?;
     m.add_function(wrap_pyfunction!(damper_preset, m)?)?;
     m.add_function(wrap_pyfunction!(damper_preset_names, m)?)?;
+    m.add_function(wrap_pyfunction!(compared_dampers, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_trigger_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_reference_stroke_amplitude, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_valve_opening_band, m)?)?;
