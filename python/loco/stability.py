@@ -324,8 +324,8 @@ def ramp_down(
     wheels and finds the largest limit cycle, the one that survives down to the lowest speed.
 
     The detection follows the dying cycle's collapse, so the result is low by roughly
-    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 35.6 m/s: 35.2,
-    34.1 and 33.8 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
+    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 34.2 m/s: 33.5,
+    32.8 and 32.0 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
     check it. Start well above the linear critical speed. Ctrl-C stops the run."""
     speed, outcome, speeds, amplitudes = _loco.ramp_down(
         vehicle.native,
