@@ -367,7 +367,6 @@ def channel_table(vehicle: Vehicle) -> list[tuple[str, str, str]]: ...
 
 __all__ += [
     "Damper",
-    "compared_dampers",
     "damper_bench_recorded",
     "damper_bench_sine",
     "damper_bench_sweep",
@@ -375,8 +374,6 @@ __all__ += [
     "damper_hydraulic",
     "damper_hydraulic_defaults",
     "damper_maxwell",
-    "damper_preset",
-    "damper_preset_names",
     "fsd_reference_stroke_amplitude",
     "fsd_trigger_names",
     "fsd_valve_opening_band",
@@ -444,9 +441,6 @@ def damper_hydraulic(
     start_closed: bool,
 ) -> Damper: ...
 def damper_hydraulic_defaults() -> dict[str, float | bool | str | None]: ...
-def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
-def damper_preset_names() -> list[str]: ...
-def compared_dampers() -> list[tuple[str, Damper]]: ...
 def damper_bench_sine(
     damper: Damper,
     frequency: float,
@@ -515,6 +509,14 @@ class RunScenario:
     def distance(self) -> float: ...
     @property
     def output_rate(self) -> float: ...
+
+# --- damper presets (damper_presets.rs) -------------------------------------------------------
+
+__all__ += ["compared_dampers", "damper_preset", "damper_preset_names"]
+
+def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
+def damper_preset_names() -> list[str]: ...
+def compared_dampers() -> list[tuple[str, Damper]]: ...
 
 # --- mode rules (mode_rules.rs) -----------------------------------------------------------------
 

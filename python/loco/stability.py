@@ -17,7 +17,15 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.modes import MOTIONS, Mode, ModeEnergies, mode_energies
+from loco.modes import (
+    MOTIONS,
+    Mode,
+    ModeEnergies,
+    ModeRule,
+    describe_rule,
+    mode_energies,
+    mode_rules,
+)
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
@@ -119,41 +127,6 @@ class Eigen:
                 f"{rule} mode rule ({describe_rule(rule)})"
             )
         return self.modes[index]
-
-
-@dataclass(frozen=True)
-class ModeRule:
-    """A rule of the core that picks one mode: frequency band (Hz), the least and largest share
-    of the energy in the carbody, the least shares in the wheelsets, the frames and in lateral,
-    roll and yaw motion (all –)."""
-
-    name: str
-    band: tuple[float, float]
-    carbody_share: tuple[float, float]
-    min_wheelset_share: float
-    min_frame_share: float
-    min_lateral_share: float
-
-
-def mode_rules() -> dict[str, ModeRule]:
-    """The core's mode rules by name (``carbody``, ``bogie``)."""
-    return {r[0]: ModeRule(*r) for r in _loco.mode_rules()}
-
-
-def describe_rule(name: str) -> str:
-    """A rule in words: ``"0.3–3 Hz, carbody 30–100 %, wheelsets ≥ 2 %, …"``."""
-    r = mode_rules()[name]
-    pct = _percent
-    return (
-        f"{r.band[0]:g}–{r.band[1]:g} Hz, carbody {pct(r.carbody_share[0])}–"
-        f"{pct(r.carbody_share[1])} %, wheelsets ≥ {pct(r.min_wheelset_share)} %, frames ≥ "
-        f"{pct(r.min_frame_share)} %, lateral/roll/yaw ≥ {pct(r.min_lateral_share)} %"
-    )
-
-
-def _percent(share: float) -> str:
-    """A share (–) as a number of percent."""
-    return f"{100 * share:g}"
 
 
 def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:
