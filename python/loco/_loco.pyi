@@ -376,8 +376,6 @@ __all__ += [
     "damper_hydraulic",
     "damper_hydraulic_defaults",
     "damper_maxwell",
-    "damper_preset",
-    "damper_preset_names",
     "fsd_reference_stroke_amplitude",
     "fsd_trigger_names",
     "fsd_valve_opening_band",
@@ -445,8 +443,6 @@ def damper_hydraulic(
     start_closed: bool,
 ) -> Damper: ...
 def damper_hydraulic_defaults() -> dict[str, float | bool | str | None]: ...
-def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
-def damper_preset_names() -> list[str]: ...
 def damper_bench_sine(
     damper: Damper,
     frequency: float,
@@ -516,9 +512,17 @@ class RunScenario:
     @property
     def output_rate(self) -> float: ...
 
+# --- damper presets (damper_presets.rs) -------------------------------------------------------
+
+__all__ += ["compared_dampers", "damper_preset", "damper_preset_names"]
+
+def damper_preset(name: str, trigger: str | None = None) -> Damper: ...
+def damper_preset_names() -> list[str]: ...
+def compared_dampers() -> list[tuple[str, Damper]]: ...
+
 # --- mode rules (mode_rules.rs) -----------------------------------------------------------------
 
-__all__ += ["mode_rules", "select_mode"]
+__all__ += ["least_damped_mode", "mode_rules", "oscillatory_modes", "select_mode"]
 
 def mode_rules() -> list[
     tuple[str, tuple[float, float], tuple[float, float], float, float, float]
@@ -530,6 +534,14 @@ def select_mode(
     damping_ratios: NDArray[np.float64],
     shares: NDArray[np.float64],
     motions: NDArray[np.float64],
+) -> int | None: ...
+def oscillatory_modes(
+    re: NDArray[np.float64], im: NDArray[np.float64]
+) -> tuple[list[int], list[float], list[float]]: ...
+def least_damped_mode(
+    frequencies: NDArray[np.float64],
+    damping_ratios: NDArray[np.float64],
+    band: tuple[float, float],
 ) -> int | None: ...
 
 # --- input ranges (input_ranges.rs) -------------------------------------------------------------

@@ -9,7 +9,8 @@ lowest point (the standard's benchmark Δr functions are those; :func:`geometry`
 wheelset, as the vehicle model does, which moves flange contact about r·φ ≈ 0.3 mm earlier).
 
 Track set-up keywords (SI units): ``gauge`` (m, measured ``gauge_height`` below the rail top),
-``inclination`` (rad, rail cant toward the track centre; 0 for already canted rail profiles),
+``rail_inclination`` (rad, rail cant toward the track centre; 0 for already canted rail profiles;
+the scenario's name for it too; ``inclination``, its former name, still works and warns),
 ``back_to_back`` (m, between the wheels' inner faces; EN 15302's flange back spacing),
 ``flange_back_offset`` (m, from a wheel's inner face to its taping line) and ``nominal_radius``
 (m, one value or a (left, right) pair). Defaults are the study's: 1435 mm gauge at 16 mm, 1:40,
@@ -19,6 +20,7 @@ back-to-back 1353 mm, 70 mm, 625 mm (:data:`SETUP_DEFAULTS`, from the core).
 from __future__ import annotations
 
 import importlib
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -98,7 +100,7 @@ def _wheelset(
     right_rail: Profile | None,
     gauge: float,
     gauge_height: float,
-    inclination: float,
+    rail_inclination: float,
     back_to_back: float,
     flange_back_offset: float,
     nominal_radius: float | tuple[float, float],
@@ -115,12 +117,31 @@ def _wheelset(
         right_rail if right_rail is not None else rail,
         gauge=float(gauge),
         gauge_height=float(gauge_height),
-        rail_inclination=float(inclination),
+        rail_inclination=float(rail_inclination),
         back_to_back=float(back_to_back),
         flange_back_offset=float(flange_back_offset),
         nominal_radius_left=float(r_left),
         nominal_radius_right=float(r_right),
     )
+
+
+def _rail_inclination(rail_inclination: float, inclination: float | None) -> float:
+    """``rail_inclination``, or the value given by its former name ``inclination`` (with a
+    :class:`DeprecationWarning`); ``inclination`` with a ``rail_inclination`` other than the
+    default is an error naming it."""
+    if inclination is None:
+        return rail_inclination
+    if rail_inclination != SETUP_DEFAULTS["rail_inclination"]:
+        raise _loco.ParameterError(
+            "invalid parameter `inclination`: give `rail_inclination` only (`inclination` is "
+            "its former name)"
+        )
+    warnings.warn(
+        "`inclination` is now `rail_inclination`, as the scenario calls it",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    return inclination
 
 
 def geometry(
@@ -132,10 +153,11 @@ def geometry(
     right_rail: Profile | None = None,
     gauge: float = SETUP_DEFAULTS["gauge"],
     gauge_height: float = SETUP_DEFAULTS["gauge_height"],
-    inclination: float = SETUP_DEFAULTS["rail_inclination"],
+    rail_inclination: float = SETUP_DEFAULTS["rail_inclination"],
     back_to_back: float = SETUP_DEFAULTS["back_to_back"],
     flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
     nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
+    inclination: float | None = None,
 ) -> ContactGeometry:
     """Rigid contact geometry for the lateral displacements ``y`` (m, array-like).
 
@@ -150,7 +172,7 @@ def geometry(
         right_rail,
         gauge,
         gauge_height,
-        inclination,
+        _rail_inclination(rail_inclination, inclination),
         back_to_back,
         flange_back_offset,
         nominal_radius,
@@ -167,10 +189,11 @@ def rolling_radius_difference(
     right_rail: Profile | None = None,
     gauge: float = SETUP_DEFAULTS["gauge"],
     gauge_height: float = SETUP_DEFAULTS["gauge_height"],
-    inclination: float = SETUP_DEFAULTS["rail_inclination"],
+    rail_inclination: float = SETUP_DEFAULTS["rail_inclination"],
     back_to_back: float = SETUP_DEFAULTS["back_to_back"],
     flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
     nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
+    inclination: float | None = None,
 ) -> _FloatArray:
     """Δr = r_left − r_right (m) at each lateral displacement ``y`` (m) of the wheelset translated
     without roll (EN 15302's definition, see the module documentation)."""
@@ -182,7 +205,7 @@ def rolling_radius_difference(
         right_rail,
         gauge,
         gauge_height,
-        inclination,
+        _rail_inclination(rail_inclination, inclination),
         back_to_back,
         flange_back_offset,
         nominal_radius,
@@ -242,10 +265,11 @@ def linear_parameters(
     right_rail: Profile | None = None,
     gauge: float = SETUP_DEFAULTS["gauge"],
     gauge_height: float = SETUP_DEFAULTS["gauge_height"],
-    inclination: float = SETUP_DEFAULTS["rail_inclination"],
+    rail_inclination: float = SETUP_DEFAULTS["rail_inclination"],
     back_to_back: float = SETUP_DEFAULTS["back_to_back"],
     flange_back_offset: float = SETUP_DEFAULTS["flange_back_offset"],
     nominal_radius: float | tuple[float, float] = _NOMINAL_RADIUS,
+    inclination: float | None = None,
 ) -> LinearContactParameters:
     """The linear contact parameters λ, ε, σ and the gravitational stiffness of ``wheel`` on
     ``rail`` (see :class:`LinearContactParameters`); ``axle_load`` (N, e.g. :func:`axle_load`)
@@ -258,7 +282,7 @@ def linear_parameters(
         right_rail,
         gauge,
         gauge_height,
-        inclination,
+        _rail_inclination(rail_inclination, inclination),
         back_to_back,
         flange_back_offset,
         nominal_radius,

@@ -72,11 +72,13 @@ def pair_rows(pairs: tuple[ContactPair, ...] = PAIRS) -> list[dict[str, Any]]:
         note = ""
         try:
             tan_ge = conicity.equivalent_conicity(
-                pair.wheel, pair.rail, AMPLITUDE, inclination=pair.inclination
+                pair.wheel, pair.rail, AMPLITUDE, rail_inclination=pair.inclination
             )
         except LocoError as err:
             tan_ge, note = math.nan, f"no EN 15302 value: {err}"
-        p = contact.linear_parameters(wheel, rail, inclination=pair.inclination, axle_load=load)
+        p = contact.linear_parameters(
+            wheel, rail, rail_inclination=pair.inclination, axle_load=load
+        )
         rows.append(
             {
                 "wheel": pair.wheel,

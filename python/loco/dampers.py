@@ -11,6 +11,7 @@ Presets: :data:`YD1` (200 kN·s/m), :data:`YD2` (800 kN·s/m), both with a serie
 switching delay 0.05 s) with its valve decided by the rms-frequency estimate;
 :data:`FSD_HYDRAULIC` is the same FSD with the hydraulic frequency valve (auxiliary chamber,
 orifice, spring-returned piston) derived for f_p at :data:`REFERENCE_STROKE_AMPLITUDE`.
+:data:`COMPARED` are the dampers the studies compare, ``FSD-H`` among them.
 :data:`TRIGGERS` are the trigger names (``fsd(trigger=...)``, the study file's ``fsd_trigger``).
 """
 
@@ -29,6 +30,7 @@ from loco import _loco
 from loco._loco import Damper, ParameterError
 
 __all__ = [
+    "COMPARED",
     "FSD",
     "FSD_HYDRAULIC",
     "PRESETS",
@@ -66,7 +68,9 @@ TRIGGERS: tuple[str, ...] = tuple(_loco.fsd_trigger_names())
 REFERENCE_STROKE_AMPLITUDE: float = _loco.fsd_reference_stroke_amplitude()
 """Stroke amplitude (m) at which the hydraulic valve's cut-off is f_p: the measured yaw damper
 stroke of the S_low sway (``experiments/fsd_reference_stroke.py``)."""
-_LABELS: dict[str, Damper] = {**PRESETS, "FSD-H": FSD_HYDRAULIC}
+COMPARED: dict[str, Damper] = dict(_loco.compared_dampers())
+"""The yaw dampers the studies compare, by label, in order: the :data:`PRESETS` and ``FSD-H``
+(:data:`FSD_HYDRAULIC`), from the core's one list."""
 
 
 def describe(damper: Damper) -> dict[str, Any]:
@@ -75,12 +79,12 @@ def describe(damper: Damper) -> dict[str, Any]:
 
 
 def label(damper: Damper | None) -> str:
-    """The :data:`PRESETS` name of ``damper`` (same kind and parameters), else its kind; None is
-    the vehicle file's yaw damper."""
+    """The :data:`COMPARED` label of ``damper`` (same kind and parameters), else its kind; None
+    is the vehicle file's yaw damper."""
     if damper is None:
         return "vehicle file's yaw damper"
     wanted = describe(damper)
-    return next((n for n, d in _LABELS.items() if describe(d) == wanted), damper.kind)
+    return next((n for n, d in COMPARED.items() if describe(d) == wanted), damper.kind)
 
 
 _HYDRAULIC_DEFAULTS = _loco.damper_hydraulic_defaults()

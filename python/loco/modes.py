@@ -6,7 +6,9 @@ proportional to ``Σ_k D_b[k]·|(T_b q)_k|²``, with ``T_b`` the map from the co
 body's absolute motion (x, y, z; roll, pitch, yaw at its centre of gravity) and
 ``D_b = diag(m, m, m, Ixx, Iyy, Izz)``, the terms of the model's mass matrix
 ``M = Σ_b T_bᵀ D_b T_b``. Shares are independent of units and of how the coordinates are
-chosen. This module only groups them by kind of body and words them.
+chosen. This module groups them by kind of body and words them, and states the core's rules
+that pick a mode by them (:func:`mode_rules`, used by ``loco.Eigen.carbody_mode`` and
+``bogie_mode``).
 """
 
 from __future__ import annotations
@@ -18,7 +20,15 @@ import numpy.typing as npt
 
 from loco import _loco
 
-__all__ = ["MOTIONS", "Mode", "ModeEnergies", "mode_energies"]
+__all__ = [
+    "MOTIONS",
+    "Mode",
+    "ModeEnergies",
+    "ModeRule",
+    "describe_rule",
+    "mode_energies",
+    "mode_rules",
+]
 
 #: The six motions of a body, in the order of the core's motion maps.
 MOTIONS = tuple(_loco.body_motion_names())
@@ -122,3 +132,38 @@ class Mode:
             parts.append(f"{group} {100 * share:.0f} % ({', '.join(named)})")
         shares = ", ".join(parts)
         return f"{self.frequency:.3f} Hz, ζ = {100 * self.damping_ratio:.2f} %: {shares}"
+
+
+@dataclass(frozen=True)
+class ModeRule:
+    """A rule of the core that picks one mode: frequency band (Hz), the least and largest share
+    of the energy in the carbody, the least shares in the wheelsets, the frames and in lateral,
+    roll and yaw motion (all –)."""
+
+    name: str
+    band: tuple[float, float]
+    carbody_share: tuple[float, float]
+    min_wheelset_share: float
+    min_frame_share: float
+    min_lateral_share: float
+
+
+def mode_rules() -> dict[str, ModeRule]:
+    """The core's mode rules by name (``carbody``, ``bogie``)."""
+    return {r[0]: ModeRule(*r) for r in _loco.mode_rules()}
+
+
+def describe_rule(name: str) -> str:
+    """A rule in words: ``"0.3–3 Hz, carbody 30–100 %, wheelsets ≥ 2 %, …"``."""
+    r = mode_rules()[name]
+    pct = _percent
+    return (
+        f"{r.band[0]:g}–{r.band[1]:g} Hz, carbody {pct(r.carbody_share[0])}–"
+        f"{pct(r.carbody_share[1])} %, wheelsets ≥ {pct(r.min_wheelset_share)} %, frames ≥ "
+        f"{pct(r.min_frame_share)} %, lateral/roll/yaw ≥ {pct(r.min_lateral_share)} %"
+    )
+
+
+def _percent(share: float) -> str:
+    """A share (–) as a number of percent."""
+    return f"{100 * share:g}"

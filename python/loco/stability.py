@@ -17,7 +17,15 @@ import numpy as np
 import numpy.typing as npt
 
 from loco import _loco
-from loco.modes import MOTIONS, Mode, ModeEnergies, mode_energies
+from loco.modes import (
+    MOTIONS,
+    Mode,
+    ModeEnergies,
+    ModeRule,
+    describe_rule,
+    mode_energies,
+    mode_rules,
+)
 from loco.simulation import Scenario
 from loco.vehicle import Locomotive
 
@@ -57,11 +65,16 @@ class Eigen:
         return f"Eigen(speed={self.speed:g} m/s, {len(self.modes)} modes{least})"
 
     def least_damped(self, min_frequency: float = 0.3, max_frequency: float = 20.0) -> Mode:
-        """The least damped mode within a frequency band (hunting and body modes, not drift)."""
-        band = [m for m in self.modes if min_frequency <= m.frequency <= max_frequency]
-        if not band:
+        """The least damped mode within a frequency band (hunting and body modes, not drift), by
+        the core's rule (the one the linear critical speed uses)."""
+        index = _loco.least_damped_mode(
+            np.array([m.frequency for m in self.modes], dtype=np.float64),
+            np.array([m.damping_ratio for m in self.modes], dtype=np.float64),
+            (float(min_frequency), float(max_frequency)),
+        )
+        if index is None:
             raise _loco.ParameterError("invalid parameter `band`: no mode in the frequency band")
-        return band[0]
+        return self.modes[index]
 
     def carbody_mode(self) -> Mode:
         """The carbody-coupled lateral mode (carbody hunting, the low-conicity problem).
@@ -116,41 +129,6 @@ class Eigen:
         return self.modes[index]
 
 
-@dataclass(frozen=True)
-class ModeRule:
-    """A rule of the core that picks one mode: frequency band (Hz), the least and largest share
-    of the energy in the carbody, the least shares in the wheelsets, the frames and in lateral,
-    roll and yaw motion (all –)."""
-
-    name: str
-    band: tuple[float, float]
-    carbody_share: tuple[float, float]
-    min_wheelset_share: float
-    min_frame_share: float
-    min_lateral_share: float
-
-
-def mode_rules() -> dict[str, ModeRule]:
-    """The core's mode rules by name (``carbody``, ``bogie``)."""
-    return {r[0]: ModeRule(*r) for r in _loco.mode_rules()}
-
-
-def describe_rule(name: str) -> str:
-    """A rule in words: ``"0.3–3 Hz, carbody 30–100 %, wheelsets ≥ 2 %, …"``."""
-    r = mode_rules()[name]
-    pct = _percent
-    return (
-        f"{r.band[0]:g}–{r.band[1]:g} Hz, carbody {pct(r.carbody_share[0])}–"
-        f"{pct(r.carbody_share[1])} %, wheelsets ≥ {pct(r.min_wheelset_share)} %, frames ≥ "
-        f"{pct(r.min_frame_share)} %, lateral/roll/yaw ≥ {pct(r.min_lateral_share)} %"
-    )
-
-
-def _percent(share: float) -> str:
-    """A share (–) as a number of percent."""
-    return f"{100 * share:g}"
-
-
 def with_conicity(scenario: Scenario, conicity: float | None) -> Scenario:
     """``scenario`` with its wheel and rail replaced by a conical wheel of equivalent conicity
     ``conicity`` (–) on a knife-edge rail (Δr = 2·conicity·y exactly, no flange); unchanged when
@@ -172,8 +150,12 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
     scenario = with_conicity(scenario, conicity)
     a = _loco.linearise(vehicle.native, scenario.native())
     values, vectors = np.linalg.eig(a)
-    # One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
-    keep = np.flatnonzero(values.imag > 1e-6)
+    # The core's rule: one of each conjugate pair, with its frequency and damping ratio; real
+    # (overdamped) roots are not modes of oscillation.
+    keep, frequencies, damping_ratios = _loco.oscillatory_modes(
+        np.ascontiguousarray(values.real, dtype=np.float64),
+        np.ascontiguousarray(values.imag, dtype=np.float64),
+    )
     energies = mode_energies(vectors[:, keep].T, vehicle.native)
     kinds = dict(zip(energies.names, energies.kinds, strict=True))
     modes = []
@@ -181,8 +163,8 @@ def eigen(vehicle: Locomotive, scenario: Scenario, *, conicity: float | None = N
         lam = values[k]
         modes.append(
             Mode(
-                frequency=float(abs(lam.imag) / (2 * np.pi)),
-                damping_ratio=float(-lam.real / abs(lam)),
+                frequency=frequencies[i],
+                damping_ratio=damping_ratios[i],
                 eigenvalue=complex(lam),
                 bodies=energies.bodies(i),
                 motions=energies.body_motions(i),
@@ -315,8 +297,8 @@ def ramp_down(
     wheels and finds the largest limit cycle, the one that survives down to the lowest speed.
 
     The detection follows the dying cycle's collapse, so the result is low by roughly
-    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 35.6 m/s: 35.2,
-    34.1 and 33.8 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
+    ``deceleration`` times a few seconds (S_high with YD1, linear critical speed 34.2 m/s: 33.5,
+    32.8 and 32.0 m/s at 0.25, 0.5 and 1 m/s² from 1.3 times that); halve ``deceleration`` to
     check it. Start well above the linear critical speed. Ctrl-C stops the run."""
     speed, outcome, speeds, amplitudes = _loco.ramp_down(
         vehicle.native,

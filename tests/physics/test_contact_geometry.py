@@ -36,7 +36,7 @@ def test_cone_on_knife_edges_matches_the_analytical_rolling_radius_difference() 
     setup = {
         "gauge": 2 * (b - to_gauge),
         "gauge_height": depth,
-        "inclination": 0.0,
+        "rail_inclination": 0.0,
         "back_to_back": 1.36,
         "nominal_radius": r0,
     }
@@ -60,7 +60,7 @@ def s1002_uic60(shared_data: Path) -> tuple[profiles.Profile, profiles.Profile]:
 BENCHMARK_SETUP = {
     "gauge": 1.435,
     "gauge_height": 0.014,
-    "inclination": 0.0,
+    "rail_inclination": 0.0,
     "back_to_back": 1.360,
     "nominal_radius": 0.46,
 }
@@ -144,3 +144,16 @@ def test_cone_on_knife_edge_rolls_as_wickens_says() -> None:
         wheel, rail = _loco.conical_profiles(lam)
         g = loco.contact.geometry(wheel, rail, np.linspace(-0.015, 0.015, 31))
         assert np.isfinite(g.roll).all(), lam
+
+
+def test_rail_inclination_is_the_scenarios_name_and_the_former_name_warns() -> None:
+    wheel, rail = profiles.builtin("jm3-worn"), profiles.builtin("cn60")
+    ys = np.array([-0.003, 0.0, 0.004])
+    flat = contact.rolling_radius_difference(wheel, rail, ys, rail_inclination=0.0)
+    with pytest.warns(DeprecationWarning, match="rail_inclination"):
+        old = contact.rolling_radius_difference(wheel, rail, ys, inclination=0.0)
+    np.testing.assert_array_equal(old, flat)
+    # The default is the study's 1:40, which moves the contact: a different Δr.
+    assert not np.array_equal(contact.rolling_radius_difference(wheel, rail, ys), flat)
+    with pytest.raises(loco.ParameterError, match="inclination"):
+        contact.geometry(wheel, rail, ys, rail_inclination=0.01, inclination=0.0)

@@ -82,3 +82,29 @@ def test_select_mode_refuses_unknown_rules_and_mismatched_shapes() -> None:
     assert Eigen(speed=1.0, modes=[]).__class__ is Eigen
     with pytest.raises(loco.ParameterError, match="no modes"):
         Eigen(speed=1.0, modes=[]).bogie_mode()
+
+
+def test_least_damped_is_the_cores_rule_the_first_of_the_lowest_damping_in_the_band() -> None:
+    f = np.array([0.2, 1.0, 3.0, 3.0, 20.0, 25.0])
+    z = np.array([-0.5, 0.10, 0.02, 0.02, 0.05, -0.2])
+    # Outside 0.3–20 Hz the growing modes do not count; of two equals the first is taken.
+    assert _loco.least_damped_mode(f, z, (0.3, 20.0)) == 2
+    # The band's edges are inside it.
+    assert _loco.least_damped_mode(f, z, (20.0, 25.0)) == 5
+    assert _loco.least_damped_mode(f, z, (4.0, 19.0)) is None
+    with pytest.raises(loco.LocoError, match="frequencies and"):
+        _loco.least_damped_mode(f, z[:2], (0.3, 20.0))
+    eigen = _eigen("S_high", "YD1")
+    by_hand = min(
+        (m for m in eigen.modes if 0.3 <= m.frequency <= 20.0), key=lambda m: m.damping_ratio
+    )
+    assert eigen.least_damped() is by_hand
+
+
+def test_oscillatory_modes_are_one_of_each_pair_with_frequency_and_damping_ratio() -> None:
+    values = np.array([-1.0 + 0.0j, -0.3 + 2 * np.pi * 1.5j, -0.3 - 2 * np.pi * 1.5j, 0.1 + 1e-7j])
+    keep, frequencies, damping = _loco.oscillatory_modes(values.real.copy(), values.imag.copy())
+    assert keep == [1]
+    # The bits numpy gives for |Im λ|/2π and −Re λ/|λ|.
+    assert frequencies == [float(abs(values[1].imag) / (2 * np.pi))]
+    assert damping == [float(-values[1].real / abs(values[1]))]

@@ -2,6 +2,7 @@
 nonlinear critical speed of a ramp-down against the linear one."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -131,3 +132,26 @@ def test_linear_critical_speed_falls_as_the_conicity_rises() -> None:
         loco.eigen(vehicle, scenario, conicity=-0.1)
     with pytest.raises(loco.ParameterError, match="conicity"):
         loco.critical_speed(vehicle, scenario, method="nonlinear", conicity=0.2)
+
+
+def test_the_ramp_down_docstring_states_what_the_ramps_give() -> None:
+    # The example of `ramp_down`'s documentation, rerun: three ramps of about a second each.
+    doc = " ".join((loco.stability.ramp_down.__doc__ or "").split())
+    found = re.search(
+        r"S_high with YD1, linear critical speed ([\d.]+) m/s: ([\d.]+), ([\d.]+) and ([\d.]+) "
+        r"m/s at ([\d.]+), ([\d.]+) and ([\d.]+) m/s² from ([\d.]+) times that",
+        doc,
+    )
+    assert found, doc
+    stated = found.groups()
+    vehicle = loco.Locomotive.default()
+    scenario = loco.Scenario(name="S_high", speed=200 / 3.6, yaw_damper="YD1")
+    linear = float(loco.critical_speed(vehicle, scenario, method="linear"))
+    assert f"{linear:.1f}" == stated[0]
+    start = loco.Scenario(name="S_high", speed=float(stated[7]) * linear, yaw_damper="YD1")
+    for speed, deceleration in zip(stated[1:4], stated[4:7], strict=True):
+        ramp = loco.stability.ramp_down(vehicle, start, deceleration=float(deceleration))
+        assert ramp.outcome == "died_out"
+        assert f"{ramp.critical_speed:.1f}" == speed, deceleration
+        # Below the linear critical speed, by the deceleration times a few seconds.
+        assert 0.0 < linear - ramp.critical_speed < 4.0 * float(deceleration)

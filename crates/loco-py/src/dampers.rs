@@ -1,5 +1,6 @@
-//! Bindings of `loco_core::dampers`: the `Damper` class, its constructors and presets (the bench
-//! is `damper_bench.rs`). Python arguments are SI (N·s/m, N/m, kg, Hz, s, m, m², kg/m³, m²/s).
+//! Bindings of `loco_core::dampers`: the `Damper` class and its constructors (the presets are
+//! `damper_presets.rs`, the bench `damper_bench.rs`). Python arguments are SI (N·s/m, N/m, kg,
+//! Hz, s, m, m², kg/m³, m²/s).
 
 use crate::errors::run_detached;
 use loco_core::dampers::{
@@ -7,7 +8,6 @@ use loco_core::dampers::{
     HydraulicFrequencyValve, HydraulicParams, HydraulicValve, HydraulicValveParams, MaxwellDamper,
     MaxwellParams, REFERENCE_STROKE_AMPLITUDE_M,
 };
-use loco_core::vehicle::params::presets;
 use loco_core::LocoError as CoreError;
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -377,21 +377,6 @@ fn damper_hydraulic_defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     .parameters(py)
 }
 
-/// A yaw damper preset by name (`presets::DAMPER_PRESETS`: "YD1", "YD2", "FSD"), the FSD with
-/// its `trigger` (`"rms-frequency"`, the default, or `"hydraulic"`).
-#[pyfunction]
-#[pyo3(signature = (name, trigger=None))]
-fn damper_preset(name: &str, trigger: Option<&str>) -> PyResult<PyDamper> {
-    let inner = presets::damper_preset(name, trigger).map_err(crate::errors::to_py_err)?;
-    Ok(PyDamper { inner })
-}
-
-/// The names of the yaw damper presets, in the order the studies compare them.
-#[pyfunction]
-fn damper_preset_names() -> Vec<&'static str> {
-    presets::DAMPER_PRESETS.to_vec()
-}
-
 /// Adds this file's functions and classes to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyDamper>()?;
@@ -399,8 +384,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damper_fsd, m)?)?;
     m.add_function(wrap_pyfunction!(damper_hydraulic, m)?)?;
     m.add_function(wrap_pyfunction!(damper_hydraulic_defaults, m)?)?;
-    m.add_function(wrap_pyfunction!(damper_preset, m)?)?;
-    m.add_function(wrap_pyfunction!(damper_preset_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_trigger_names, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_reference_stroke_amplitude, m)?)?;
     m.add_function(wrap_pyfunction!(fsd_valve_opening_band, m)?)?;

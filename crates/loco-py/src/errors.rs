@@ -134,11 +134,7 @@ fn map_outcome<T>(outcome: Outcome<T>) -> PyResult<T> {
     match outcome {
         Ok(result) => result.map_err(to_py_err),
         Err(panic) => {
-            let what = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".to_string());
+            let what = loco_core::util::panic_message::panic_message(panic.as_ref());
             Err(InternalError::new_err(format!(
                 "internal error (Rust panic): {what}"
             )))

@@ -9,6 +9,7 @@ mod conicity;
 mod contact;
 mod creep;
 mod damper_bench;
+mod damper_presets;
 mod dampers;
 mod errors;
 mod frequency_response;
@@ -37,6 +38,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     metrics::register(m)?;
     names::register(m)?;
     dampers::register(m)?;
+    damper_presets::register(m)?;
     damper_bench::register(m)?;
     scenario::register(m)?;
     vehicle_handle::register(m)?;

@@ -1,8 +1,10 @@
 //! Bindings of `loco_core::vehicle::analysis::mode_rules`: the carbody and bogie mode rules and the pick
-//! among a linearised vehicle's modes (`loco.Eigen.carbody_mode`, `bogie_mode`).
+//! among a linearised vehicle's modes (`loco.Eigen.carbody_mode`, `bogie_mode`), and the rule of
+//! the least damped mode (`loco.eigen`, `Eigen.least_damped`).
 
 use crate::errors::to_py_err;
 use loco_core::error::LocoError;
+use loco_core::vehicle::analysis::linearise::{least_damped_index, LeastDamped};
 use loco_core::vehicle::analysis::mode_rules::{mode_rule, RatedMode, MODE_RULES};
 use loco_core::vehicle::analysis::modes::{ModeEnergy, MOTIONS};
 use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
@@ -80,9 +82,63 @@ fn select_mode(
     Ok(rule.pick(&modes, &kinds))
 }
 
+/// The oscillatory modes among eigenvalues of real parts `re` and imaginary parts `im` (1/s),
+/// by the core's rule (one of each conjugate pair): their indices, frequencies (Hz) and damping
+/// ratios (–).
+#[pyfunction]
+fn oscillatory_modes(
+    re: PyReadonlyArray1<'_, f64>,
+    im: PyReadonlyArray1<'_, f64>,
+) -> PyResult<(Vec<usize>, Vec<f64>, Vec<f64>)> {
+    let (re, im) = (re.as_array(), im.as_array());
+    if re.len() != im.len() {
+        return Err(to_py_err(LocoError::input(
+            "eigenvalues",
+            format!("{} real and {} imaginary parts", re.len(), im.len()),
+        )));
+    }
+    let mut out = (Vec::new(), Vec::new(), Vec::new());
+    for (i, (&r, &m)) in re.iter().zip(im.iter()).enumerate() {
+        if let Some(mode) = LeastDamped::of(r, m) {
+            out.0.push(i);
+            out.1.push(mode.frequency);
+            out.2.push(mode.damping_ratio);
+        }
+    }
+    Ok(out)
+}
+
+/// The index of the least damped mode with a frequency in `band` (Hz) among modes of the given
+/// frequencies (Hz) and damping ratios (–), by the core's rule; None when the band has none.
+#[pyfunction]
+fn least_damped_mode(
+    frequencies: PyReadonlyArray1<'_, f64>,
+    damping_ratios: PyReadonlyArray1<'_, f64>,
+    band: (f64, f64),
+) -> PyResult<Option<usize>> {
+    let (f, z) = (frequencies.as_array(), damping_ratios.as_array());
+    if f.len() != z.len() {
+        return Err(to_py_err(LocoError::input(
+            "modes",
+            format!("{} frequencies and {} damping ratios", f.len(), z.len()),
+        )));
+    }
+    let modes: Vec<LeastDamped> = f
+        .iter()
+        .zip(z.iter())
+        .map(|(&frequency, &damping_ratio)| LeastDamped {
+            frequency,
+            damping_ratio,
+        })
+        .collect();
+    Ok(least_damped_index(&modes, band))
+}
+
 /// Adds this file's functions to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mode_rules, m)?)?;
     m.add_function(wrap_pyfunction!(select_mode, m)?)?;
+    m.add_function(wrap_pyfunction!(oscillatory_modes, m)?)?;
+    m.add_function(wrap_pyfunction!(least_damped_mode, m)?)?;
     Ok(())
 }

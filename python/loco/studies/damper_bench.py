@@ -38,7 +38,7 @@ AMPLITUDE = 3e-3
 CYCLES = 10
 LOOP_CYCLES = 2
 #: The dampers benched: the spec's presets and the FSD with the hydraulic valve.
-BENCHED: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HYDRAULIC}
+BENCHED: dict[str, dampers.Damper] = dampers.COMPARED
 LOOP_COLUMNS = (
     "damper",
     "frequency_hz",

@@ -46,7 +46,7 @@ __all__ = [
 ]
 
 #: The yaw dampers compared (SPEC §4), and the FSD with the hydraulic frequency valve (FSD-H).
-DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HYDRAULIC}
+DAMPERS: dict[str, dampers.Damper] = dampers.COMPARED
 #: (scenario, quantity label, channel): A_yc judges S_low, A_yb judges S_high.
 CASES: tuple[tuple[str, str, str], ...] = (("S_low", *A_YC), ("S_high", *A_YB))
 SCENARIO_QUANTITY: dict[str, str] = {s: q for s, q, _ in CASES}

@@ -118,7 +118,7 @@ def _pair_case(pair: ContactPair) -> _Case:
     from loco import contact
 
     wheel, rail = builtin(pair.wheel), builtin(pair.rail)
-    lam = contact.linear_parameters(wheel, rail, inclination=pair.inclination).conicity
+    lam = contact.linear_parameters(wheel, rail, rail_inclination=pair.inclination).conicity
     settings = (("wheel", pair.wheel), ("rail", pair.rail), ("rail_inclination", pair.inclination))
     return _Case("pair", pair.label, lam, settings)
 

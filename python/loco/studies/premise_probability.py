@@ -70,7 +70,7 @@ S_LOW_PAIRS: tuple[ContactPair, ...] = (
 #: The high-conicity pair: the study's S_high.
 S_HIGH_PAIR = ContactPair("jm3-worn", "cn60", 40)
 #: The yaw dampers, by name.
-DAMPERS: dict[str, dampers.Damper] = {**dampers.PRESETS, "FSD-H": dampers.FSD_HYDRAULIC}
+DAMPERS: dict[str, dampers.Damper] = dampers.COMPARED
 #: The metric that judges each scenario in the premise rule.
 JUDGE = {"S_low": Metric.AYC_PSD_PEAK, "S_high": Metric.AYB_PEAK_LP}
 #: Factor of the premise rule.

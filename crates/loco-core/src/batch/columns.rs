@@ -12,6 +12,7 @@ use crate::vehicle::params::parameters::{resolve_name, ParameterSet};
 use crate::vehicle::scenarios::run_limits::MIN_SPEED;
 use crate::vehicle::scenarios::scenario::MAX_SPEED;
 use rayon::prelude::*;
+use std::sync::Arc;
 
 /// Name of the column that sets the running speed of each sample, m/s.
 pub const SPEED_COLUMN: &str = "speed";
@@ -132,24 +133,22 @@ pub fn row_speed(columns: &[Column], row: &[f64], default: f64) -> f64 {
 }
 
 /// Checks every row for physical values by building its vehicle (in parallel, on the current
-/// rayon pool). The first bad row (lowest index) is reported with the column that caused it.
+/// rayon pool) and returns the vehicles, one per row, for the runs. The first bad row (lowest
+/// index) is reported with the column that caused it.
 pub fn check_rows(
     base: &ParameterSet,
     names: &[String],
     columns: &[Column],
     values: &[f64],
-) -> Result<()> {
+) -> Result<Vec<Arc<VehicleStructure>>> {
     let k = columns.len();
-    let first_error = values
+    let built: Vec<Result<Arc<VehicleStructure>>> = values
         .par_chunks(k)
         .enumerate()
-        .map(|(i, row)| check_row(base, names, columns, i, row).err())
-        .find_first(Option::is_some)
-        .flatten();
-    match first_error {
-        Some(e) => Err(e),
-        None => Ok(()),
-    }
+        .map(|(i, row)| check_row(base, names, columns, i, row))
+        .collect();
+    // In row order, so the error is the lowest row's whatever the thread count.
+    built.into_iter().collect()
 }
 
 /// Checks the speed column of every row (the first bad row is reported): all a batch whose
@@ -182,7 +181,7 @@ fn check_row(
     columns: &[Column],
     i: usize,
     row: &[f64],
-) -> Result<()> {
+) -> Result<Arc<VehicleStructure>> {
     check_row_speed(names, columns, i, row)?;
     let name_error = |e: LocoError| -> LocoError {
         let (name, reason) = match &e {
@@ -218,8 +217,7 @@ fn check_row(
     };
     let set = row_parameters(base, columns, row).map_err(name_error)?;
     // Building the vehicle checks every value it uses (positive masses, stiffnesses, dampings).
-    VehicleStructure::new(set).map_err(name_error)?;
-    Ok(())
+    Ok(Arc::new(VehicleStructure::new(set).map_err(name_error)?))
 }
 
 #[cfg(test)]

@@ -7,9 +7,7 @@
 //! from ChaCha stream `i` of the seed. Results are collected in row order, so a batch gives the
 //! same numbers bit for bit on any thread count and in any scheduling order.
 
-use super::columns::{
-    check_matrix, check_rows, check_speeds, resolve_columns, row_parameters, row_speed, Column,
-};
+use super::columns::{check_matrix, check_rows, check_speeds, resolve_columns, row_speed, Column};
 use super::status::SampleStatus;
 use crate::error::{LocoError, Result};
 use crate::metrics::RunMetrics;
@@ -18,7 +16,7 @@ use crate::vehicle::model::structure::VehicleStructure;
 use crate::vehicle::output::run::{Recorded, RunOutput};
 use crate::vehicle::params::parameters::ParameterSet;
 use crate::vehicle::rail_contact::wheel_rail::WheelRail;
-use crate::vehicle::runs::simulate::simulate_prepared;
+use crate::vehicle::runs::simulate::run_prepared;
 use crate::vehicle::scenarios::scenario::{build_track, Scenario, TrackSpec};
 use crate::vehicle::scenarios::scenario_contact::shared_wheel_rail;
 use crate::vehicle::system::run_statistics::RunStatistics;
@@ -111,11 +109,6 @@ impl BatchOutput {
 /// What every sample shares, built once.
 struct Shared {
     columns: Vec<Column>,
-    /// The base vehicle, built once: the structure of every sample when no column sets a
-    /// vehicle parameter (a speed-only batch builds no vehicle per sample).
-    base: Arc<VehicleStructure>,
-    /// True when some column sets a vehicle parameter: each sample builds its own structure.
-    per_sample_vehicle: bool,
     /// Contact of the base vehicle, or None when a column changes the contact.
     wheel_rail: Option<Arc<WheelRail>>,
     /// The shared track, or None when every sample gets its own.
@@ -155,20 +148,23 @@ pub fn run_batch(spec: &BatchSpec, threads: usize, monitor: &BatchMonitor) -> Re
     pool.install(|| {
         // The base vehicle first, so that a non-physical base is reported as itself, not as row 0.
         let base = Arc::new(VehicleStructure::new(spec.base.clone())?);
-        if columns.iter().any(Column::is_vehicle) {
-            check_rows(&spec.base, &spec.names, &columns, &spec.values)?;
+        // Each row's vehicle, built once: by the check of its values, then run.
+        let vehicles: Vec<Arc<VehicleStructure>> = if columns.iter().any(Column::is_vehicle) {
+            check_rows(&spec.base, &spec.names, &columns, &spec.values)?
         } else {
             // No row changes the vehicle: only the speeds need checking, the base is built.
             check_speeds(&spec.names, &columns, &spec.values)?;
-        }
+            vec![Arc::clone(&base); n]
+        };
         let shared = prepare(spec, columns, base)?;
         let k = spec.names.len();
         let results: Vec<SampleResult> = spec
             .values
             .par_chunks(k)
+            .zip(vehicles)
             .enumerate()
-            .map(|(i, row)| {
-                let result = run_sample_caught(spec, &shared, i, row, monitor);
+            .map(|(i, (row, vehicle))| {
+                let result = run_sample_caught(spec, &shared, i, row, vehicle, monitor);
                 if result.status != SampleStatus::Ok {
                     monitor.failed.fetch_add(1, Ordering::Relaxed);
                 }
@@ -194,9 +190,7 @@ fn prepare(spec: &BatchSpec, columns: Vec<Column>, base: Arc<VehicleStructure>) 
         _ => Some(Arc::new(build_track(&spec.scenario, &base)?)),
     };
     Ok(Shared {
-        per_sample_vehicle: columns.iter().any(Column::is_vehicle),
         columns,
-        base,
         wheel_rail,
         track,
     })
@@ -215,6 +209,7 @@ fn run_sample_caught(
     shared: &Shared,
     i: usize,
     row: &[f64],
+    structure: Arc<VehicleStructure>,
     monitor: &BatchMonitor,
 ) -> SampleResult {
     if monitor.cancel.load(Ordering::Relaxed) {
@@ -225,7 +220,7 @@ fn run_sample_caught(
     }
     let started = std::time::Instant::now();
     let outcome = catch_unwind(AssertUnwindSafe(|| {
-        run_sample(spec, shared, i, row, monitor)
+        run_sample(spec, shared, i, row, structure, monitor)
     }));
     let wall_time = started.elapsed().as_secs_f64();
     let mut result = match outcome {
@@ -244,11 +239,7 @@ fn run_sample_caught(
             failed
         }
         Err(panic) => {
-            let what = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
+            let what = crate::util::panic_message::panic_message(panic.as_ref());
             failure(
                 SampleStatus::Internal,
                 &format!("internal error (panic): {what}"),
@@ -274,6 +265,7 @@ fn run_sample(
     shared: &Shared,
     i: usize,
     row: &[f64],
+    structure: Arc<VehicleStructure>,
     monitor: &BatchMonitor,
 ) -> Result<(RunMetrics, RunOutput, RunStatistics)> {
     let scenario = Scenario {
@@ -289,12 +281,6 @@ fn run_sample(
         },
         ..spec.scenario.clone()
     };
-    let structure = if shared.per_sample_vehicle {
-        let parameters = row_parameters(&spec.base, &shared.columns, row)?;
-        Arc::new(VehicleStructure::new(parameters)?)
-    } else {
-        Arc::clone(&shared.base)
-    };
     let wheel_rail = match &shared.wheel_rail {
         Some(w) => Arc::clone(w),
         None => shared_wheel_rail(&structure.parameters, &scenario)?,
@@ -309,7 +295,8 @@ fn run_sample(
     } else {
         Recorded::Metrics
     };
-    let result = simulate_prepared(
+    // The scenario was validated once, by `run_batch`.
+    let result = run_prepared(
         structure,
         wheel_rail,
         track,

@@ -76,7 +76,8 @@ pub fn linear_critical_speed_cancellable(
             format!("must exceed low ({low} m/s), got {high} m/s"),
         ));
     }
-    let vehicle = PerfectTrackVehicle::new(vehicle, scenario)?;
+    // Validated above, before the search's own settings.
+    let vehicle = PerfectTrackVehicle::of_valid(vehicle, scenario)?;
     let zeta = |speed: f64| -> Result<f64> {
         check_cancel(cancel)?;
         let mut system = vehicle.system(speed)?;

@@ -190,7 +190,11 @@ pub fn eigenvalues(a: &[f64], n: usize) -> Result<Vec<Complex<f64>>> {
     Ok(schur.complex_eigenvalues().iter().copied().collect())
 }
 
-/// The least damped oscillatory mode of a state matrix in a frequency band.
+/// Imaginary part (1/s) above which an eigenvalue is an oscillatory mode: one of each conjugate
+/// pair; real (overdamped) roots are not modes of oscillation.
+pub const OSCILLATORY_IMAG: f64 = 1e-6;
+
+/// An oscillatory mode of a state matrix: its frequency and damping ratio.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LeastDamped {
     /// Frequency `|Im λ|/2π`, Hz.
@@ -199,19 +203,37 @@ pub struct LeastDamped {
     pub damping_ratio: f64,
 }
 
-/// The least damped oscillatory mode of the row-major n×n state matrix `a` with a frequency in
-/// `band` (Hz), as `loco.eigen(...).least_damped()` picks it; `None` when the band has no mode.
-pub fn least_damped(a: &[f64], n: usize, band: (f64, f64)) -> Result<Option<LeastDamped>> {
-    let modes = eigenvalues(a, n)?
-        .into_iter()
-        // One of each conjugate pair; real (overdamped) roots are not modes of oscillation.
-        .filter(|e| e.im > 1e-6)
-        .map(|e| LeastDamped {
-            frequency: e.im / (2.0 * std::f64::consts::PI),
-            damping_ratio: -e.re / e.re.hypot(e.im),
+impl LeastDamped {
+    /// The mode of the eigenvalue `re + i·im` (1/s), `None` when it is not oscillatory (`im`
+    /// at most [`OSCILLATORY_IMAG`]: real, or the lower of a conjugate pair).
+    pub fn of(re: f64, im: f64) -> Option<Self> {
+        (im > OSCILLATORY_IMAG).then(|| Self {
+            frequency: im / (2.0 * std::f64::consts::PI),
+            damping_ratio: -re / re.hypot(im),
         })
-        .filter(|m| (band.0..=band.1).contains(&m.frequency));
-    Ok(modes.min_by(|a, b| a.damping_ratio.total_cmp(&b.damping_ratio)))
+    }
+}
+
+/// The rule of the least damped mode: the index in `modes` of the one with the lowest damping
+/// ratio among those with a frequency in `band` (Hz; the first of equals), `None` when the band
+/// has none. Python's `Eigen.least_damped` applies this same rule.
+pub fn least_damped_index(modes: &[LeastDamped], band: (f64, f64)) -> Option<usize> {
+    modes
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| (band.0..=band.1).contains(&m.frequency))
+        .min_by(|a, b| a.1.damping_ratio.total_cmp(&b.1.damping_ratio))
+        .map(|(i, _)| i)
+}
+
+/// The least damped oscillatory mode of the row-major n×n state matrix `a` with a frequency in
+/// `band` (Hz), by [`least_damped_index`]; `None` when the band has no mode.
+pub fn least_damped(a: &[f64], n: usize, band: (f64, f64)) -> Result<Option<LeastDamped>> {
+    let modes: Vec<LeastDamped> = eigenvalues(a, n)?
+        .into_iter()
+        .filter_map(|e| LeastDamped::of(e.re, e.im))
+        .collect();
+    Ok(least_damped_index(&modes, band).map(|i| modes[i]))
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 use crate::error::{check_positive, Result};
 use crate::vehicle::model::kinematics::{DenseMap, MotionMap};
 use crate::vehicle::model::layout::*;
-use crate::vehicle::params::parameters::ParameterSet;
+use crate::vehicle::params::sections::{TractionRodSection, VehicleSections};
 
 /// One rigid body.
 #[derive(Debug, Clone)]
@@ -39,17 +39,10 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// Reads the layout from the parameters.
-    pub fn from_parameters(p: &ParameterSet) -> Result<Self> {
-        let half_bogie = check_positive(
-            "layout.bogie_half_distance",
-            p.get("layout.bogie_half_distance")?,
-        )?;
-        let half_base = check_positive("layout.half_wheelbase", p.get("layout.half_wheelbase")?)?;
-        let wheel_radius = check_positive(
-            "track.wheel_rolling_radius",
-            p.get("track.wheel_rolling_radius")?,
-        )?;
+    /// The layout of a vehicle of these sections.
+    pub fn new(sections: &VehicleSections) -> Self {
+        let half_bogie = sections.layout.bogie_half_distance;
+        let half_base = sections.layout.half_wheelbase;
         let bogie_x = [half_bogie, -half_bogie];
         let wheelset_x = [
             half_bogie + half_base,
@@ -57,11 +50,11 @@ impl Layout {
             -half_bogie + half_base,
             -half_bogie - half_base,
         ];
-        Ok(Self {
-            wheel_radius,
+        Self {
+            wheel_radius: sections.track.wheel_rolling_radius,
             bogie_x,
             wheelset_x,
-        })
+        }
     }
 
     /// +1 when the bogie centre of wheelset `w` lies behind it (wheelset at the bogie's front
@@ -80,36 +73,27 @@ pub fn side_y(side: usize, semi_spacing: f64) -> f64 {
     }
 }
 
-fn positive(p: &ParameterSet, key: &str) -> Result<f64> {
-    check_positive(key, p.get(key)?)
-}
-
-fn inertia3(p: &ParameterSet, section: &str, names: [&str; 3]) -> Result<[f64; 3]> {
-    Ok([
-        positive(p, &format!("{section}.{}", names[0]))?,
-        positive(p, &format!("{section}.{}", names[1]))?,
-        positive(p, &format!("{section}.{}", names[2]))?,
-    ])
-}
-
 /// (name, mass, inertia, position, spin momentum per speed) while building.
 type BodyRecord = (String, f64, [f64; 3], [f64; 3], f64);
 
 /// Builds the 25 bodies in body-number order.
-pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
+pub fn build_bodies(p: &VehicleSections, layout: &Layout) -> Result<Vec<Body>> {
     let r0 = layout.wheel_radius;
     let mut dense: Vec<DenseMap> = Vec::with_capacity(N_BODIES);
     let mut bodies: Vec<BodyRecord> = Vec::with_capacity(N_BODIES);
     let names = body_names();
-    let standard = ["roll_inertia", "pitch_inertia", "yaw_inertia"];
 
     // Carbody.
     dense.push(DenseMap::free(CARBODY));
     bodies.push((
         names[BODY_CARBODY].clone(),
-        positive(p, "carbody.mass")?,
-        inertia3(p, "carbody", standard)?,
-        [0.0, 0.0, positive(p, "carbody.cog_height")?],
+        p.carbody.mass,
+        [
+            p.carbody.roll_inertia,
+            p.carbody.pitch_inertia,
+            p.carbody.yaw_inertia,
+        ],
+        [0.0, 0.0, p.carbody.cog_height],
         0.0,
     ));
     // Bogie frames.
@@ -117,27 +101,27 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
         dense.push(DenseMap::free(frame(b)));
         bodies.push((
             names[body_frame(b)].clone(),
-            positive(p, "bogie_frame.mass")?,
-            inertia3(p, "bogie_frame", standard)?,
+            p.bogie_frame.mass,
             [
-                layout.bogie_x[b],
-                0.0,
-                positive(p, "bogie_frame.cog_height")?,
+                p.bogie_frame.roll_inertia,
+                p.bogie_frame.pitch_inertia,
+                p.bogie_frame.yaw_inertia,
             ],
+            [layout.bogie_x[b], 0.0, p.bogie_frame.cog_height],
             0.0,
         ));
     }
     // Wheelsets: the spin coordinate is the rotation beyond steady rolling at V / r0.
-    let wheelset_spin = positive(p, "wheelset.spin_inertia")?;
+    let wheelset_spin = p.wheelset.spin_inertia;
     for w in 0..N_WHEELSETS {
         dense.push(DenseMap::free(wheelset(w)));
         bodies.push((
             names[body_wheelset(w)].clone(),
-            positive(p, "wheelset.mass")?,
+            p.wheelset.mass,
             [
-                positive(p, "wheelset.roll_inertia")?,
+                p.wheelset.roll_inertia,
                 wheelset_spin,
-                positive(p, "wheelset.yaw_inertia")?,
+                p.wheelset.yaw_inertia,
             ],
             [layout.wheelset_x[w], 0.0, r0],
             wheelset_spin / r0,
@@ -146,26 +130,29 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
     // Traction motors: frame-suspended, centre of gravity offset from the axle toward the bogie
     // centre; the rotor turns at gear_ratio times the wheel speed in the opposite sense (one
     // gear stage), which sets the sign of its gyroscopic moment.
-    let motor_offset = positive(p, "traction_motor.cog_longitudinal_offset")?;
-    let rotor = positive(p, "traction_motor.rotor_spin_inertia")?
-        * positive(p, "traction_motor.gear_ratio")?;
+    let motor_offset = p.traction_motor.cog_longitudinal_offset;
+    let rotor = p.traction_motor.rotor_spin_inertia * p.traction_motor.gear_ratio;
     for w in 0..N_WHEELSETS {
         dense.push(DenseMap::free(motor(w)));
         bodies.push((
             names[body_motor(w)].clone(),
-            positive(p, "traction_motor.mass")?,
-            inertia3(p, "traction_motor", standard)?,
+            p.traction_motor.mass,
+            [
+                p.traction_motor.roll_inertia,
+                p.traction_motor.pitch_inertia,
+                p.traction_motor.yaw_inertia,
+            ],
             [
                 layout.wheelset_x[w] - layout.outward_sign(w) * motor_offset,
                 0.0,
-                positive(p, "traction_motor.cog_height")?,
+                p.traction_motor.cog_height,
             ],
             -rotor / r0,
         ));
     }
     // Hollow shafts: concentric with the axle; x, z and spin follow the wheelset, lateral, roll
     // and yaw are their own (relative) coordinates.
-    let hollow_spin = positive(p, "hollow_shaft.spin_inertia")?;
+    let hollow_spin = p.hollow_shaft.spin_inertia;
     for w in 0..N_WHEELSETS {
         let parent = dense[body_wheelset(w)].clone();
         let i = hollow_shaft(w);
@@ -178,11 +165,11 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
         ));
         bodies.push((
             names[body_hollow_shaft(w)].clone(),
-            positive(p, "hollow_shaft.mass")?,
+            p.hollow_shaft.mass,
             [
-                positive(p, "hollow_shaft.roll_inertia")?,
+                p.hollow_shaft.roll_inertia,
                 hollow_spin,
-                positive(p, "hollow_shaft.yaw_inertia")?,
+                p.hollow_shaft.yaw_inertia,
             ],
             [layout.wheelset_x[w], 0.0, r0],
             hollow_spin / r0,
@@ -190,7 +177,7 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
     }
     // Traction rods: pivot on a carbody bracket, pitch and yaw relative to the carbody; the rod
     // runs from the pivot toward the vehicle end to its bushing on the frame.
-    let rod = RodGeometry::from_parameters(p)?;
+    let rod = RodGeometry::new(&p.traction_rod)?;
     let carbody_cg = bodies[BODY_CARBODY].3;
     for b in 0..N_BOGIES {
         let pivot = rod.carbody_end(layout, b);
@@ -214,9 +201,9 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
             [true, true, true],
             &[(PITCH, i), (YAW, i + 1)],
         ));
-        let pitch = positive(p, "traction_rod.pitch_inertia")?;
-        let yaw = positive(p, "traction_rod.yaw_inertia")?;
-        let mass = positive(p, "traction_rod.mass")?;
+        let pitch = p.traction_rod.pitch_inertia;
+        let yaw = p.traction_rod.yaw_inertia;
+        let mass = p.traction_rod.mass;
         // The file gives inertias about the pivot; move them to the centre of gravity.
         let arm2 = half[0] * half[0] + half[2] * half[2];
         bodies.push((
@@ -233,8 +220,8 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
     }
     // Rotary arms with their axle boxes: ride on the axle at the axle box (roll and yaw follow
     // the wheelset, the axle box does not spin) and turn about the axle by their own coordinate.
-    let box_semi = positive(p, "primary.spring_lateral_semi_spacing")?;
-    let arm_pitch = positive(p, "rotary_arm.pitch_inertia")?;
+    let box_semi = p.primary.spring_lateral_semi_spacing;
+    let arm_pitch = p.rotary_arm.pitch_inertia;
     for w in 0..N_WHEELSETS {
         for side in 0..2 {
             let parent = dense[body_wheelset(w)].clone();
@@ -248,7 +235,7 @@ pub fn build_bodies(p: &ParameterSet, layout: &Layout) -> Result<Vec<Body>> {
             ));
             bodies.push((
                 names[body_rotary_arm(w, side)].clone(),
-                positive(p, "rotary_arm.mass")?,
+                p.rotary_arm.mass,
                 // Roll about the axle-box axis is small; yaw equals pitch for a slender arm in
                 // the x-z plane turning about a transverse axis (engineering estimate).
                 [0.1 * arm_pitch, arm_pitch, arm_pitch],
@@ -283,13 +270,13 @@ pub struct RodGeometry {
 }
 
 impl RodGeometry {
-    /// Reads the rod geometry; the two ends must not coincide.
-    pub fn from_parameters(p: &ParameterSet) -> Result<Self> {
+    /// The rod geometry of a section; the two ends must not coincide.
+    pub fn new(rod: &TractionRodSection) -> Result<Self> {
         let g = Self {
-            carbody_end_offset: p.get("traction_rod.carbody_end_longitudinal_offset")?,
-            frame_end_offset: p.get("traction_rod.frame_end_longitudinal_offset")?,
-            carbody_end_height: positive(p, "traction_rod.carbody_end_height")?,
-            frame_end_height: positive(p, "traction_rod.frame_end_height")?,
+            carbody_end_offset: rod.carbody_end_longitudinal_offset,
+            frame_end_offset: rod.frame_end_longitudinal_offset,
+            carbody_end_height: rod.carbody_end_height,
+            frame_end_height: rod.frame_end_height,
         };
         let length = (g.frame_end_offset - g.carbody_end_offset)
             .hypot(g.frame_end_height - g.carbody_end_height);

@@ -50,7 +50,7 @@ pub fn computed_bogie_masses(structure: &VehicleStructure) -> [f64; N_BOGIES] {
 /// limit no positive value (not in 0 < m⁺ < 60 t, possible with `allow_out_of_range`) is
 /// refused naming the key.
 pub fn en14363_bogie_mass(structure: &VehicleStructure) -> Result<f64> {
-    match structure.parameters.get_optional(BOGIE_MASS_KEY) {
+    match structure.sections.assessment.bogie_mass {
         Some(m) if !(m > 0.0 && m < 60_000.0) => Err(LocoError::param(
             BOGIE_MASS_KEY,
             format!("{m} kg leaves the EN 14363 limit (12 − m⁺/5)/2 no positive value (needs 0 < m⁺ < 60 t)"),

@@ -2,7 +2,7 @@
 //! the forces that do not involve the wheel-rail contact or the dampers' internal states (gravity,
 //! gyroscopic moments, springs, bushings, bump stops).
 
-use crate::error::{check_positive, Result};
+use crate::error::Result;
 use crate::vehicle::model::bodies::{build_bodies, Body, Layout};
 use crate::vehicle::model::bushing_lanes::BushingLanes;
 use crate::vehicle::model::damper_lanes::DamperLanes;
@@ -12,6 +12,7 @@ use crate::vehicle::model::layout::{N_BODIES, N_DOF};
 use crate::vehicle::model::mass::MassMatrix;
 use crate::vehicle::model::suspension::{build_suspension, Suspension};
 use crate::vehicle::params::parameters::ParameterSet;
+use crate::vehicle::params::sections::VehicleSections;
 use std::sync::Arc;
 
 /// Everything about the vehicle that does not change during a run.
@@ -19,6 +20,8 @@ use std::sync::Arc;
 pub struct VehicleStructure {
     /// The parameters it was built from.
     pub parameters: ParameterSet,
+    /// The same parameters as typed sections, checked (what the builders read).
+    pub sections: VehicleSections,
     pub layout: Layout,
     pub bodies: Vec<Body>,
     pub mass: MassMatrix,
@@ -54,8 +57,9 @@ impl IntoVehicle for Arc<VehicleStructure> {
 impl VehicleStructure {
     /// Builds and checks the structure; a non-physical parameter is refused by name.
     pub fn new(parameters: ParameterSet) -> Result<Self> {
-        let layout = Layout::from_parameters(&parameters)?;
-        let bodies = build_bodies(&parameters, &layout)?;
+        let sections = VehicleSections::read(&parameters)?;
+        let layout = Layout::new(&sections);
+        let bodies = build_bodies(&sections, &layout)?;
         let mass = MassMatrix::assemble(
             &bodies
                 .iter()
@@ -63,12 +67,13 @@ impl VehicleStructure {
                 .collect::<Vec<_>>(),
         )
         .map_err(|e| crate::vehicle::params::suspects::with_suspects(e, &parameters))?;
-        let suspension = build_suspension(&parameters, &layout, &bodies)?;
-        let gravity = check_positive("track.gravity", parameters.get("track.gravity")?)?;
+        let suspension = build_suspension(&sections, &layout, &bodies)?;
+        let gravity = sections.track.gravity;
         let bushing_lanes = BushingLanes::new(&suspension.bushings);
         let damper_lanes = DamperLanes::new(&suspension.dampers);
         Ok(Self {
             parameters,
+            sections,
             layout,
             bodies,
             mass,

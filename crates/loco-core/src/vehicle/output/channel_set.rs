@@ -173,10 +173,10 @@ pub struct ChannelSet {
 impl ChannelSet {
     /// The channels of a vehicle of structure `s`.
     pub fn new(s: &VehicleStructure) -> Result<Self> {
-        let p = &s.parameters;
-        let floor = p.get("carbody.floor_height")? - s.bodies[BODY_CARBODY].position[2];
-        let side = p.get("carbody.sperling_point_lateral_offset")?;
-        let along = p.get("carbody.sperling_point_longitudinal_offset")?;
+        let carbody = &s.sections.carbody;
+        let floor = carbody.floor_height - s.bodies[BODY_CARBODY].position[2];
+        let side = carbody.sperling_point_lateral_offset;
+        let along = carbody.sperling_point_longitudinal_offset;
         let mut channels = Vec::new();
         // The measuring points: (name's body part, axis letter, place tag, body, point, component),
         // the carbody floor's lateral and vertical at the two Sperling points, the frames'

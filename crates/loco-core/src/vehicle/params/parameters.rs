@@ -12,7 +12,8 @@
 //! unit accepts (`vehicle/params/units.rs`) and are converted to SI on reading. A research value outside
 //! the range is allowed only explicitly: `allow_out_of_range = ["carbody.mass", ...]` at the top of
 //! the file lifts the range (not finiteness, not whole counts) for those keys, in the file and in
-//! every override applied to the set. Derived values (the steel's shear modulus) are computed.
+//! every override applied to the set. Derived values (the steel's shear modulus) are computed
+//! (`TrackSection::shear_modulus` in [`crate::vehicle::params::sections`]).
 
 use crate::error::{FileKind, LocoError, Result};
 use crate::vehicle::params::parameter_schema::{schema, spec, unknown_key_reason};
@@ -267,13 +268,6 @@ impl ParameterSet {
     /// The keys allowed outside their range, sorted.
     pub fn allowed_out_of_range(&self) -> impl Iterator<Item = &str> {
         self.allow_out_of_range.iter().map(String::as_str)
-    }
-
-    /// Shear modulus of wheel and rail steel, Pa: derived, G = E / (2 (1 + ν)).
-    pub fn shear_modulus(&self) -> Result<f64> {
-        let e = self.get("track.young_modulus")?;
-        let nu = self.get("track.poisson_ratio")?;
-        Ok(e / (2.0 * (1.0 + nu)))
     }
 
     /// All keys in sorted order.

@@ -23,6 +23,28 @@ pub const STUDY_RAIL: &str = "cn60";
 /// frequency-selective damper FSD.
 pub const DAMPER_PRESETS: [&str; 3] = ["YD1", "YD2", "FSD"];
 
+/// The yaw dampers the studies compare, in their order, by label: the [`DAMPER_PRESETS`] and
+/// `FSD-H`, the FSD with the hydraulic frequency valve. Each is (label, preset, FSD trigger).
+pub const COMPARED_DAMPERS: [(&str, &str, Option<&str>); 4] = [
+    ("YD1", "YD1", None),
+    ("YD2", "YD2", None),
+    ("FSD", "FSD", None),
+    ("FSD-H", "FSD", Some(FsdTrigger::HYDRAULIC)),
+];
+
+/// The dampers of [`COMPARED_DAMPERS`] by label, in order.
+pub fn compared_dampers() -> Vec<(&'static str, Damper)> {
+    COMPARED_DAMPERS
+        .iter()
+        .map(|&(label, preset, trigger)| {
+            // Every entry is a preset with a trigger it takes (tested), so this cannot fail.
+            let damper = damper_preset(preset, trigger)
+                .unwrap_or_else(|e| panic!("compared damper {label}: {e}"));
+            (label, damper)
+        })
+        .collect()
+}
+
 /// The yaw damper setting that keeps the parameter file's Maxwell yaw damper (the default).
 pub const FILE_DAMPER: &str = "file";
 
@@ -136,6 +158,17 @@ mod tests {
             field_of(yaw_damper_preset("file", Some("hydraulic")).unwrap_err()),
             "fsd_trigger"
         );
+    }
+
+    #[test]
+    fn the_compared_dampers_are_the_presets_and_the_hydraulic_fsd() {
+        let compared = compared_dampers();
+        let labels: Vec<&str> = compared.iter().map(|(l, _)| *l).collect();
+        assert_eq!(labels, ["YD1", "YD2", "FSD", "FSD-H"]);
+        for (i, name) in DAMPER_PRESETS.iter().enumerate() {
+            assert_eq!(compared[i], (*name, damper_preset(name, None).unwrap()));
+        }
+        assert_eq!(compared[3].1, Damper::fsd_hydraulic());
     }
 
     #[test]

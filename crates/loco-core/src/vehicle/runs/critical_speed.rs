@@ -22,8 +22,9 @@
 //! critical speed is the speed at that window's start. Once the cycle is gone the motion decays at
 //! the hunting mode's linear damping (slowly at first: the ramp passes the fold of the cycle), so
 //! the detection comes later than the fold and the result is low by about `deceleration` times
-//! the collapse time. S_high with YD1 (linear critical speed 39.2 m/s), from 1.3 times that:
-//! 39.0, 38.0 and 36.5 m/s at 0.25, 0.5 and 1 m/s²; halve the deceleration to check.
+//! the collapse time, 2–3 s: the measured results of S_high with YD1 at three decelerations
+//! are in the documentation of Python's `loco.stability.ramp_down`, where a test reruns them;
+//! halve the deceleration to check.
 //!
 //! Theory: on worn (high-conicity) wheels the hunting bifurcation is subcritical, so a limit
 //! cycle survives below the linear critical speed down to a fold; the ramp-down follows it to the

@@ -35,8 +35,21 @@ pub fn simulate_prepared(
     recorded: Recorded,
     cancel: Option<&AtomicBool>,
 ) -> Result<SimulationResult> {
-    let started = std::time::Instant::now();
     scenario.validate()?;
+    run_prepared(structure, wheel_rail, track, scenario, recorded, cancel)
+}
+
+/// [`simulate_prepared`] of a scenario its caller has validated (a batch checks its scenario
+/// once, not once per sample).
+pub(crate) fn run_prepared(
+    structure: Arc<VehicleStructure>,
+    wheel_rail: Arc<WheelRail>,
+    track: Arc<TrackIrregularity>,
+    scenario: &Scenario,
+    recorded: Recorded,
+    cancel: Option<&AtomicBool>,
+) -> Result<SimulationResult> {
+    let started = std::time::Instant::now();
     TrackLimits::of(&wheel_rail).check(&track)?;
     let start = start_distance(&structure);
     let bogie_mass = crate::vehicle::model::bogie_mass::en14363_bogie_mass(&structure)?;
@@ -133,7 +146,7 @@ pub fn simulate_cancellable(
     let structure = vehicle.into_vehicle()?;
     let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
     let track = Arc::new(build_track(scenario, &structure)?);
-    simulate_prepared(
+    run_prepared(
         structure,
         wheel_rail,
         track,

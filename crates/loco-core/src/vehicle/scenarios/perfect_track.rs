@@ -26,6 +26,11 @@ impl PerfectTrackVehicle {
     /// the scenario's length.
     pub fn new(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<Self> {
         scenario.validate()?;
+        Self::of_valid(vehicle, scenario)
+    }
+
+    /// [`Self::new`] for a scenario its caller has validated.
+    pub(crate) fn of_valid(vehicle: impl IntoVehicle, scenario: &Scenario) -> Result<Self> {
         let structure = vehicle.into_vehicle()?;
         let wheel_rail = shared_wheel_rail(&structure.parameters, scenario)?;
         let perfect = Scenario {

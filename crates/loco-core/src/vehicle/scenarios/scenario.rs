@@ -13,6 +13,7 @@ use crate::track::{synthesize, DesignSection, SynthesisParams, TrackDesign, Trac
 use crate::vehicle::model::structure::VehicleStructure;
 use crate::vehicle::output::run::RunSettings;
 use crate::vehicle::params::parameters::ParameterSet;
+use crate::vehicle::params::sections::{ContactSection, TrackSection};
 use crate::vehicle::rail_contact::creep_model::CreepModel;
 use crate::vehicle::rail_contact::wheel_rail::WheelRail;
 use std::sync::Arc;
@@ -221,9 +222,12 @@ pub struct ContactParameters {
 }
 
 impl ContactParameters {
-    /// Reads and checks the contact parameters of a vehicle.
+    /// Reads and checks the contact parameters of a vehicle (its track and contact sections
+    /// only: a contact is built without the rest of the vehicle).
     pub fn from_parameters(parameters: &ParameterSet) -> Result<Self> {
-        let nu = parameters.get("track.poisson_ratio")?;
+        let track = TrackSection::read(parameters)?;
+        let contact = ContactSection::read(parameters)?;
+        let nu = track.poisson_ratio;
         if !(0.0..0.5).contains(&nu) {
             return Err(LocoError::param(
                 "track.poisson_ratio",
@@ -231,28 +235,13 @@ impl ContactParameters {
             ));
         }
         Ok(Self {
-            nominal_radius: check_positive(
-                "track.wheel_rolling_radius",
-                parameters.get("track.wheel_rolling_radius")?,
-            )?,
-            contact_half_distance: check_positive(
-                "track.contact_point_half_distance",
-                parameters.get("track.contact_point_half_distance")?,
-            )?,
-            young_modulus: check_positive(
-                "track.young_modulus",
-                parameters.get("track.young_modulus")?,
-            )?,
+            nominal_radius: track.wheel_rolling_radius,
+            contact_half_distance: track.contact_point_half_distance,
+            young_modulus: track.young_modulus,
             poisson_ratio: nu,
-            shear_modulus: parameters.shear_modulus()?,
-            friction: check_positive(
-                "track.wheel_rail_friction",
-                parameters.get("track.wheel_rail_friction")?,
-            )?,
-            normal_damping: crate::error::check_non_negative(
-                "contact.normal_contact_damping",
-                parameters.get("contact.normal_contact_damping")?,
-            )?,
+            shear_modulus: track.shear_modulus(),
+            friction: track.wheel_rail_friction,
+            normal_damping: contact.normal_contact_damping,
         })
     }
 }

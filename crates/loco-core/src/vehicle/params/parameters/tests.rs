@@ -206,16 +206,6 @@ fn out_of_range_values_need_the_explicit_allowance() {
 }
 
 #[test]
-fn the_shear_modulus_follows_young_modulus_and_poisson_ratio() {
-    let mut set = ParameterSet::default_vehicle();
-    // Steel, 210 GPa and 0.28: G = 210e9 / 2.56.
-    assert_eq!(set.shear_modulus().unwrap(), 2.1e11 / 2.56);
-    set.set("track.young_modulus", 2.0e11).unwrap();
-    set.set("track.poisson_ratio", 0.3).unwrap();
-    assert!((set.shear_modulus().unwrap() - 2.0e11 / 2.6).abs() < 1.0);
-}
-
-#[test]
 fn a_value_of_the_wrong_type_is_a_parameter_error_naming_the_key_and_its_line() {
     let line_of_yaw = DEFAULT_VEHICLE_TOML[..DEFAULT_VEHICLE_TOML.find(YAW_C).unwrap()]
         .matches('\n')
