@@ -41,7 +41,7 @@ WHEELS: list[tuple[str, str, float]] = [
 TRACK: dict[str, Any] = {
     "gauge": contact.SETUP_DEFAULTS["gauge"],
     "gauge_height": contact.SETUP_DEFAULTS["gauge_height"],
-    "inclination": contact.SETUP_DEFAULTS["rail_inclination"],
+    "rail_inclination": contact.SETUP_DEFAULTS["rail_inclination"],
     "back_to_back": contact.SETUP_DEFAULTS["back_to_back"],
     "flange_back_offset": contact.SETUP_DEFAULTS["flange_back_offset"],
     "nominal_radius": contact._NOMINAL_RADIUS,
