@@ -1,0 +1,25 @@
+//! The core's one SIMD mechanism: kernels written once in plain safe Rust over fixed-size lane
+//! arrays ([`Lanes`]), compiled twice by [`multiversion`] (for the x86_64 baseline, SSE2, and
+//! for AVX) and dispatched at run time to the copy the processor can run.
+//!
+//! How a kernel is written: its entry is a free function carrying
+//! `#[multiversion(targets("x86_64+avx"))]`; everything it calls in the hot loop is
+//! `#[inline(always)]`, so it is compiled into each copy with that copy's target features and the
+//! compiler packs the lanes' operations into 256-bit instructions in the AVX copy. The scalar
+//! path is the same source, compiled without AVX: there is no second copy of a kernel to keep
+//! in step with the first.
+//!
+//! Why the results are the same bits on every processor: each lane does the scalar code's IEEE
+//! operations in the scalar code's order. AVX adds no fused multiply-add (that is FMA, a feature
+//! the dispatch never enables), and Rust never contracts a separate multiply and add into one,
+//! so packing lanes changes which instruction does an operation, never its rounding. Sums taken
+//! across lanes are written out in a fixed order, never left to a reduction.
+//!
+//! Where the dispatch is: [`multiversion`] selects the copy once (one atomic flag afterwards).
+//! On other architectures only the baseline copy exists.
+
+mod lanes;
+
+pub(crate) use lanes::Lanes;
+pub(crate) use multiversion::multiversion;
+pub(crate) use multiversion::target::target_cfg_f;
