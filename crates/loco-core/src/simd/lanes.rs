@@ -90,3 +90,15 @@ impl<const W: usize> Lanes<W> {
         Self(out)
     }
 }
+
+/// A number or a set of lanes of numbers: what the 3-vector algebra of `kinematics` is written
+/// over, so that one source serves one element (`f64`) and `W` elements in lockstep
+/// ([`Lanes`]), each lane doing the scalar operations in the scalar order.
+pub(crate) trait Real:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+{
+}
+
+impl Real for f64 {}
+
+impl<const W: usize> Real for Lanes<W> {}

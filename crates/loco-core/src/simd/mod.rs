@@ -18,8 +18,15 @@
 //! Where the dispatch is: [`multiversion`] selects the copy once (one atomic flag afterwards).
 //! On other architectures only the baseline copy exists.
 
+#[cfg(target_arch = "x86_64")]
+mod avx;
+mod four;
 mod lanes;
+pub(crate) mod vec3;
 
-pub(crate) use lanes::Lanes;
+#[cfg(target_arch = "x86_64")]
+pub(crate) use avx::Avx;
+pub(crate) use four::{Four, Plain};
+pub(crate) use lanes::{Lanes, Real};
 pub(crate) use multiversion::multiversion;
 pub(crate) use multiversion::target::target_cfg_f;

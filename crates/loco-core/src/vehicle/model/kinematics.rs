@@ -7,6 +7,7 @@
 //! it adds the parent's motion carried to the joint (`u_joint = u_parent + θ_parent × r_joint`) to
 //! the relative coordinates. Velocities use the same map (it is constant).
 
+use crate::simd::vec3;
 use crate::vehicle::model::layout::N_DOF;
 
 /// One row of a sparse map: (coordinate index, coefficient) pairs.
@@ -230,32 +231,28 @@ unsafe fn at(x: &[f64], j: usize) -> f64 {
     unsafe { *x.get_unchecked(j) }
 }
 
-/// Cross product a × b.
+/// Cross product a × b (`simd::vec3`'s, which the lanes share).
 #[inline]
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    vec3::cross(a, b)
 }
 
 /// Sum a + b.
 #[inline]
 pub fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+    vec3::add(a, b)
 }
 
 /// Difference a − b.
 #[inline]
 pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+    vec3::sub(a, b)
 }
 
 /// Dot product.
 #[inline]
 pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    vec3::dot(a, b)
 }
 
 /// Displacement (m) of a material point at `r` (m, from the centre of gravity) of a body with
