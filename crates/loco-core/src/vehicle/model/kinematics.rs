@@ -147,18 +147,13 @@ impl MotionMap {
         self.check(q);
         let mut u = [0.0; 6];
         for (k, u) in u.iter_mut().enumerate() {
-            // SAFETY: `check`.
-            *u = self
-                .row(k)
-                .iter()
-                .map(|&(j, c)| c * unsafe { at(q, j) })
-                .sum();
+            *u = self.row(k).iter().map(|&(j, c)| c * q[j]).sum();
         }
         u
     }
 
-    /// Panics unless `x` holds every coordinate of the rows, which makes the unchecked
-    /// accesses `at(x, j)` to the rows' coordinates `j` sound.
+    /// Panics unless `x` holds every coordinate of the rows (one check before the rows'
+    /// accesses, with a clear message).
     #[inline(always)]
     fn check(&self, x: &[f64]) {
         assert!(
@@ -184,11 +179,8 @@ impl MotionMap {
         for k in 0..6 {
             let (mut a, mut b) = (-0.0, -0.0);
             for &(j, c) in self.row(k) {
-                // SAFETY: `check`.
-                unsafe {
-                    a += c * at(q, j);
-                    b += c * at(qd, j);
-                }
+                a += c * q[j];
+                b += c * qd[j];
             }
             u[k] = a;
             v[k] = b;
@@ -211,24 +203,11 @@ impl MotionMap {
         for (k, &w) in wrench.iter().enumerate() {
             if w != 0.0 {
                 for &(j, c) in self.row(k) {
-                    debug_assert!(j < gen_force.len());
-                    // SAFETY: `check`.
-                    unsafe { *gen_force.get_unchecked_mut(j) += c * w };
+                    gen_force[j] += c * w;
                 }
             }
         }
     }
-}
-
-/// `x[j]` without a bounds check.
-///
-/// # Safety
-/// `j < x.len()`, which [`MotionMap::check`] establishes for every coordinate of its rows.
-#[inline(always)]
-unsafe fn at(x: &[f64], j: usize) -> f64 {
-    debug_assert!(j < x.len());
-    // SAFETY: the caller's.
-    unsafe { *x.get_unchecked(j) }
 }
 
 /// Cross product a × b (`simd::vec3`'s, which the lanes share).

@@ -174,12 +174,7 @@ impl LaneRows {
             x.len() >= self.min_len,
             "LaneRows: input shorter than its columns"
         );
-        let load = |j: usize| {
-            debug_assert!(j < x.len());
-            // SAFETY: `j` is a column of this `LaneRows` (or the padding 0), so
-            // `j < self.min_len <= x.len()` by the assertion above.
-            unsafe { *x.get_unchecked(j) }
-        };
+        let load = |j: usize| x[j];
         for g in &self.groups {
             let mut sums = [-0.0; 4];
             for (j, c) in g.columns.iter().zip(&g.coefficients) {
