@@ -17,6 +17,12 @@
 //!
 //! Where the dispatch is: [`multiversion`] selects the copy once (one atomic flag afterwards).
 //! On other architectures only the baseline copy exists.
+//!
+//! Where plain arrays are not enough: a kernel whose lanes the compiler does not keep in
+//! registers (the bushings', the dampers' and the frames' 3-vector algebra) is written once over
+//! a lane set [`Four`]: in its baseline copy [`Plain`] (the arrays of [`Lanes`]), in its AVX copy
+//! [`Avx`] (AVX registers). `avx.rs` is the only module that names processor instructions, and
+//! its `unsafe` blocks the only ones of the kernels, each with the invariant that makes it sound.
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
