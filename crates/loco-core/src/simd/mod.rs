@@ -36,3 +36,6 @@ pub(crate) use four::{Four, Plain};
 pub(crate) use lanes::{Lanes, Real};
 pub(crate) use multiversion::multiversion;
 pub(crate) use multiversion::target::target_cfg_f;
+
+#[cfg(test)]
+mod tests;
