@@ -76,14 +76,11 @@ fn transposes_and_vectors_match_one_element_at_a_time() {
     // Kept from constant folding, whose NaNs can differ in sign from the processor's.
     let rows = std::hint::black_box(rows);
     let c = Plain.rows_to_lanes([&rows[0], &rows[1], &rows[2], &rows[3]]);
-    for l in 0..4 {
+    for (l, row) in rows.iter().enumerate() {
         for k in 0..6 {
-            assert_eq!(c[k].0[l].to_bits(), rows[l][k].to_bits());
+            assert_eq!(c[k].0[l].to_bits(), row[k].to_bits());
         }
-        let (a, b) = (
-            [rows[l][0], rows[l][1], rows[l][2]],
-            [rows[l][3], rows[l][4], rows[l][5]],
-        );
+        let (a, b) = ([row[0], row[1], row[2]], [row[3], row[4], row[5]]);
         let lanes = cross([c[0], c[1], c[2]], [c[3], c[4], c[5]]);
         let one = cross(a, b);
         for k in 0..3 {
