@@ -118,7 +118,7 @@ fn run_full_linear(
     let mut rhs = 0;
     for step in 0..=total {
         let t = step as f64 * h;
-        if step >= settle_steps && (step - settle_steps) % steps_per_sample == 0 {
+        if step >= settle_steps && (step - settle_steps).is_multiple_of(steps_per_sample) {
             let mut dy = vec![0.0; n];
             system.derivatives(t, y.as_slice(), &mut dy);
             let mut c = 0;

@@ -20,6 +20,7 @@ pub mod contact;
 pub mod dampers;
 pub mod error;
 pub mod metrics;
+pub(crate) mod simd;
 pub mod track;
 pub mod util;
 pub mod vehicle;

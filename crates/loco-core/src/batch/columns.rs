@@ -91,7 +91,7 @@ pub fn check_matrix(names: &[String], values: &[f64]) -> Result<usize> {
     if k == 0 {
         return Err(LocoError::input("names", "at least one column is needed"));
     }
-    if values.len() % k != 0 {
+    if !values.len().is_multiple_of(k) {
         return Err(LocoError::input(
             "params",
             format!("{} values do not fill rows of {k} columns", values.len()),

@@ -71,7 +71,7 @@ pub(crate) fn benchmark_case(case: usize) -> Option<Result<BenchmarkCase, String
         .map(|i| (start + 0.1 * i as f64) * 1e-3)
         .collect();
     let columns = numbers(&ben_text);
-    if columns.len() % 6 != 0 {
+    if !columns.len().is_multiple_of(6) {
         return Some(Err(format!("ben_E{case}.dat: not 6 columns")));
     }
     let reference = columns

@@ -41,6 +41,7 @@ use super::fastrip_lanes::{pass, Element, LANES};
 use super::fastsim::FastsimParams;
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::Result;
+use crate::simd::{multiversion, target_cfg_f};
 use std::f64::consts::PI;
 
 /// Tolerance on φ' = 1, where the slip-length formula is singular (CONTACT's value).
@@ -253,26 +254,10 @@ impl Fastrip {
         Some(call)
     }
 
-    /// [`Self::integrate_lanes`]; on a processor with AVX compiled for it, so that four strips
-    /// share a register instead of two (checked once at run time, then a cached flag). The same
-    /// IEEE operations either way (no fused multiply-add), so the same bits.
+    /// [`Self::integrate_lanes`] in the layout of the copy [`integrate_copy`] runs.
     #[inline(always)]
     fn integrate<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: the processor has just been found to support AVX, the only feature the
-            // function enables.
-            return unsafe { self.integrate_avx::<FALLBACK>(k) };
-        }
-        self.integrate_lanes::<FALLBACK, 2, { LANES / 2 }, 0>(k)
-    }
-
-    /// [`Self::integrate_lanes`] compiled for AVX: eight strips in two 256-bit registers, the
-    /// last two in a 128-bit one.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    unsafe fn integrate_avx<const FALLBACK: bool>(&self, k: &Call) -> CreepForces {
-        self.integrate_lanes::<FALLBACK, 4, 2, 2>(k)
+        integrate_copy::<FALLBACK>(self, k)
     }
 
     /// Every pass of [`LANES`] strips, `G` registers of `W` lanes and a tail of `T`.
@@ -287,6 +272,18 @@ impl Fastrip {
         }
         let [fx, fy, mz] = f;
         CreepForces { fx, fy, mz }
+    }
+}
+
+/// [`Fastrip::integrate_lanes`] two strips per register in the baseline copy (SSE2); in the AVX
+/// copy eight strips in two 256-bit registers and the last two in a 128-bit one. The same IEEE
+/// operations either way (no fused multiply-add), so the same bits.
+#[multiversion(targets("x86_64+avx"))]
+fn integrate_copy<const FALLBACK: bool>(solver: &Fastrip, k: &Call) -> CreepForces {
+    if target_cfg_f!(target_feature = "avx") {
+        solver.integrate_lanes::<FALLBACK, 4, 2, 2>(k)
+    } else {
+        solver.integrate_lanes::<FALLBACK, 2, { LANES / 2 }, 0>(k)
     }
 }
 

@@ -16,81 +16,8 @@
 //! test that skips them costs one product per element and the chain between them carries no
 //! floor's maximum when no traction is zero.
 
-use std::ops::{Add, Mul, Sub};
-
-/// The same quantity of `W` strips: two fill an SSE2 register, four an AVX one (also FaStrip's
-/// march, `fastrip_lanes`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Lanes<const W: usize>(pub(super) [f64; W]);
-
-macro_rules! lane_op {
-    ($trait:ident, $method:ident, $op:tt) => {
-        impl<const W: usize> $trait for Lanes<W> {
-            type Output = Self;
-            #[inline(always)]
-            fn $method(self, rhs: Self) -> Self {
-                self.map2(rhs, |a, b| a $op b)
-            }
-        }
-    };
-}
-lane_op!(Add, add, +);
-lane_op!(Sub, sub, -);
-lane_op!(Mul, mul, *);
-
-impl<const W: usize> Lanes<W> {
-    #[inline(always)]
-    pub(super) fn splat(v: f64) -> Self {
-        Self([v; W])
-    }
-    /// Lane by lane `f(self, rhs)`.
-    #[inline(always)]
-    pub(super) fn map2(self, rhs: Self, f: impl Fn(f64, f64) -> f64) -> Self {
-        let mut out = self.0;
-        for (o, r) in out.iter_mut().zip(rhs.0) {
-            *o = f(*o, r);
-        }
-        Self(out)
-    }
-    #[inline(always)]
-    pub(super) fn div(self, rhs: Self) -> Self {
-        self.map2(rhs, |a, b| a / b)
-    }
-    #[inline(always)]
-    pub(super) fn sqrt(self) -> Self {
-        let mut out = self.0;
-        for o in &mut out {
-            *o = o.sqrt();
-        }
-        Self(out)
-    }
-    #[inline(always)]
-    pub(super) fn max(self, floor: Self) -> Self {
-        self.map2(floor, f64::max)
-    }
-    #[inline(always)]
-    pub(super) fn min(self, cap: Self) -> Self {
-        self.map2(cap, f64::min)
-    }
-    /// Whether every lane is at most `cap`'s.
-    #[inline(always)]
-    pub(super) fn all_le(self, cap: Self) -> bool {
-        self.0.iter().zip(cap.0).all(|(&a, b)| a <= b)
-    }
-    /// Whether every lane is above `floor`'s.
-    #[inline(always)]
-    pub(super) fn all_gt(self, floor: Self) -> bool {
-        self.0.iter().zip(floor.0).all(|(&a, b)| a > b)
-    }
-    #[inline(always)]
-    pub(super) fn clamp(self, lo: f64, hi: f64) -> Self {
-        let mut out = self.0;
-        for o in &mut out {
-            *o = o.clamp(lo, hi);
-        }
-        Self(out)
-    }
-}
+use crate::simd::Lanes;
+use crate::simd::{multiversion, target_cfg_f};
 
 /// |p|² ≤ bound²·this is inside the bound whatever the rounding (of the square, the root and the
 /// division, each within 2⁻⁵³ relative): |p|/bound ≤ 1 − 5e-13 + 3e-16 < 1, so bound/|p| rounds to
@@ -164,9 +91,12 @@ pub(super) struct StripSums {
 
 /// Integrates the strips of `inputs` over `elements` (from the leading edge); p_y's slope is
 /// `eta_l2 + φ·x·inv_l3` with `eta_l2 = η/L2` (Pa/m), spin φ (1/m) and `inv_l3 = 1/L3` (Pa/m).
-/// On a processor with AVX four strips share a register (checked once at run time, then a
-/// cached flag); the bits are the same either way.
-#[inline(always)]
+/// Two strips per register in the baseline copy (SSE2); in the AVX copy eight strips in two
+/// 256-bit registers and the last two (the innermost, see `fastsim`) in a 128-bit one. Why not
+/// three AVX registers with two empty lanes: the divider takes a 256-bit root or division in
+/// twice the time of a 128-bit one, and the inner strips project too. The bits are the same
+/// either way.
+#[multiversion(targets("x86_64+avx"))]
 pub(super) fn integrate_strips(
     inputs: &StripInputs,
     elements: &[Element],
@@ -174,41 +104,12 @@ pub(super) fn integrate_strips(
     phi: f64,
     inv_l3: f64,
 ) -> StripSums {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to support AVX, the only feature the
-        // function enables.
-        return unsafe { integrate_strips_avx(inputs, elements, eta_l2, phi, inv_l3) };
+    let c = (eta_l2, phi, inv_l3);
+    if target_cfg_f!(target_feature = "avx") {
+        integrate::<4, 2, 2>(inputs, elements, c)
+    } else {
+        integrate::<2, PAIRS, 0>(inputs, elements, c)
     }
-    integrate_strips_sse2(inputs, elements, eta_l2, phi, inv_l3)
-}
-
-/// [`integrate_strips`] two strips per register (the x86_64 baseline, SSE2).
-#[inline(always)]
-fn integrate_strips_sse2(
-    inputs: &StripInputs,
-    elements: &[Element],
-    eta_l2: f64,
-    phi: f64,
-    inv_l3: f64,
-) -> StripSums {
-    integrate::<2, PAIRS, 0>(inputs, elements, (eta_l2, phi, inv_l3))
-}
-
-/// [`integrate_strips`] with eight strips in two AVX registers and the last two (the innermost,
-/// see `fastsim`) in a 128-bit one. Why not three AVX registers with two empty lanes: the
-/// divider takes a 256-bit root or division in twice the time of a 128-bit one, and the inner
-/// strips project too.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn integrate_strips_avx(
-    inputs: &StripInputs,
-    elements: &[Element],
-    eta_l2: f64,
-    phi: f64,
-    inv_l3: f64,
-) -> StripSums {
-    integrate::<4, 2, 2>(inputs, elements, (eta_l2, phi, inv_l3))
 }
 
 /// One register of `W` strips through the march: their inputs, tractions and sums.

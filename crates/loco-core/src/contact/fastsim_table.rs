@@ -73,7 +73,7 @@ impl FastsimTable {
     /// Fills the table with the direct solver of parameters `params` (one FASTSIM call per node).
     pub fn new(params: FastsimParams, table: FastsimTableParams) -> Result<Self> {
         let n_s = table.creepage_nodes;
-        if n_s < 3 || n_s % 2 == 0 || n_s > 101 {
+        if n_s < 3 || n_s.is_multiple_of(2) || n_s > 101 {
             return Err(LocoError::param(
                 "creepage_nodes",
                 format!("must be odd and in 3..=101, got {n_s}"),

@@ -101,7 +101,7 @@ impl Filter {
             ));
         }
         let (wl, wh) = (prewarp("f_lo", f_lo, fs)?, prewarp("f_hi", f_hi, fs)?);
-        if order == 0 || order % 2 != 0 || order > 16 {
+        if order == 0 || !order.is_multiple_of(2) || order > 16 {
             return Err(LocoError::param(
                 "order",
                 format!("must be even, 2 to 16, got {order}"),
@@ -188,7 +188,7 @@ fn prewarp(name: &str, fc: f64, fs: f64) -> Result<f64> {
 
 /// Bilinear-transformed Butterworth sections for pre-warped corner `k`.
 fn sections(k: f64, order: usize, high: bool) -> Result<Vec<Biquad>> {
-    if order == 0 || order % 2 != 0 || order > 16 {
+    if order == 0 || !order.is_multiple_of(2) || order > 16 {
         return Err(LocoError::param(
             "order",
             format!("must be even, 2 to 16, got {order}"),

@@ -280,7 +280,7 @@ impl SegmentSpectrum {
         self.fft
             .process_with_scratch(&mut self.buffer, &mut self.scratch);
         for (k, p) in self.power.iter_mut().enumerate() {
-            let edge = k == 0 || (n % 2 == 0 && k == n / 2);
+            let edge = k == 0 || (n.is_multiple_of(2) && k == n / 2);
             let factor = if edge { 1.0 } else { 2.0 };
             *p = factor * self.buffer[k].norm_sqr() * self.norm;
         }

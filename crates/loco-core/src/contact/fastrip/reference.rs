@@ -6,7 +6,8 @@
 use super::super::fastrip::{Call, Fastrip};
 use super::super::fastrip_lanes::{acos, Element, LANES as NEW_LANES};
 use super::super::kalker::CreepForces;
-use crate::contact::fastsim_lanes::{Lanes as Simd, INSIDE_BOUND};
+use crate::contact::fastsim_lanes::INSIDE_BOUND;
+use crate::simd::Lanes as Simd;
 use std::f64::consts::PI;
 
 /// Geometry of [`LANES`] strips in units of (a, b), as [`super::super::fastrip::StripLanes`].

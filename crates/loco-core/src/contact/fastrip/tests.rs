@@ -237,12 +237,12 @@ fn bad_input_names_the_argument() {
     assert!(err.to_string().contains("nu"));
 }
 
-/// The AVX build of the strips' loop gives the bits of the baseline build, with and without the
-/// fallback (|φ'| > 1), in partial and full slip, on the default and an odd grid.
+/// The AVX copy's lane layout and the dispatched call give the bits of the baseline layout,
+/// with and without the fallback (|φ'| > 1), in partial and full slip, on the default and an
+/// odd grid.
 #[test]
 fn avx_and_baseline_paths_give_the_same_bits() {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
+    {
         let (a, b) = axes(1.7);
         let mut fallbacks = [0, 0];
         for f in [solver(10, 10), solver(7, 13)] {
@@ -258,19 +258,24 @@ fn avx_and_baseline_paths_give_the_same_bits() {
                 let same = |x: CreepForces, y: CreepForces| {
                     [x.fx, x.fy, x.mz].map(f64::to_bits) == [y.fx, y.fy, y.mz].map(f64::to_bits)
                 };
-                // SAFETY: AVX was detected above.
-                let (plain, avx) = if call.phi_s.abs() > 1.0 {
+                let (plain, four, dispatched) = if call.phi_s.abs() > 1.0 {
                     (
                         f.integrate_lanes::<true, 2, { LANES / 2 }, 0>(&call),
-                        unsafe { f.integrate_avx::<true>(&call) },
+                        f.integrate_lanes::<true, 4, 2, 2>(&call),
+                        f.integrate::<true>(&call),
                     )
                 } else {
                     (
                         f.integrate_lanes::<false, 2, { LANES / 2 }, 0>(&call),
-                        unsafe { f.integrate_avx::<false>(&call) },
+                        f.integrate_lanes::<false, 4, 2, 2>(&call),
+                        f.integrate::<false>(&call),
                     )
                 };
-                assert!(same(plain, avx), "{c:?}: {plain:?} against {avx:?}");
+                assert!(same(plain, four), "{c:?}: {plain:?} against {four:?}");
+                assert!(
+                    same(plain, dispatched),
+                    "{c:?}: {plain:?} against {dispatched:?}"
+                );
             }
         }
         assert!(fallbacks[0] > 0 && fallbacks[1] > 0, "{fallbacks:?}");
@@ -326,21 +331,15 @@ fn passes_of_ten_give_the_bits_of_the_old_passes_of_twelve() {
                 same(old, plain),
                 "{nx}x{ny} {c:?}: {old:?} against {plain:?}"
             );
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx") {
-                // SAFETY: AVX was detected just above.
-                let avx = unsafe {
-                    if fallback {
-                        f.integrate_avx::<true>(&call)
-                    } else {
-                        f.integrate_avx::<false>(&call)
-                    }
-                };
-                assert!(
-                    same(old, avx),
-                    "{nx}x{ny} {c:?}: {old:?} against AVX {avx:?}"
-                );
-            }
+            let dispatched = if fallback {
+                f.integrate::<true>(&call)
+            } else {
+                f.integrate::<false>(&call)
+            };
+            assert!(
+                same(old, dispatched),
+                "{nx}x{ny} {c:?}: {old:?} against {dispatched:?}"
+            );
         }
     }
     assert!(seen[0] > 100 && seen[1] > 100, "{seen:?}");
@@ -351,7 +350,7 @@ fn passes_of_ten_give_the_bits_of_the_old_passes_of_twelve() {
 #[test]
 fn vectorised_arc_cosine_is_within_two_ulp_of_libm() {
     use super::super::fastrip_lanes::acos;
-    use super::super::fastsim_lanes::Lanes;
+    use crate::simd::Lanes;
     let n = 200_001;
     let mut worst = 0;
     for i in 0..n {

@@ -73,16 +73,15 @@ fn lanes_give_the_bits_of_one_strip_at_a_time() {
                 _ => 1e9 * next().powi(4),
             }),
         };
-        let mut paths = vec![(
-            "sse2",
-            integrate_strips_sse2(&inputs, &elements, c.0, c.1, c.2),
-        )];
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: AVX was just detected.
-            let avx = unsafe { integrate_strips_avx(&inputs, &elements, c.0, c.1, c.2) };
-            paths.push(("avx", avx));
-        }
+        // Both lane layouts (the baseline copy's and the AVX copy's) and the dispatched call.
+        let paths = [
+            ("two lanes", integrate::<2, PAIRS, 0>(&inputs, &elements, c)),
+            ("four lanes", integrate::<4, 2, 2>(&inputs, &elements, c)),
+            (
+                "dispatched",
+                integrate_strips(&inputs, &elements, c.0, c.1, c.2),
+            ),
+        ];
         for (path, sums) in paths {
             for l in 0..2 * PAIRS {
                 let want = one_strip(

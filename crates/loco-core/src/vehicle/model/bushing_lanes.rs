@@ -1,28 +1,21 @@
-//! The bushings' forces, four elements per SIMD register.
+//! The bushings' forces, four elements in lockstep.
 //!
 //! Why: the 50 bushings of the default vehicle took 18 % of a run (callgrind, etdrk4 at 2 ms),
 //! each a few hundred scalar operations of 3-vector algebra that the compiler left scalar.
 //! Elements of one kind (on the load path, whose axes turn with their ends, or off it) do the
-//! same operations on different numbers, so four of them are computed in lockstep in one AVX
-//! register (where the processor has it, detected at run time; elsewhere the elements are
-//! applied one at a time), as `contact/fastsim_lanes.rs` does for FASTSIM's strips. Written as
-//! arrays of four numbers, the compiler packed the 3-vectors' components instead and spilled
-//! (no gain); with the AVX operations named, each lane does [`Bushing::apply`]'s IEEE operations
-//! in its order (no fused multiply-add, no reordering). The forces are then added to the
-//! wrenches element by element in the elements' order, the scalar loop's, so every wrench sums
-//! the same terms in the same order: the same bits.
+//! same operations on different numbers, so four of them are computed in lockstep, as
+//! `contact/fastsim_lanes.rs` does for FASTSIM's strips: one AVX register per quantity in the
+//! AVX copy of [`compute`] (see the module `simd`), two SSE2 ones in the baseline copy. Each
+//! lane does [`Bushing::apply`]'s IEEE operations in its order (no fused multiply-add, no
+//! reordering). The forces are then added to the wrenches element by element in the elements'
+//! order, the scalar loop's, so every wrench sums the same terms in the same order: the same
+//! bits.
 
-// Elsewhere the elements are applied one at a time and the lanes are not used.
-#![cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
-
+use crate::simd::vec3::{add, cross, neg, products_difference, products_sum, scaled, sub};
+use crate::simd::{multiversion, target_cfg_f, Four, Plain};
 use crate::vehicle::model::elements::{BodyStates, Bushing, Wrenches};
+use crate::vehicle::model::pair_lanes::{pair_motion, store, v3, W};
 use std::cell::RefCell;
-
-#[cfg(target_arch = "x86_64")]
-pub(in crate::vehicle) mod avx;
-
-/// Elements per lane group.
-pub(in crate::vehicle) const W: usize = 4;
 
 /// The constants of `W` elements of one kind, lane `l` of each array the `l`-th element's;
 /// lanes without an element join body 0 to itself with zeros, and their forces are dropped.
@@ -138,25 +131,90 @@ impl BushingLanes {
     }
 
     /// Adds every element's forces to `wrenches`, as [`Bushing::apply`] on each element in
-    /// turn (`bushings`, the elements the lanes were made of) would; on a processor without
-    /// AVX it does just that.
+    /// turn (`bushings`, the elements the lanes were made of) would.
     pub fn apply(&self, bushings: &[Bushing], states: &BodyStates, wrenches: &mut Wrenches) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            FORCES.with_borrow_mut(|forces| {
-                // SAFETY: the processor has just been found to support AVX, the only feature
-                // the function enables.
-                unsafe { avx::compute_avx(self, states, forces) };
-                for slot in &self.slots {
-                    add_in_order(slot, &forces[slot.quad], wrenches);
-                }
-            });
-            return;
-        }
-        for bushing in bushings {
-            bushing.apply(states, wrenches);
+        debug_assert_eq!(bushings.len(), self.slots.len());
+        FORCES.with_borrow_mut(|forces| {
+            compute(self, states, forces);
+            for slot in &self.slots {
+                add_in_order(slot, &forces[slot.quad], wrenches);
+            }
+        });
+    }
+}
+
+/// Every quad's forces into `forces`, the load-path quads first: in AVX registers in the AVX
+/// copy, as plain arrays in the baseline copy (the module `simd`).
+#[multiversion(targets("x86_64+avx"))]
+fn compute(lanes: &BushingLanes, states: &BodyStates, forces: &mut Vec<QuadForces>) {
+    #[cfg(target_arch = "x86_64")]
+    if target_cfg_f!(target_feature = "avx") {
+        if let Some(avx) = crate::simd::Avx::detect() {
+            return compute_in(avx, lanes, states, forces);
         }
     }
+    compute_in(Plain, lanes, states, forces);
+}
+
+/// [`compute`] in the lane set `set`.
+#[inline(always)]
+fn compute_in<S: Four>(
+    set: S,
+    lanes: &BushingLanes,
+    states: &BodyStates,
+    forces: &mut Vec<QuadForces>,
+) {
+    let n = lanes.on_load_path.len();
+    forces.resize(n + lanes.off_load_path.len(), QuadForces::default());
+    let (on, off) = forces.split_at_mut(n);
+    for (quad, out) in lanes.on_load_path.iter().zip(on) {
+        quad_forces::<true, S>(set, quad, states, out);
+    }
+    for (quad, out) in lanes.off_load_path.iter().zip(off) {
+        quad_forces::<false, S>(set, quad, states, out);
+    }
+}
+
+/// The forces of one quad into `out`, [`Bushing::apply`]'s operations lane by lane
+/// (`ON_LOAD_PATH` its corotational branch).
+#[inline(always)]
+fn quad_forces<const ON_LOAD_PATH: bool, S: Four>(
+    set: S,
+    q: &Quad,
+    s: &BodyStates,
+    out: &mut QuadForces,
+) {
+    let m = pair_motion(set, &q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
+    let ([rot_a, rot_b], [rate_a, rate_b], [arm_a, arm_b]) = (m.rot, m.rate, m.arm);
+    let (d, v) = (m.d, m.v);
+    let (neg_k, c) = (v3(set, &q.neg_stiffness), v3(set, &q.damping));
+    let (neg_kr, cr) = (
+        v3(set, &q.neg_rotational_stiffness),
+        v3(set, &q.rotational_damping),
+    );
+    let (rotation, rate) = (sub(rot_b, rot_a), sub(rate_b, rate_a));
+    let moment = products_difference(neg_kr, rotation, cr, rate);
+    let f = if ON_LOAD_PATH {
+        let (ma, mb) = (v3(set, &q.turns_a), v3(set, &q.turns_b));
+        let half = set.splat(0.5);
+        let theta = scaled(half, products_sum(rot_a, ma, rot_b, mb));
+        let d_local = sub(d, cross(theta, d));
+        let f_local = products_difference(neg_k, d_local, c, v);
+        let f = add(f_local, cross(theta, f_local));
+        let couple = cross(d, f);
+        let half_couple = scaled(half, couple);
+        store(set, sub(moment, half_couple), &mut out.own_b);
+        store(set, add(moment, half_couple), &mut out.own_a);
+        f
+    } else {
+        store(set, moment, &mut out.own_b);
+        store(set, moment, &mut out.own_a);
+        products_difference(neg_k, d, c, v)
+    };
+    store(set, f, &mut out.force);
+    store(set, cross(arm_b, f), &mut out.moment_b);
+    // −f lane by lane (exact, as the scalar code's `[-f[0], -f[1], -f[2]]`).
+    store(set, cross(arm_a, neg(f)), &mut out.moment_a);
 }
 
 /// The index the next quad of `kind` (0 on the load path) gets among its kind's.

@@ -1,4 +1,4 @@
-//! The dampers' strokes and lever arms, four dampers per AVX register.
+//! The dampers' strokes and lever arms, four dampers in lockstep.
 //!
 //! Why: every evaluation forms each damper's relative motion (`Attachment::relative_motion`)
 //! and the turned lever arms of its force (`Attachment::apply_pair`): 5 % of a run (callgrind,
@@ -8,9 +8,10 @@
 //! the laws, whose forces the arms carry, then run one damper at a time in the dampers' order,
 //! and their forces are added to the wrenches in that order, so every sum is the same bits.
 
-use crate::vehicle::model::bushing_lanes::W;
+use crate::simd::vec3::dot;
+use crate::simd::{multiversion, target_cfg_f, Four, Plain};
 use crate::vehicle::model::elements::BodyStates;
-use crate::vehicle::model::kinematics::{add, cross, dot};
+use crate::vehicle::model::pair_lanes::{pair_motion, store, v3, W};
 use crate::vehicle::model::suspension::DamperPlacement;
 use std::cell::RefCell;
 
@@ -106,65 +107,36 @@ impl DamperLanes {
                 return f(DamperMotions(&[]));
             }
             motions.resize(self.quads.len(), QuadMotion::default());
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx") {
-                // SAFETY: the processor has just been found to support AVX, the only feature
-                // the function enables.
-                unsafe { avx::motions(&self.quads, states, motions) };
-                return f(DamperMotions(motions));
-            }
-            scalar_motions(placements, states, motions);
+            quad_motions(&self.quads, states, motions);
             f(DamperMotions(motions))
         })
     }
 }
 
-/// The motions one damper at a time, with the scalar kinematics (where there is no AVX).
-fn scalar_motions(placements: &[DamperPlacement], states: &BodyStates, motions: &mut [QuadMotion]) {
-    for (i, p) in placements.iter().enumerate() {
-        let (q, l) = (&mut motions[i / W], i % W);
-        let (d, v) = p.at.relative_motion(states);
-        q.along[l] = dot(d, p.direction);
-        q.rate[l] = dot(v, p.direction);
-        let (ua, ub) = (&states.position[p.at.body_a], &states.position[p.at.body_b]);
-        let arm_a = add(p.at.point_a, cross([ua[3], ua[4], ua[5]], p.at.point_a));
-        let arm_b = add(p.at.point_b, cross([ub[3], ub[4], ub[5]], p.at.point_b));
-        for k in 0..3 {
-            q.arm_a[k][l] = arm_a[k];
-            q.arm_b[k][l] = arm_b[k];
+/// Every quad's motions into `out`, four dampers in lockstep: `Attachment::relative_motion`
+/// (through `point_motion`) along the axis, and `apply_pair`'s arms.
+/// In AVX registers in the AVX copy, as plain arrays in the baseline copy (the module `simd`).
+#[multiversion(targets("x86_64+avx"))]
+fn quad_motions(quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
+    #[cfg(target_arch = "x86_64")]
+    if target_cfg_f!(target_feature = "avx") {
+        if let Some(avx) = crate::simd::Avx::detect() {
+            return quad_motions_in(avx, quads, s, out);
         }
     }
+    quad_motions_in(Plain, quads, s, out);
 }
 
-#[cfg(target_arch = "x86_64")]
-mod avx {
-    use super::{DamperQuad, QuadMotion};
-    use crate::vehicle::model::bushing_lanes::avx::{
-        mul, pair_motion, store, sum, v3, DAMPERS, V3,
-    };
-    use crate::vehicle::model::elements::BodyStates;
-    use std::arch::x86_64::{__m256d, _mm256_storeu_pd};
-
-    /// `kinematics::dot` lane by lane: (x0·n0 + x1·n1) + x2·n2.
-    #[target_feature(enable = "avx")]
-    #[inline]
-    unsafe fn dot(x: V3, n: V3) -> __m256d {
-        sum(sum(mul(x[0], n[0]), mul(x[1], n[1])), mul(x[2], n[2]))
-    }
-
-    /// Every quad's motions into `out`, four dampers in one AVX register.
-    #[target_feature(enable = "avx")]
-    pub(super) unsafe fn motions(quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
-        for (q, out) in quads.iter().zip(out) {
-            // `Attachment::relative_motion` (through `point_motion`) and `apply_pair`'s arms.
-            let m = pair_motion::<DAMPERS>(&q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
-            let n = v3(&q.direction);
-            // Four contiguous f64 each, which the references hold.
-            _mm256_storeu_pd(out.along.as_mut_ptr(), dot(m.d, n));
-            _mm256_storeu_pd(out.rate.as_mut_ptr(), dot(m.v, n));
-            store(m.arm[0], &mut out.arm_a);
-            store(m.arm[1], &mut out.arm_b);
-        }
+/// [`quad_motions`] in the lane set `set`.
+#[inline(always)]
+fn quad_motions_in<S: Four>(set: S, quads: &[DamperQuad], s: &BodyStates, out: &mut [QuadMotion]) {
+    for (q, out) in quads.iter().zip(out) {
+        let m = pair_motion(set, &q.body_a, &q.body_b, &q.point_a, &q.point_b, s);
+        let n = v3(set, &q.direction);
+        set.store(dot(m.d, n), &mut out.along);
+        set.store(dot(m.v, n), &mut out.rate);
+        store(set, m.arm[0], &mut out.arm_a);
+        store(set, m.arm[1], &mut out.arm_b);
     }
 }
 

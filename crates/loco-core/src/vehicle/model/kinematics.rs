@@ -7,6 +7,7 @@
 //! it adds the parent's motion carried to the joint (`u_joint = u_parent + θ_parent × r_joint`) to
 //! the relative coordinates. Velocities use the same map (it is constant).
 
+use crate::simd::vec3;
 use crate::vehicle::model::layout::N_DOF;
 
 /// One row of a sparse map: (coordinate index, coefficient) pairs.
@@ -146,18 +147,13 @@ impl MotionMap {
         self.check(q);
         let mut u = [0.0; 6];
         for (k, u) in u.iter_mut().enumerate() {
-            // SAFETY: `check`.
-            *u = self
-                .row(k)
-                .iter()
-                .map(|&(j, c)| c * unsafe { at(q, j) })
-                .sum();
+            *u = self.row(k).iter().map(|&(j, c)| c * q[j]).sum();
         }
         u
     }
 
-    /// Panics unless `x` holds every coordinate of the rows, which makes the unchecked
-    /// accesses `at(x, j)` to the rows' coordinates `j` sound.
+    /// Panics unless `x` holds every coordinate of the rows (one check before the rows'
+    /// accesses, with a clear message).
     #[inline(always)]
     fn check(&self, x: &[f64]) {
         assert!(
@@ -183,11 +179,8 @@ impl MotionMap {
         for k in 0..6 {
             let (mut a, mut b) = (-0.0, -0.0);
             for &(j, c) in self.row(k) {
-                // SAFETY: `check`.
-                unsafe {
-                    a += c * at(q, j);
-                    b += c * at(qd, j);
-                }
+                a += c * q[j];
+                b += c * qd[j];
             }
             u[k] = a;
             v[k] = b;
@@ -210,52 +203,35 @@ impl MotionMap {
         for (k, &w) in wrench.iter().enumerate() {
             if w != 0.0 {
                 for &(j, c) in self.row(k) {
-                    debug_assert!(j < gen_force.len());
-                    // SAFETY: `check`.
-                    unsafe { *gen_force.get_unchecked_mut(j) += c * w };
+                    gen_force[j] += c * w;
                 }
             }
         }
     }
 }
 
-/// `x[j]` without a bounds check.
-///
-/// # Safety
-/// `j < x.len()`, which [`MotionMap::check`] establishes for every coordinate of its rows.
-#[inline(always)]
-unsafe fn at(x: &[f64], j: usize) -> f64 {
-    debug_assert!(j < x.len());
-    // SAFETY: the caller's.
-    unsafe { *x.get_unchecked(j) }
-}
-
-/// Cross product a × b.
+/// Cross product a × b (`simd::vec3`'s, which the lanes share).
 #[inline]
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    vec3::cross(a, b)
 }
 
 /// Sum a + b.
 #[inline]
 pub fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+    vec3::add(a, b)
 }
 
 /// Difference a − b.
 #[inline]
 pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+    vec3::sub(a, b)
 }
 
 /// Dot product.
 #[inline]
 pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    vec3::dot(a, b)
 }
 
 /// Displacement (m) of a material point at `r` (m, from the centre of gravity) of a body with

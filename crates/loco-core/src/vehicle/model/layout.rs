@@ -102,7 +102,7 @@ pub const fn coordinate_kind(i: usize) -> CoordinateKind {
         } else {
             CoordinateKind::Rotation
         }
-    } else if i < traction_rod(0) && (i - six_dof_end) % 3 == 0 {
+    } else if i < traction_rod(0) && (i - six_dof_end).is_multiple_of(3) {
         CoordinateKind::Translation
     } else {
         CoordinateKind::Rotation

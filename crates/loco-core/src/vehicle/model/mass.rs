@@ -125,16 +125,8 @@ impl MassMatrix {
                 *x = b / l / l;
             }
         }
-        let get = |d: usize| {
-            debug_assert!(d < N_DOF);
-            // SAFETY: `d < N_DOF <= rhs.len()`.
-            unsafe { *rhs.get_unchecked(d) }
-        };
-        let mut set = |d: usize, v: f64| {
-            debug_assert!(d < N_DOF);
-            // SAFETY: `d < N_DOF <= x.len()`.
-            unsafe { *x.get_unchecked_mut(d) = v };
-        };
+        let get = |d: usize| rhs[d];
+        let mut set = |d: usize, v: f64| x[d] = v;
         for &([d0, d1], [l00, l10, l11]) in &solver.pairs {
             // The substitutions below for n = 2, the same operations in the same order.
             let w0 = get(d0) / l00;

@@ -11,5 +11,6 @@ pub mod elements;
 pub mod kinematics;
 pub mod layout;
 pub mod mass;
+pub(crate) mod pair_lanes;
 pub mod structure;
 pub mod suspension;

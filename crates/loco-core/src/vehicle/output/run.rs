@@ -138,7 +138,8 @@ pub fn run(
     let total_steps = (n_samples - 1) * steps_per_sample;
     let settle_steps = (settings.settle / dt).round() as usize;
     let t0 = settle_steps as f64 * dt;
-    let is_sample = |n: usize| n >= settle_steps && (n - settle_steps) % steps_per_sample == 0;
+    let is_sample =
+        |n: usize| n >= settle_steps && (n - settle_steps).is_multiple_of(steps_per_sample);
     integrate(
         system,
         y,

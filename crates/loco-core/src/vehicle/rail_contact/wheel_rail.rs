@@ -35,6 +35,7 @@ use crate::contact::hertz_table::HertzShapeTable;
 use crate::contact::kalker::{CreepForces, Creepages};
 use crate::contact::table::ContactTable;
 use crate::error::{LocoError, Result};
+use crate::simd::multiversion;
 use crate::track::RailIrregularity;
 use crate::vehicle::model::elements::{BodyStates, Wrenches};
 use crate::vehicle::model::layout::{body_wheelset, N_WHEELSETS, PITCH, ROLL, YAW};
@@ -188,8 +189,8 @@ impl WheelRail {
     /// `speed` is V (m/s).
     /// [`ContactMode::Held`] replaces the creep forces by a tangential spring (N/m) at each
     /// contact and a brake on the spin, holding the wheels in the static equilibrium search.
-    /// On a processor with AVX (checked once at run time, then a cached flag) the same code
-    /// runs compiled for it; the bits are the same either way (see [`Self::apply_avx`]).
+    /// On a processor with AVX the same code runs compiled for it; the bits are the same either
+    /// way (see [`apply_copy`]).
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
         &self,
@@ -202,35 +203,7 @@ impl WheelRail {
         wrenches: &mut Wrenches,
         out: &mut [WheelForces; 2],
     ) -> Result<()> {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: the processor has just been found to support AVX, the only feature the
-            // function enables.
-            return unsafe { self.apply_avx(w, t, states, plane, speed, mode, wrenches, out) };
-        }
-        self.apply_on(w, t, states, plane, speed, mode, wrenches, out)
-    }
-
-    /// [`Self::apply`] compiled for AVX. Why: the table look-up's interpolation of two contact
-    /// points of nine quantities runs four quantities per register instead of two, and the
-    /// three-operand encoding spares the register copies. The operations are the IEEE
-    /// operations of the baseline code in its order (AVX has no fused multiply-add, and Rust
-    /// never contracts), and the library functions called are the same, so the bits are.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn apply_avx(
-        &self,
-        w: usize,
-        t: f64,
-        states: &BodyStates,
-        plane: &RailPlane,
-        speed: f64,
-        mode: ContactMode,
-        wrenches: &mut Wrenches,
-        out: &mut [WheelForces; 2],
-    ) -> Result<()> {
-        self.apply_on(w, t, states, plane, speed, mode, wrenches, out)
+        apply_copy(self, w, t, states, plane, speed, mode, wrenches, out)
     }
 
     /// The body of [`Self::apply`], inlined into each of its compilations.
@@ -385,6 +358,28 @@ impl WheelRail {
         out[..sides_done].copy_from_slice(&forces[..sides_done]);
         found
     }
+}
+
+/// [`WheelRail::apply`], compiled for the baseline and for AVX (the `simd` module's dispatch).
+/// Why AVX: the table look-up's interpolation of two contact points of nine quantities runs four
+/// quantities per register instead of two, and the three-operand encoding spares the register
+/// copies. The operations are the IEEE operations of the baseline code in its order (no fused
+/// multiply-add, and Rust never contracts), and the library functions called are the same, so
+/// the bits are.
+#[multiversion(targets("x86_64+avx"))]
+#[allow(clippy::too_many_arguments)]
+fn apply_copy(
+    contact: &WheelRail,
+    w: usize,
+    t: f64,
+    states: &BodyStates,
+    plane: &RailPlane,
+    speed: f64,
+    mode: ContactMode,
+    wrenches: &mut Wrenches,
+    out: &mut [WheelForces; 2],
+) -> Result<()> {
+    contact.apply_on(w, t, states, plane, speed, mode, wrenches, out)
 }
 
 fn side_name(side: Side) -> &'static str {

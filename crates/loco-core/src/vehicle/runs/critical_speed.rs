@@ -208,7 +208,7 @@ pub fn nonlinear_critical_speed(
                 }
                 history.push_back(std::array::from_fn(|w| y[wheelset(w) + Y]));
             }
-            if n >= steps_per_window && (n - steps_per_window) % hop == 0 {
+            if n >= steps_per_window && (n - steps_per_window).is_multiple_of(hop) {
                 let amplitude = window_amplitude(&history);
                 let window_start = (n - steps_per_window) as f64 * dt;
                 let window_end = n as f64 * dt;

@@ -125,14 +125,9 @@ impl DecayingStates {
         assert!(deflections.len() >= n && k.len() >= self.end);
         let (rates, others) = k.split_at_mut(2 * self.n_dof);
         self.elongations.for_each(rates, |i, elongation_rate| {
-            // SAFETY: `i` is a row of `elongations`, one per state (`i < n`), and each state's
-            // index is in `2·n_dof..end` (`new`); the lengths were checked above.
-            unsafe {
-                let s = self.states.get_unchecked(i);
-                let o = s.index - 2 * self.n_dof;
-                let r = others.get_unchecked_mut(o);
-                *r = elongation_rate - *r + s.rate * deflections.get_unchecked(i);
-            }
+            let s = &self.states[i];
+            let r = &mut others[s.index - 2 * self.n_dof];
+            *r = elongation_rate - *r + s.rate * deflections[i];
         });
     }
 
@@ -169,19 +164,15 @@ impl DecayingStates {
         // The coordinates the elongations read, and the states written (after them).
         let (coordinates, others) = out.split_at_mut(2 * self.n_dof);
         self.elongations.for_each(coordinates, |i, sum| {
-            // SAFETY: `i` is a row of `elongations`, one per state (`i < n`), and each state's
-            // index is in `2·n_dof..end` (`new`); the lengths were checked above.
-            unsafe {
-                let s = self.states.get_unchecked(i);
-                let c = p.coefficients.get_unchecked(i);
-                let mut d = c[0] * start.get_unchecked(i);
-                for (k, wk) in w.iter().enumerate() {
-                    d += c[k + 1] * wk.get_unchecked(s.index);
-                }
-                *deflections.get_unchecked_mut(i) = d;
-                // `DecayingState::elongation_at` of the stage, less `δ`.
-                *others.get_unchecked_mut(s.index - 2 * self.n_dof) = sum + s.offset - d;
+            let s = &self.states[i];
+            let c = &p.coefficients[i];
+            let mut d = c[0] * start[i];
+            for (k, wk) in w.iter().enumerate() {
+                d += c[k + 1] * wk[s.index];
             }
+            deflections[i] = d;
+            // `DecayingState::elongation_at` of the stage, less `δ`.
+            others[s.index - 2 * self.n_dof] = sum + s.offset - d;
         });
     }
 }

@@ -130,11 +130,11 @@ impl ExponentialRk4 {
         linear.propagate(linear.half, (y, d0, sy), &[k2], &mut scratch, (stage, db));
         system.derivatives(t + 0.5 * h, stage, k3);
         linear.remove(stage, (db, ss), k3);
-        avx_or_not!(extrapolate(w0, k3, k1));
+        dispatched::extrapolate(w0, k3, k1);
         linear.propagate(linear.half, (a, da, sa), &[w0], &mut scratch, (stage, dc));
         system.derivatives(t_end, stage, k4);
         linear.remove(stage, (dc, ss), k4);
-        avx_or_not!(quadratic(w1, w2, [&k1[..], &k2[..], &k3[..], &k4[..]], h));
+        dispatched::quadratic(w1, w2, [&k1[..], &k2[..], &k3[..], &k4[..]], h);
         let end = (&mut stage[..], &mut d_end[..]);
         linear.propagate(linear.full, (y, d0, sy), &[k1, w1, w2], &mut scratch, end);
         y.copy_from_slice(stage);
@@ -218,48 +218,31 @@ fn propagate(
     propagator.apply(input, scratch.output);
     // τ^(k+1)/(k+1)! for k = 0..2.
     let c = [tau, tau * tau / 2.0, tau * tau * tau / 6.0];
-    avx_or_not!(polynomial(out, y0, w, c));
+    dispatched::polynomial(out, y0, w, c);
     let output = &*scratch.output;
     part.add_response(&output[..r], -1.0, &mut out[n..2 * n]);
     part.add_response(&output[r..2 * r], 1.0, &mut out[..n]);
 }
 
-/// Calls `f(args)` through `avx::f`, its copy compiled for AVX, when the processor has it.
+/// The loops over all states in the baseline and the AVX copy (the module `simd`'s dispatch).
 ///
 /// Why: the loops over all states were a third of the propagation's instructions in SSE2's
 /// two lanes; AVX's four take the same IEEE operations per state (separate multiplies, adds and
 /// divisions, no fused multiply-add), so the results are the same bits.
-macro_rules! avx_or_not {
-    ($f:ident($($arg:expr),*)) => {{
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: the processor has just been found to support AVX, the only feature the
-            // function enables.
-            unsafe { avx::$f($($arg),*) };
-        } else {
-            $f($($arg),*);
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        $f($($arg),*);
-    }};
-}
-use avx_or_not;
+mod dispatched {
+    use crate::simd::multiversion;
 
-/// The loops over all states compiled for AVX (see [`avx_or_not`]); the processor must
-/// support AVX.
-#[cfg(target_arch = "x86_64")]
-mod avx {
-    #[target_feature(enable = "avx")]
+    #[multiversion(targets("x86_64+avx"))]
     pub(super) fn polynomial(out: &mut [f64], y0: &[f64], w: &[&[f64]], c: [f64; 3]) {
         super::polynomial(out, y0, w, c);
     }
 
-    #[target_feature(enable = "avx")]
+    #[multiversion(targets("x86_64+avx"))]
     pub(super) fn extrapolate(w0: &mut [f64], k3: &[f64], k1: &[f64]) {
         super::extrapolate(w0, k3, k1);
     }
 
-    #[target_feature(enable = "avx")]
+    #[multiversion(targets("x86_64+avx"))]
     pub(super) fn quadratic(w1: &mut [f64], w2: &mut [f64], k: [&[f64]; 4], h: f64) {
         super::quadratic(w1, w2, k, h);
     }

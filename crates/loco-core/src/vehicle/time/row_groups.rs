@@ -8,6 +8,8 @@
 //! `Iterator::sum`'s: from −0, term by term in increasing column order, no fused multiply-add,
 //! so the outputs are the same bits as the rows' one by one.
 
+use crate::simd::multiversion;
+
 /// A sparse row or column: (coordinate index, coefficient).
 pub type Sparse = Vec<(usize, f64)>;
 
@@ -73,22 +75,7 @@ impl RowGroups {
     /// `out[i] = Σ_j row_i[j] · x[j]` for every row `i` (the rows' outputs only).
     #[inline]
     pub fn apply(&self, x: &[f64], out: &mut [f64]) {
-        // The eight lanes of a group in AVX's two four-wide registers instead of SSE2's four
-        // two-wide ones: the same multiplies and adds per lane, so the same bits.
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: the processor has just been found to support AVX, the only feature the
-            // function enables.
-            return unsafe { self.apply_avx(x, out) };
-        }
-        self.apply_plain(x, out);
-    }
-
-    /// [`Self::apply_plain`] compiled for AVX; the processor must support it.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    fn apply_avx(&self, x: &[f64], out: &mut [f64]) {
-        self.apply_plain(x, out);
+        apply_copy(self, x, out);
     }
 
     /// [`Self::apply`] for any processor.
@@ -110,6 +97,14 @@ impl RowGroups {
             out[*i] = row.iter().map(|&(j, c)| c * x[j]).sum();
         }
     }
+}
+
+/// [`RowGroups::apply_plain`] in the baseline and the AVX copy (the module `simd`'s dispatch):
+/// the eight lanes of a group in AVX's two four-wide registers instead of SSE2's four two-wide
+/// ones, the same multiplies and adds per lane, so the same bits.
+#[multiversion(targets("x86_64+avx"))]
+fn apply_copy(rows: &RowGroups, x: &[f64], out: &mut [f64]) {
+    rows.apply_plain(x, out);
 }
 
 /// Rows of the same length evaluated four at a time, each lane with its own columns.
@@ -179,12 +174,7 @@ impl LaneRows {
             x.len() >= self.min_len,
             "LaneRows: input shorter than its columns"
         );
-        let load = |j: usize| {
-            debug_assert!(j < x.len());
-            // SAFETY: `j` is a column of this `LaneRows` (or the padding 0), so
-            // `j < self.min_len <= x.len()` by the assertion above.
-            unsafe { *x.get_unchecked(j) }
-        };
+        let load = |j: usize| x[j];
         for g in &self.groups {
             let mut sums = [-0.0; 4];
             for (j, c) in g.columns.iter().zip(&g.coefficients) {

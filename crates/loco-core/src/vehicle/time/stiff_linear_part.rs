@@ -288,9 +288,7 @@ fn add_columns(columns: &[Sparse], min_len: usize, x: &[f64], scale: f64, out: &
     for (column, &xc) in columns.iter().zip(x) {
         let s = scale * xc;
         for &(i, b) in column {
-            debug_assert!(i < out.len());
-            // SAFETY: `i < min_len <= out.len()` (the caller's `min_len`, the assertion).
-            unsafe { *out.get_unchecked_mut(i) += b * s };
+            out[i] += b * s;
         }
     }
 }

@@ -5,27 +5,22 @@
 //!
 //! Why lanes: turning 25 wrenches (two cross products each) cost about 70 instructions a body in
 //! every evaluation, 2.7 % of a curved run. Every body does the same operations, so four bodies
-//! are turned in lockstep in one AVX register where the processor has it (detected at run time,
+//! are turned in lockstep (one AVX register per quantity in the AVX copy, see the module `simd`,
 //! as `bushing_lanes.rs` does); the per-body constants are kept four to a lane group when the
 //! frames are computed. Each lane does the scalar code's IEEE operations in its order (no fused
 //! multiply-add, no reordering): the same bits.
 
-// Elsewhere the bodies are turned one at a time and the AVX lanes are not used.
-#![cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
-
 use super::{CurvedTrack, FrameWork};
+use crate::simd::vec3::{cross, sub};
+use crate::simd::{multiversion, target_cfg_f, Four, Plain};
 use crate::vehicle::model::elements::{BodyStates, Wrenches};
-use crate::vehicle::model::kinematics::{cross, sub};
 use crate::vehicle::model::layout::{N_BODIES, YAW};
-
-#[cfg(target_arch = "x86_64")]
-mod avx;
 
 /// Bodies per lane group.
 pub(super) const W: usize = 4;
 /// Lane groups covering every body (the last one partly).
 pub(super) const GROUPS: usize = N_BODIES.div_ceil(W);
-/// Lane groups whose four lanes are all bodies (the AVX path's; the rest are turned one by one).
+/// Lane groups whose four lanes are all bodies (the rest are turned one by one).
 const FULL_GROUPS: usize = N_BODIES / W;
 
 /// The state-independent terms of bodies `W·g … W·g + 3` (group g), lane l body `W·g + l`'s:
@@ -57,20 +52,56 @@ fn turn(lanes: &[ForceLanes; GROUPS], i: usize, w: &mut [f64; 6]) {
     w[5] = m[2] - q.yaw_acceleration[l];
 }
 
-/// Every body's wrench turned and its terms added: four bodies per AVX register where the
-/// processor has it, the rest (and everything elsewhere) one by one.
+/// Every body's wrench turned and its terms added: the full lane groups four bodies in
+/// lockstep, the rest one by one.
+/// In AVX registers in the AVX copy, as plain arrays in the baseline copy (the module `simd`).
+#[multiversion(targets("x86_64+avx"))]
 fn turn_all(lanes: &[ForceLanes; GROUPS], wrenches: &mut Wrenches) {
-    let mut first = 0;
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to support AVX, the only feature the
-        // function enables.
-        unsafe { avx::turn_groups(&lanes[..FULL_GROUPS], wrenches) };
-        first = FULL_GROUPS * W;
+    if target_cfg_f!(target_feature = "avx") {
+        if let Some(avx) = crate::simd::Avx::detect() {
+            return turn_all_in(avx, lanes, wrenches);
+        }
     }
-    for (i, w) in wrenches.iter_mut().enumerate().skip(first) {
+    turn_all_in(Plain, lanes, wrenches);
+}
+
+/// [`turn_all`] in the lane set `set`.
+#[inline(always)]
+fn turn_all_in<S: Four>(set: S, lanes: &[ForceLanes; GROUPS], wrenches: &mut Wrenches) {
+    for (q, rows) in lanes[..FULL_GROUPS]
+        .iter()
+        .zip(wrenches.chunks_exact_mut(W))
+    {
+        let rows: &mut [[f64; 6]; W] = rows.try_into().expect("chunks of W rows");
+        turn_group(set, q, rows);
+    }
+    for (i, w) in wrenches.iter_mut().enumerate().skip(FULL_GROUPS * W) {
         turn(lanes, i, w);
     }
+}
+
+/// [`turn`] of the four bodies of `rows`, lane by lane: the rows transposed into lanes of one
+/// component each, turned, and transposed back.
+#[inline(always)]
+fn turn_group<S: Four>(set: S, q: &ForceLanes, rows: &mut [[f64; 6]; W]) {
+    let c = set.rows_to_lanes([&rows[0], &rows[1], &rows[2], &rows[3]]);
+    let rot = [
+        set.load(&q.rot[0]),
+        set.load(&q.rot[1]),
+        set.load(&q.rot[2]),
+    ];
+    let f = sub([c[0], c[1], c[2]], cross(rot, [c[0], c[1], c[2]]));
+    let m = sub([c[3], c[4], c[5]], cross(rot, [c[3], c[4], c[5]]));
+    let out = [
+        f[0] + set.load(&q.gravity[0]),
+        f[1] + set.load(&q.gravity[1]) + set.load(&q.centripetal[0]),
+        f[2] + set.load(&q.gravity[2]) + set.load(&q.centripetal[1]),
+        m[0],
+        m[1],
+        m[2] - set.load(&q.yaw_acceleration),
+    ];
+    set.lanes_to_rows(out, rows);
 }
 
 impl CurvedTrack {
@@ -142,9 +173,12 @@ mod tests {
         }
         let mut turned = wrenches;
         turn_all(&lanes, &mut turned);
+        let mut plain = wrenches;
+        turn_all_in(Plain, &lanes, &mut plain);
         for i in 0..N_BODIES {
             let bits = |w: &[f64; 6]| w.map(f64::to_bits);
             assert_eq!(bits(&turned[i]), bits(&expected[i]), "body {i}");
+            assert_eq!(bits(&plain[i]), bits(&expected[i]), "plain lanes, body {i}");
         }
     }
 }

@@ -5,31 +5,25 @@
 
 use super::forces::W;
 use super::{free_bodies, CurvedTrack, FrameLoad, FrameWork};
+use crate::simd::multiversion;
 use crate::track::DesignPoint;
 use crate::vehicle::model::kinematics::{add, cross};
 use crate::vehicle::model::layout::N_BODIES;
+
+/// [`CurvedTrack::compute_frames_plain`] compiled for the baseline and for AVX (see the module
+/// `simd`): the same operations in the same order (no fused multiply-add), in AVX's
+/// three-operand forms that spare the copies the two-operand ones need, and some pairs of the
+/// offsets' rows four wide.
+#[multiversion(targets("x86_64+avx"))]
+fn compute_frames_copy(track: &CurvedTrack, s_r: f64, speed: f64, work: &mut FrameWork) {
+    track.compute_frames_plain(s_r, speed, work);
+}
 
 impl CurvedTrack {
     /// The frames at (`s_r`, `speed`) into `work`'s active slot: the design at every body and
     /// each body's frame offset from the reference frame.
     pub(super) fn compute_frames(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx") {
-            // SAFETY: the processor has just been found to support AVX, the only feature the
-            // function enables.
-            unsafe { self.compute_frames_avx(s_r, speed, work) };
-            return;
-        }
-        self.compute_frames_plain(s_r, speed, work);
-    }
-
-    /// [`Self::compute_frames`] compiled for AVX: the same operations in the same order (AVX
-    /// has no fused multiply-add), in the three-operand forms that spare the copies the
-    /// two-operand ones need, and some pairs of the offsets' rows four wide.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    unsafe fn compute_frames_avx(&self, s_r: f64, speed: f64, work: &mut FrameWork) {
-        self.compute_frames_plain(s_r, speed, work);
+        compute_frames_copy(self, s_r, speed, work);
     }
 
     #[inline(always)]

@@ -34,6 +34,15 @@ fn bits(w: &Wrenches) -> Vec<u64> {
     w.iter().flatten().map(|x| x.to_bits()).collect()
 }
 
+/// The lanes' forces in the plain-array lane set (the baseline copy's, on any processor).
+fn apply_plain(lanes: &BushingLanes, states: &BodyStates, wrenches: &mut Wrenches) {
+    let mut forces = Vec::new();
+    compute_in(crate::simd::Plain, lanes, states, &mut forces);
+    for slot in &lanes.slots {
+        add_in_order(slot, &forces[slot.quad], wrenches);
+    }
+}
+
 #[test]
 fn the_lanes_add_the_bits_of_one_element_at_a_time() {
     let structure = VehicleStructure::new(ParameterSet::default_vehicle()).unwrap();
@@ -49,6 +58,9 @@ fn the_lanes_add_the_bits_of_one_element_at_a_time() {
         let mut got = start;
         lanes.apply(bushings, &states, &mut got);
         assert_eq!(bits(&got), bits(&expected), "seed {seed}");
+        let mut plain = start;
+        apply_plain(&lanes, &states, &mut plain);
+        assert_eq!(bits(&plain), bits(&expected), "plain lanes, seed {seed}");
     }
 }
 
@@ -65,4 +77,7 @@ fn a_subset_of_elements_fills_part_of_a_quad() {
     let mut got = start;
     lanes.apply(&bushings, &states, &mut got);
     assert_eq!(bits(&got), bits(&expected));
+    let mut plain = start;
+    apply_plain(&lanes, &states, &mut plain);
+    assert_eq!(bits(&plain), bits(&expected));
 }

@@ -43,23 +43,17 @@ fn the_lanes_give_the_strokes_and_forces_of_one_damper_at_a_time() {
         }
     });
     assert_eq!(bits(&got), bits(&expected));
-    // The scalar path (a processor without AVX) gives the same motions.
-    let mut scalar = vec![QuadMotion::default(); placements.len().div_ceil(W)];
-    scalar_motions(placements, &states, &mut scalar);
+    // The plain-array lane set (the baseline copy's) gives the same motions.
+    let mut plain = vec![QuadMotion::default(); lanes.quads.len()];
+    quad_motions_in(crate::simd::Plain, &lanes.quads, &states, &mut plain);
     lanes.with_motions(placements, &states, false, |motions| {
-        for (q, s) in motions.0.iter().zip(&scalar) {
+        for (q, p) in motions.0.iter().zip(&plain) {
             let b = |m: &QuadMotion| {
-                let mut v: Vec<u64> = m.along.iter().chain(&m.rate).map(|x| x.to_bits()).collect();
-                v.extend(
-                    m.arm_a
-                        .iter()
-                        .chain(&m.arm_b)
-                        .flatten()
-                        .map(|x| x.to_bits()),
-                );
-                v
+                let arms = m.arm_a.iter().chain(&m.arm_b).flatten();
+                let v = m.along.iter().chain(&m.rate).chain(arms);
+                v.map(|x| x.to_bits()).collect::<Vec<_>>()
             };
-            assert_eq!(b(q), b(s));
+            assert_eq!(b(q), b(p));
         }
     });
 }
