@@ -10,8 +10,7 @@
 //! its half-length a_j (u = x/a_j), tractions in Pa.
 
 use super::fastrip::{Call, StripLanes};
-use super::fastsim_lanes::{inside_test, INSIDE_BOUND};
-use crate::simd::Lanes as Simd;
+use super::fastsim_lanes::{inside_test, Lanes as Simd, INSIDE_BOUND};
 use std::f64::consts::PI;
 
 /// Strips of one pass: the default grid's 10.

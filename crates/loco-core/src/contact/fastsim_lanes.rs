@@ -16,7 +16,7 @@
 //! test that skips them costs one product per element and the chain between them carries no
 //! floor's maximum when no traction is zero.
 
-use crate::simd::Lanes;
+pub(super) use crate::simd::Lanes;
 use crate::simd::{multiversion, target_cfg_f};
 
 /// |p|² ≤ bound²·this is inside the bound whatever the rounding (of the square, the root and the
