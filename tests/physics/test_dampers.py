@@ -186,6 +186,7 @@ def test_damper_bench_command(tmp_path: Path) -> None:
     assert (tmp_path / "valve_cutoff_vs_amplitude.png").stat().st_size > 10_000
 
 
+@pytest.mark.slow
 def test_the_valve_bench_gives_the_same_tables_on_any_number_of_threads(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -179,6 +179,7 @@ if __name__ == "__main__":
 """
 
 
+@pytest.mark.slow
 def test_ctrl_c_cancels_the_futures(tmp_path: Path) -> None:
     """SIGINT to a campaign on a cluster: the client cancels its futures and closes the
     cluster it started, the process ends with KeyboardInterrupt, the finished chunks are

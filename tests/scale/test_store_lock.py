@@ -64,6 +64,7 @@ def _answer(process: subprocess.Popen[str]) -> dict[str, object]:
     return json.loads(out.strip().splitlines()[-1])
 
 
+@pytest.mark.slow
 def test_a_second_writer_fails_at_once_naming_the_first_and_no_sample_runs_twice(
     tmp_path: Path,
 ) -> None:

@@ -76,6 +76,7 @@ def test_refuses_failed_samples() -> None:
         select_surrogate(x, y, BOUNDS, n_splits=3)
 
 
+@pytest.mark.slow
 def test_nested_choice_is_made_on_the_outer_training_folds_only(selection) -> None:  # type: ignore[no-untyped-def]
     x, sel = selection
     y = smooth(x)
@@ -118,6 +119,7 @@ def test_gp_kernels() -> None:
         GaussianProcessSurrogate(BOUNDS, kernel="cubic")
 
 
+@pytest.mark.slow
 def test_objectives_in_parallel_processes_give_the_serial_result() -> None:
     from loco.studies.parameters import bounds_si
     from loco.studies.surrogate_validation import select_surrogates
