@@ -32,7 +32,7 @@ from threadpoolctl import threadpool_limits
 
 from loco.studies.parameter_study import OBJECTIVES
 from loco.studies.parameters import bounds_si, names
-from loco.studies.surrogate import r2_score
+from loco.studies.rbf_network import r2_score
 
 #: The variants run when none is named: the stage's GP first.
 DEFAULT_VARIANTS = (

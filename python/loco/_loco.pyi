@@ -133,8 +133,7 @@ def kinematic_swing(
 # --- creep (creep.rs) ---------------------------------------------------------------------------
 
 __all__ += [
-    "fastrip",
-    "fastsim",
+    "CreepSolver",
     "hertz_contact",
     "hertz_stiffness",
     "kalker_coefficients",
@@ -167,35 +166,30 @@ def linear_creep_forces(
     nu: float,
     shear_modulus: float,
 ) -> tuple[float, float, float]: ...
-def fastsim(
-    a: float,
-    b: float,
-    normal_force: float,
-    creepage_long: float,
-    creepage_lat: float,
-    spin: float,
-    mu: float,
-    nu: float,
-    shear_modulus: float,
-    nx: int,
-    ny: int,
-    bound: str,
-    kalker_factor: float,
-) -> tuple[float, float, float]: ...
-def fastrip(
-    a: float,
-    b: float,
-    normal_force: float,
-    creepage_long: float,
-    creepage_lat: float,
-    spin: float,
-    mu: float,
-    nu: float,
-    shear_modulus: float,
-    nx: int,
-    ny: int,
-    kalker_factor: float,
-) -> tuple[float, float, float]: ...
+
+@final
+class CreepSolver:
+    @staticmethod
+    def fastsim(
+        nu: float,
+        shear_modulus: float,
+        grid: tuple[int, int],
+        bound: str,
+        kalker_factor: float,
+    ) -> CreepSolver: ...
+    @staticmethod
+    def fastrip(
+        nu: float, shear_modulus: float, grid: tuple[int, int], kalker_factor: float
+    ) -> CreepSolver: ...
+    def creep_forces(
+        self,
+        a: float,
+        b: float,
+        normal_force: float,
+        creepages: tuple[float, float, float],
+        mu: float,
+    ) -> tuple[float, float, float]: ...
+
 def wheelset_creepages(
     speed: float,
     lateral_velocity: float,

@@ -19,6 +19,8 @@ from loco import _loco
 __all__ = [
     "CreepForces",
     "Creepages",
+    "Fastrip",
+    "Fastsim",
     "HertzResult",
     "KalkerCoefficients",
     "fastrip",
@@ -132,6 +134,68 @@ def linear_creep_forces(
     )
 
 
+class _Solver:
+    """A creep-force solver built once; :meth:`creep_forces` evaluates a contact."""
+
+    _native: _loco.CreepSolver
+
+    def creep_forces(
+        self,
+        a: float,
+        b: float,
+        normal_force: float,
+        creepages: Creepages | tuple[float, float, float],
+        mu: float = 0.3,
+    ) -> CreepForces:
+        """Creep forces on an ellipse of semi-axes ``a`` (rolling direction) and ``b`` (m)
+        under ``normal_force`` (N) at ``creepages`` (ξ, η, φ) with friction coefficient ``mu``."""
+        xi, eta, phi = creepages
+        return CreepForces(*self._native.creep_forces(a, b, normal_force, (xi, eta, phi), mu))
+
+
+class Fastsim(_Solver):
+    """Kalker's FASTSIM, built once for a material, a ``grid = (nx, ny)`` discretisation, a
+    traction bound and a coefficient factor.
+
+    ``nx`` elements per strip along the rolling direction, ``ny`` strips; rolling in +x (the
+    leading edge is at x = +a). ``kalker_factor`` divides the flexibilities (1: Kalker's values).
+    Poisson's ratio ``nu`` (–) and ``shear_modulus`` (Pa) are the wheel and rail steel's.
+    """
+
+    def __init__(
+        self,
+        *,
+        nu: float = STEEL_POISSON_RATIO,
+        shear_modulus: float = STEEL_SHEAR_MODULUS,
+        grid: tuple[int, int] = (10, 10),
+        bound: Literal["parabolic", "elliptic"] = "parabolic",
+        kalker_factor: float = 1.0,
+    ) -> None:
+        nx, ny = grid
+        self._native = _loco.CreepSolver.fastsim(nu, shear_modulus, (nx, ny), bound, kalker_factor)
+
+
+class Fastrip(_Solver):
+    """FaStrip (Sichani, Enblom & Berg 2016, as modified in CONTACT), built once for a material,
+    a ``grid = (nx, ny)`` and a coefficient factor.
+
+    Strip theory with spin in the adhesion zone of every strip, FASTSIM's traction direction on
+    the elliptic bound in the slip zone; ``nx`` elements per strip for the slip zone, ``ny``
+    strips. ``kalker_factor`` scales the creepage coefficients (1: Kalker's).
+    """
+
+    def __init__(
+        self,
+        *,
+        nu: float = STEEL_POISSON_RATIO,
+        shear_modulus: float = STEEL_SHEAR_MODULUS,
+        grid: tuple[int, int] = (10, 10),
+        kalker_factor: float = 1.0,
+    ) -> None:
+        nx, ny = grid
+        self._native = _loco.CreepSolver.fastrip(nu, shear_modulus, (nx, ny), kalker_factor)
+
+
 def fastsim(
     a: float,
     b: float,
@@ -146,29 +210,12 @@ def fastsim(
     bound: Literal["parabolic", "elliptic"] = "parabolic",
     kalker_factor: float = 1.0,
 ) -> CreepForces:
-    """Creep forces by Kalker's FASTSIM on a ``grid = (nx, ny)`` discretisation.
-
-    ``nx`` elements per strip along the rolling direction, ``ny`` strips; rolling in +x (the
-    leading edge is at x = +a). ``kalker_factor`` divides the flexibilities (1: Kalker's values).
-    """
-    nx, ny = grid
-    return CreepForces(
-        *_loco.fastsim(
-            a,
-            b,
-            normal_force,
-            creepage_long,
-            creepage_lat,
-            spin,
-            mu,
-            nu,
-            shear_modulus,
-            nx,
-            ny,
-            bound,
-            kalker_factor,
-        )
+    """One contact's creep forces by :class:`Fastsim` (a solver built for this call; build one
+    :class:`Fastsim` to evaluate many contacts)."""
+    solver = Fastsim(
+        nu=nu, shear_modulus=shear_modulus, grid=grid, bound=bound, kalker_factor=kalker_factor
     )
+    return solver.creep_forces(a, b, normal_force, (creepage_long, creepage_lat, spin), mu)
 
 
 def fastrip(
@@ -184,29 +231,10 @@ def fastrip(
     grid: tuple[int, int] = (10, 10),
     kalker_factor: float = 1.0,
 ) -> CreepForces:
-    """Creep forces by FaStrip (Sichani, Enblom & Berg 2016, as modified in CONTACT).
-
-    Strip theory with spin in the adhesion zone of every strip, FASTSIM's traction direction on
-    the elliptic bound in the slip zone; ``grid = (nx, ny)``: ``nx`` elements per strip for the
-    slip zone, ``ny`` strips. ``kalker_factor`` scales the creepage coefficients (1: Kalker's).
-    """
-    nx, ny = grid
-    return CreepForces(
-        *_loco.fastrip(
-            a,
-            b,
-            normal_force,
-            creepage_long,
-            creepage_lat,
-            spin,
-            mu,
-            nu,
-            shear_modulus,
-            nx,
-            ny,
-            kalker_factor,
-        )
-    )
+    """One contact's creep forces by :class:`Fastrip` (a solver built for this call; build one
+    :class:`Fastrip` to evaluate many contacts)."""
+    solver = Fastrip(nu=nu, shear_modulus=shear_modulus, grid=grid, kalker_factor=kalker_factor)
+    return solver.creep_forces(a, b, normal_force, (creepage_long, creepage_lat, spin), mu)
 
 
 def wheelset_creepages(

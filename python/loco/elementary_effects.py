@@ -8,16 +8,21 @@ one elementary effect where both its points have a finite output, so a missing p
 the two steps that touch it. With no missing output the statistics are SALib's: ``mu_star`` the
 mean absolute effect, ``mu`` the mean, ``sigma`` the standard deviation (ddof 1), and
 ``mu_star_conf`` the half-width of the 95 % bootstrap interval of ``mu_star`` (1000 resamples).
-Effects are in the output's unit for a step across the input's whole range.
+Effects are in the output's unit for a step across the input's whole range. :func:`plot_morris`
+draws μ* against σ.
 """
 
 from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-__all__ = ["elementary_effects"]
+__all__ = ["elementary_effects", "plot_morris"]
 
 #: Bootstrap resamples of the interval of μ*.
 RESAMPLES = 1000
@@ -63,3 +68,34 @@ def elementary_effects(
     return pd.DataFrame(
         rows, columns=["input", "mu_star", "mu", "sigma", "mu_star_conf", "effects"]
     )
+
+
+def plot_morris(result: pd.DataFrame, top: int = 5, path: str | Path | None = None) -> Any:
+    """μ* against σ per output (one panel each) of a :func:`loco.uncertainty.morris` table, the
+    ``top`` inputs of each labelled; saved to ``path`` when given. Returns the matplotlib
+    figure."""
+    import matplotlib
+
+    if path is not None:
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    names = list(dict.fromkeys(result["output"]))
+    cols = min(len(names), 3)
+    rows = math.ceil(len(names) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 4.2 * rows), squeeze=False)
+    for ax, name in zip(axes.flat, names, strict=False):
+        part = result[result["output"] == name].sort_values("mu_star", ascending=False)
+        ax.scatter(part["mu_star"], part["sigma"], s=12, color="0.5")
+        for _, r in part.head(top).iterrows():
+            ax.scatter([r["mu_star"]], [r["sigma"]], s=18, color="C3")
+            ax.annotate(r["input"], (r["mu_star"], r["sigma"]), fontsize=7)
+        ax.set_title(name, fontsize=9)
+        ax.set_xlabel("μ*")
+        ax.set_ylabel("σ")
+    for ax in list(axes.flat)[len(names) :]:
+        ax.set_visible(False)
+    fig.tight_layout()
+    if path is not None:
+        fig.savefig(path, dpi=130)
+    return fig

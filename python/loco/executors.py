@@ -23,22 +23,28 @@ import concurrent.futures
 import contextlib
 import multiprocessing
 import os
-import re
 from abc import ABC, abstractmethod
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 
 from loco import _loco
-from loco.field_types import whole, wrong_type
-from loco.simulation import Scenario
+from loco.chunks import BatchJob, Chunk, ChunkProgress, ChunkResult, run_chunk
+from loco.field_types import whole
+from loco.scheduler import (
+    CONNECT_TIMEOUT,
+    SCHEDULER_ENV,
+    check_scheduler_address,
+    connect,
+    require_distributed,
+)
 from loco.track import Track
-from loco.vehicle import Locomotive
 
 __all__ = [
+    "CONNECT_TIMEOUT",
+    "SCHEDULER_ENV",
     "BatchJob",
     "Chunk",
     "ChunkResult",
@@ -51,98 +57,6 @@ __all__ = [
     "run_chunk",
     "task_pool",
 ]
-
-FloatArray = npt.NDArray[np.float64]
-#: Kept time histories of a chunk: sample index -> (time (s), channel names, channels).
-Histories = dict[int, tuple[FloatArray, list[str], FloatArray]]
-#: ``progress(done, failed)`` within the running chunk (local executor only).
-ChunkProgress = Callable[[int, int], object]
-
-#: Environment variable naming a running Dask scheduler (the ``distributed`` convention).
-SCHEDULER_ENV = "DASK_SCHEDULER_ADDRESS"
-
-
-def require_distributed() -> Any:
-    """The ``distributed`` module, or an :class:`ImportError` naming the extra that installs it."""
-    try:
-        import distributed
-    except ImportError as e:
-        raise ImportError(
-            "running on a Dask cluster needs the optional dependency `distributed`: "
-            "pip install 'loco[distributed]'"
-        ) from e
-    return distributed
-
-
-@dataclass(frozen=True)
-class BatchJob:
-    """What every chunk of a campaign shares: the vehicle, the scenario (and so its track), the
-    track seed and the column names. Sent once per worker."""
-
-    vehicle: Locomotive
-    scenario: Scenario
-    names: tuple[str, ...]
-    seed: int | None = None
-    #: A track per sample: stream = the sample's index in the campaign's design.
-    per_sample_track: bool = False
-
-
-@dataclass(frozen=True)
-class Chunk:
-    """Samples ``indices`` (positions in the campaign's design) with their ``rows`` (SI);
-    ``histories``: the indices whose time histories come back."""
-
-    indices: npt.NDArray[np.int64]
-    rows: FloatArray
-    histories: tuple[int, ...] = ()
-
-
-@dataclass(frozen=True)
-class ChunkResult:
-    """The outcome of a chunk, rows in the order of ``indices``."""
-
-    indices: npt.NDArray[np.int64]
-    metric_names: list[str]
-    metrics: FloatArray
-    status: npt.NDArray[np.int32]
-    messages: list[str]
-    histories: Histories
-    #: (rows, 4) run statistics, columns :data:`loco.simulation.RUN_STATISTICS`.
-    statistics: FloatArray
-
-
-def run_chunk(
-    job: BatchJob, chunk: Chunk, threads: int = 0, progress: ChunkProgress | None = None
-) -> ChunkResult:
-    """Run one chunk as one native batch on ``threads`` rayon threads (0: one per core)."""
-    local = {int(i): k for k, i in enumerate(chunk.indices)}
-    keep = sorted(local[i] for i in chunk.histories if i in local)
-    try:
-        metric_names, metrics, status, messages, kept, statistics = _loco.run_batch(
-            job.vehicle.native,
-            job.scenario.native(seed=job.seed),
-            np.ascontiguousarray(chunk.rows, dtype=np.float64),
-            list(job.names),
-            threads=threads,
-            per_sample_track=job.per_sample_track,
-            track_streams=[int(i) for i in chunk.indices] if job.per_sample_track else None,
-            histories=keep,
-            progress=progress,
-        )
-    except _loco.ParameterError as e:
-        # The native message numbers rows within the chunk; name the campaign's row instead,
-        # keeping the class (a `ParameterRangeError` stays one on the driver).
-        text = re.sub(r"\brow (\d+)", lambda m: f"row {chunk.indices[int(m[1])]}", str(e))
-        raise type(e)(text) from None
-    return ChunkResult(
-        indices=chunk.indices,
-        metric_names=list(metric_names),
-        metrics=metrics,
-        status=status,
-        messages=list(messages),
-        histories={int(chunk.indices[k]): (t, list(c), ch) for k, t, c, ch in kept},
-        statistics=statistics,
-    )
 
 
 class Executor(ABC):
@@ -266,7 +180,7 @@ class DaskExecutor(Executor):
             raise _loco.ParameterError(f"invalid parameter `threads`: must be >= 1, got {threads}")
         self._owned: list[Any] = []
         if client is None and address is not None:
-            client = _connect(distributed, address)
+            client = connect(distributed, address)
             self._owned.append(client)
         elif client is None:
             cluster = distributed.LocalCluster(
@@ -338,60 +252,6 @@ class DaskExecutor(Executor):
         for owned in self._owned:
             owned.close()
         self._owned.clear()
-
-
-#: How long a connection to a Dask scheduler may take, s: a scheduler on a network answers in
-#: well under a second, so a few seconds tell "unreachable" without the client's 30 s default.
-CONNECT_TIMEOUT = 5.0
-
-
-def check_scheduler_address(address: str, origin: str = "scheduler") -> str:
-    """``address`` if it is a Dask scheduler address (``tcp://host:port``, ``host:port``, or
-    another protocol Dask knows, ``tls://``, ``inproc://``, ...), else a
-    :class:`loco.ParameterError` naming ``origin`` (the option or environment variable)."""
-    require_distributed()
-    from distributed.comm import parse_address
-    from distributed.comm.addressing import parse_host_port
-    from distributed.comm.registry import backends
-
-    if not isinstance(address, str) or not address.strip():
-        raise wrong_type(origin, "a scheduler address such as tcp://host:8786", address)
-
-    def refuse(why: str) -> _loco.ParameterError:
-        return _loco.ParameterError(
-            f"invalid parameter `{origin}`: {address!r} is not a scheduler address ({why}); "
-            "expected e.g. tcp://host:8786"
-        )
-
-    try:
-        protocol, location = parse_address(address)
-        if protocol not in backends:
-            raise refuse(f"unknown protocol {protocol!r}; known: {', '.join(sorted(backends))}")
-        if protocol != "inproc":
-            host, port = parse_host_port(location)
-            if not host or any(c.isspace() for c in host) or not 0 < port < 65536:
-                raise refuse("a host and a port 1-65535 are needed")
-    except (ValueError, TypeError) as e:
-        raise refuse(str(e)) from None
-    return address
-
-
-def _connect(distributed: Any, address: str) -> Any:
-    """A client of the scheduler at ``address``, or a :class:`loco.LocoError` within
-    :data:`CONNECT_TIMEOUT` s when it cannot be reached, or when what answers there is not a
-    Dask scheduler (a web server's reply read as Dask's frames asks for exabytes)."""
-    check_scheduler_address(address)
-    try:
-        return distributed.Client(address, timeout=f"{CONNECT_TIMEOUT}s")
-    except (OSError, TimeoutError) as e:
-        raise _loco.LocoError(
-            f"cannot reach the Dask scheduler at {address} within {CONNECT_TIMEOUT:g} s: {e}"
-        ) from None
-    except Exception as e:  # any other failure of the handshake is the address's
-        raise _loco.LocoError(
-            f"cannot reach the Dask scheduler at {address}: what answers there is not a Dask "
-            f"scheduler ({type(e).__name__}: {e})"
-        ) from None
 
 
 @contextlib.contextmanager

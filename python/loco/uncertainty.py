@@ -24,7 +24,7 @@ from threadpoolctl import threadpool_limits
 
 from loco import _loco
 from loco.dampers import PRESETS, Damper, maxwell
-from loco.elementary_effects import elementary_effects
+from loco.elementary_effects import elementary_effects, plot_morris
 from loco.profiles import jm3
 from loco.schema import parameter_schema
 from loco.simulation import SCENARIOS, Scenario
@@ -373,33 +373,3 @@ def analyse(
         frame.insert(0, "output", name)
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)
-
-
-def plot_morris(result: pd.DataFrame, top: int = 5, path: str | Path | None = None) -> Any:
-    """μ* against σ per output (one panel each) of a :func:`morris` table, the ``top`` inputs
-    of each labelled; saved to ``path`` when given. Returns the matplotlib figure."""
-    import matplotlib
-
-    if path is not None:
-        matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    names = list(dict.fromkeys(result["output"]))
-    cols = min(len(names), 3)
-    rows = math.ceil(len(names) / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 4.2 * rows), squeeze=False)
-    for ax, name in zip(axes.flat, names, strict=False):
-        part = result[result["output"] == name].sort_values("mu_star", ascending=False)
-        ax.scatter(part["mu_star"], part["sigma"], s=12, color="0.5")
-        for _, r in part.head(top).iterrows():
-            ax.scatter([r["mu_star"]], [r["sigma"]], s=18, color="C3")
-            ax.annotate(r["input"], (r["mu_star"], r["sigma"]), fontsize=7)
-        ax.set_title(name, fontsize=9)
-        ax.set_xlabel("μ*")
-        ax.set_ylabel("σ")
-    for ax in list(axes.flat)[len(names) :]:
-        ax.set_visible(False)
-    fig.tight_layout()
-    if path is not None:
-        fig.savefig(path, dpi=130)
-    return fig

@@ -3,9 +3,10 @@
 Runs the same batch (default 8 samples of the six study parameters, S_high, 200 km/h, 500 m)
 through ``loco.run_batch`` on 1 and 2 threads and through the ``loco-batch`` binary on 2 threads,
 ``--repeat`` times each, and prints the best wall-clock time of each with the derived figures
-(speed-up from 1 to 2 threads, Python overhead against the binary). Run it on a quiet machine:
+(speed-up from 1 to 2 threads, Python overhead against the binary). Run it on a quiet machine;
+``--record`` writes the benchmark record the Performance page is generated from:
 
-    python scripts/bench/bench_batch.py --samples 8 --repeat 3
+    python scripts/bench/bench_batch.py --samples 16 --repeat 3 --record
 """
 
 from __future__ import annotations
@@ -15,6 +16,8 @@ import subprocess
 import tempfile
 import time
 from pathlib import Path
+
+import bench_record
 
 import loco
 from loco.studies.parameters import names
@@ -30,8 +33,12 @@ def main() -> None:
     parser.add_argument("--distance", type=float, default=500.0, help="m")
     parser.add_argument("--binary", type=Path, default=ROOT / "target/release/loco-batch")
     parser.add_argument(
-        "--integrator", choices=loco.simulation.INTEGRATORS, default="rk4", help="time scheme"
+        "--integrator",
+        choices=loco.simulation.INTEGRATORS,
+        default=loco.Scenario.integrator,
+        help="time scheme (default: the study's)",
     )
+    parser.add_argument("--record", action="store_true", help="write the benchmark record")
     args = parser.parse_args()
     step = loco.simulation.INTEGRATOR_STEPS[args.integrator]
 
@@ -83,6 +90,18 @@ def main() -> None:
     overhead = best["python, 2 threads"] / best["binary, 2 threads"] - 1.0
     print(f"speed-up 1 -> 2 threads: {speedup:.2f}x (target >= 1.8x)")
     print(f"Python overhead against the binary: {100 * overhead:+.1f} % (target < 3 %)")
+    if args.record:
+        bench_record.write(
+            "bench_batch",
+            {
+                "samples": {"value": n, "unit": ""},
+                "python_1_thread": bench_record.figure(best["python, 1 thread"], "s"),
+                "python_2_threads": bench_record.figure(best["python, 2 threads"], "s"),
+                "binary_2_threads": bench_record.figure(best["binary, 2 threads"], "s"),
+                "speedup": bench_record.figure(speedup, "×"),
+                "python_overhead": bench_record.figure(100 * overhead, "%", 2),
+            },
+        )
 
 
 if __name__ == "__main__":

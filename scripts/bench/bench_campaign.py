@@ -15,6 +15,8 @@ one way once and prints its times (to alternate two versions of the code, ``PYTH
 pointing at each).
 
     python scripts/bench/bench_campaign.py --samples 256 --chunk-size 0 --store --repeat 3
+
+``--record`` writes the benchmark record the Performance page is generated from.
 """
 
 from __future__ import annotations
@@ -24,6 +26,8 @@ import statistics
 import tempfile
 import time
 from collections.abc import Callable
+
+import bench_record
 
 import loco
 from loco.campaign import run_campaign
@@ -52,6 +56,7 @@ def main() -> None:
     parser.add_argument("--store", action="store_true")
     parser.add_argument("--mode", choices=("both", "batch", "campaign"), default="both")
     parser.add_argument("--creep", choices=loco.simulation.CREEP_MODELS, default="fastsim")
+    parser.add_argument("--record", action="store_true", help="write the benchmark record")
     args = parser.parse_args()
     params = latin_hypercube(args.samples, seed=1)
     scenario = loco.Scenario(
@@ -93,6 +98,17 @@ def main() -> None:
     pairs = zip(runs["batch"], runs["campaign"], strict=True)
     ratio = statistics.median(c[0] / b[0] for b, c in pairs)
     print(f"campaign / batch, median of paired ratios: {ratio:.3f}")
+    if args.record:
+        figures = {
+            "samples": {"value": args.samples, "unit": ""},
+            "chunks": {"value": -(-args.samples // args.chunk_size) if args.chunk_size else 0,
+                       "unit": ""},
+            "ratio": bench_record.figure(ratio, "×"),
+        }  # fmt: skip
+        for name, times in runs.items():
+            wall = statistics.median(w for w, _, _ in times)
+            figures[f"{name}_wall"] = bench_record.figure(wall, "s")
+        bench_record.write("bench_campaign", figures)
 
 
 if __name__ == "__main__":

@@ -17,6 +17,9 @@ for k = 6; 14 336 with the second-order terms) of two scenarios on a
 
     python scripts/bench/bench_dask.py --samples 64 512 --distance 300 --repeat 2
     python scripts/bench/bench_dask.py --samples 64 --distance 500
+
+``--record`` writes the benchmark record the Performance page is generated from (every sample
+count's wall and CPU times, the overheads and the projection).
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ import tempfile
 import time
 from typing import Any
 
+import bench_record
 import numpy as np
 
 import loco
@@ -91,8 +95,13 @@ def main() -> None:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--cluster-cores", type=int, default=64)
+    parser.add_argument("--record", action="store_true", help="write the benchmark record")
     args = parser.parse_args()
     threads = args.workers
+    figures: dict[str, dict[str, Any]] = {
+        "distance": bench_record.figure(args.distance, "m"),
+        "cluster_cores": {"value": args.cluster_cores, "unit": ""},
+    }
     scenario = loco.Scenario(name="S_high", speed=200 / 3.6, distance=args.distance, seed=1)
     print(
         f"loco {loco.__version__}, {os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}; "
@@ -102,6 +111,7 @@ def main() -> None:
     with DaskExecutor(n_workers=args.workers, threads=1) as dask:
         startup = time.perf_counter() - start
         print(f"LocalCluster start-up: {startup:.1f} s")
+        figures["startup"] = bench_record.figure(startup, "s", 2)
         for n in args.samples:
             wall, cpu, local = _bench(n, scenario, dask, threads, args.repeat)
             per_sample = cpu["local"] / n
@@ -124,6 +134,17 @@ def main() -> None:
                 f"{args.distance:g} m) on {args.cluster_cores} cores: {projected / 60:.1f} min "
                 f"(+ cluster start-up)"
             )
+            figures[f"{n}.per_run"] = bench_record.figure(per_sample, "core-s")
+            figures[f"{n}.chunk"] = {"value": dask.default_chunk_size(n), "unit": ""}
+            for label in ("local", "local+store", "dask", "dask+store"):
+                figures[f"{n}.{label}.wall"] = bench_record.figure(wall[label], "s")
+                figures[f"{n}.{label}.cpu"] = bench_record.figure(cpu[label], "s")
+                if label != "local":
+                    extra = 100 * (cpu[label] / cpu["local"] - 1)
+                    figures[f"{n}.{label}.cpu_overhead"] = bench_record.figure(extra, "%", 2)
+            figures[f"{n}.projection"] = bench_record.figure(projected / 60, "min", 2)
+    if args.record:
+        bench_record.write("bench_dask", figures)
 
 
 if __name__ == "__main__":

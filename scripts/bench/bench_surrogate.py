@@ -1,7 +1,7 @@
 """Time of the surrogate selection on a study's training samples (the surrogate stage's fits).
 
 Loads the training tables (``monte_carlo.csv`` and ``surrogate_samples.csv`` of a ``loco
-reproduce`` output), runs :func:`loco.studies.surrogate_validation.select_surrogates` as the
+reproduce`` output), runs :func:`loco.studies.surrogate.select_surrogates` as the
 surrogate stage does (every candidate, 5 folds, the nested cross-validation) on ``--jobs``
 processes and prints the wall time, the CPU time of every process and a SHA-256 of every score,
 held-out prediction and fitted model's prediction at the samples (the same hash before and
@@ -9,6 +9,8 @@ after a change means the same numbers). To compare two versions of the code on a
 machine, alternate them (``PYTHONPATH`` pointing at each) several times and compare medians:
 
     python scripts/bench/bench_surrogate.py --out /tmp/quick
+
+``--record`` writes the benchmark record the Performance page is generated from.
 """
 
 from __future__ import annotations
@@ -19,11 +21,12 @@ import resource
 import time
 from pathlib import Path
 
+import bench_record
 import numpy as np
 from joblib.externals.loky import get_reusable_executor
 
 from loco.studies.parameter_study import load_monte_carlo
-from loco.studies.surrogate_validation import select_surrogates
+from loco.studies.surrogate import select_surrogates
 
 
 def main() -> None:
@@ -31,6 +34,7 @@ def main() -> None:
     parser.add_argument("--out", type=Path, required=True, help="a loco reproduce output")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--no-nested", action="store_true")
+    parser.add_argument("--record", action="store_true", help="write the benchmark record")
     args = parser.parse_args()
     tables = [args.out / "monte_carlo/monte_carlo.csv"]
     tables += [p for p in [args.out / "surrogate_samples/surrogate_samples.csv"] if p.exists()]
@@ -61,6 +65,14 @@ def main() -> None:
         f"{len(x)} samples, {args.jobs} jobs: {seconds:.1f} s wall, {cpu:.1f} s CPU, "
         f"results {digest.hexdigest()[:16]}"
     )
+    if args.record:
+        figures = {
+            "samples": {"value": len(x), "unit": ""},
+            "jobs": {"value": args.jobs, "unit": ""},
+            "wall": bench_record.figure(seconds, "s"),
+            "cpu": bench_record.figure(cpu, "s"),
+        }
+        bench_record.write("bench_surrogate", figures)
 
 
 if __name__ == "__main__":

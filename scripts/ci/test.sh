@@ -16,8 +16,8 @@ cargo fmt --all --check
 
 step "clippy"
 cargo clippy --workspace --all-targets --release -- -D warnings
-# The contact recorder and its replay example exist only with their feature.
-cargo clippy -p loco-core --all-targets --release --features record-contacts -- -D warnings
+# The contact recorder and its replay tool exist only with their feature.
+cargo clippy -p loco-core -p loco-dev --all-targets --release --features loco-dev/record-contacts -- -D warnings
 
 step "cargo test"
 cargo test --workspace --release

@@ -1,11 +1,11 @@
-"""The premise map of the default vehicle (``loco.studies.premise_map``): the carbody and bogie
+"""The premise map of the default vehicle (``loco.studies.premise_modes``): the carbody and bogie
 modes at 200 km/h over conicity 0.01–0.15 for a cone on a knife-edge rail and a cone on CN60,
 and the real wheel/rail pairs, each with yaw damping 100–1000 kN·s/m; and the two modes over
 speed with YD1 and YD2.
 
 Writes into ``--out`` (default ``docs/screening``): ``premise_map.csv``, ``premise_speed.csv``,
 ``premise_cells.csv`` (where the premise and its reverse hold) and ``premise_map.png``.
-Usage: ``python scripts/docs/premise_map.py [--out docs/screening] [--workers 2]``.
+Usage: ``python scripts/docs/premise_modes.py [--out docs/screening] [--workers 2]``.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from loco.studies import premise_map as pm
+from loco.studies import premise_modes as pm
 
 
 def main() -> None:

@@ -21,7 +21,7 @@ import time
 from pathlib import Path
 
 from loco.studies import premise_probability as pp
-from loco.studies.premise_sensitivity import advantage_sensitivity, premise_sensitivity
+from loco.studies.plausible import advantage_sensitivity, premise_sensitivity
 
 
 def main() -> None:

@@ -11,6 +11,8 @@ is missing. Prints and writes (``--out``, JSON) the runs, the wall and CPU time,
 second and the first- and total-order indices with their 95 % half-widths.
 
     python scripts/verify/saltelli_direct.py --base 1024 --threads 2 --out saltelli_1024.json
+
+``--record`` writes the benchmark record the Performance page is generated from.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from __future__ import annotations
 import argparse
 import json
 import resource
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -27,8 +30,11 @@ from loco.executors import LocalExecutor
 from loco.studies.parameter_study import StudySetup, labels
 from loco.studies.parameters import names
 from loco.studies.sampling import saltelli_block_size
-from loco.studies.sensitivity import sobol_direct
+from loco.studies.sobol import sobol_direct
 from loco.studies.stages import Runtime
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "bench"))
+import bench_record
 
 
 def _cpu_seconds() -> float:
@@ -51,6 +57,7 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--store", type=Path, default=None, help="campaign stores (kept)")
     parser.add_argument("--out", type=Path, default=None, help="JSON summary")
+    parser.add_argument("--record", action="store_true", help="write the benchmark record")
     args = parser.parse_args()
     second_order = not args.first_order_only
     per_objective = args.base * saltelli_block_size(len(names()), second_order)
@@ -101,6 +108,15 @@ def main() -> None:
         print(f"{s.metric}: ST {line} ({s.n_dropped} base samples dropped)")
     if args.out:
         args.out.write_text(json.dumps(summary, indent=2) + "\n")
+    if args.record:
+        figures = {
+            "base": {"value": args.base, "unit": ""},
+            "runs": {"value": runs, "unit": ""},
+            "threads": {"value": args.threads, "unit": ""},
+            "wall": bench_record.figure(wall / 60, "min"),
+            "cpu": bench_record.figure(cpu, "s"),
+        }
+        bench_record.write("saltelli_direct", figures)
 
 
 if __name__ == "__main__":

@@ -43,13 +43,13 @@ from loco.studies.evaluators import simulator_evaluator
 from loco.studies.parameter_study import OBJECTIVES, StudySetup, labels
 from loco.studies.parameters import names
 from loco.studies.sampling import latin_hypercube
+from loco.studies.surrogate import select_surrogates
 from loco.studies.surrogate_holdout import assert_disjoint, holdout_scores
 from loco.studies.surrogate_samples import (
     EXTENSION_SEED_OFFSET,
     holdout_design,
     training_design,
 )
-from loco.studies.surrogate_validation import select_surrogates
 
 
 def designs(args: argparse.Namespace) -> list[tuple[str, np.ndarray, list[str]]]:

@@ -13,7 +13,7 @@ import pytest
 from scipy import stats
 
 from loco.studies.report import StudyRecord, save_table, setting_text, write_report
-from loco.studies.sensitivity import SobolIndices, indices_note
+from loco.studies.sobol import SobolIndices, indices_note
 from loco.studies.statistics import (
     geometric_interval,
     mean_interval,

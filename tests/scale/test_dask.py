@@ -23,8 +23,8 @@ from loco.campaign import run_campaign
 from loco.executors import DaskExecutor, executor_from_options, require_distributed
 from loco.store import find_campaigns
 from loco.studies.evaluators import simulator_evaluator
-from loco.studies.optimisation import nsga2
 from loco.studies.parameters import names
+from loco.studies.pareto import nsga2
 from loco.studies.sampling import latin_hypercube
 
 pytest.importorskip("distributed", reason="needs pip install 'loco[distributed]'")

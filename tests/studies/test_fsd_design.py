@@ -12,10 +12,10 @@ import pytest
 import loco
 from loco import dampers, profiles
 from loco.conicity import equivalent_conicity
-from loco.studies import fsd_conicity, fsd_design
+from loco.studies import fsd_conicity, fsd_search
 
 #: 300 m without lead-in: the shortest record the metrics take at 200 km/h.
-SETUP = fsd_design.DesignSetup(distance=300.0, lead_in=0.0, threads=2)
+SETUP = fsd_search.DesignSetup(distance=300.0, lead_in=0.0, threads=2)
 SPEC_FSD = [200e3, 800e3, 2.0, 0.05, dampers.REFERENCE_STROKE_AMPLITUDE]
 #: YD1-like damping in both valve states: the linear critical speed on S_high is YD1's 123 km/h,
 #: below 1.1 x 200 km/h.
@@ -24,25 +24,25 @@ SOFT = [150e3, 200e3, 2.0, 0.05, 1e-3]
 
 @pytest.fixture(scope="module")
 def evaluated() -> pd.DataFrame:
-    return fsd_design.evaluate_designs(np.array([SPEC_FSD, SOFT]), SETUP)
+    return fsd_search.evaluate_designs(np.array([SPEC_FSD, SOFT]), SETUP)
 
 
 def test_designs_are_simulated_as_the_hydraulic_fsd(evaluated: pd.DataFrame) -> None:
-    assert list(evaluated.columns) == [*fsd_design.VARIABLES, *fsd_design.RESULT_COLUMNS]
+    assert list(evaluated.columns) == [*fsd_search.VARIABLES, *fsd_search.RESULT_COLUMNS]
     # The spec's design vector is the preset FSD-H: the same runs give the same numbers.
-    law = fsd_design.design_damper(SPEC_FSD)
+    law = fsd_search.design_damper(SPEC_FSD)
     assert dampers.describe(law) == dampers.describe(dampers.FSD_HYDRAULIC)
     s = loco.Scenario(name="S_low", speed=200 / 3.6, distance=300.0, yaw_damper=law)
     wy = loco.simulate(loco.Locomotive.default(), s).metrics["wy_max"]
     assert evaluated.loc[0, "W_y"] == wy
     high = loco.Scenario(name="S_high", speed=200 / 3.6, distance=100.0, yaw_damper=law)
-    v = loco.critical_speed(loco.Locomotive.default(), high, high=fsd_design.SEARCH_HIGH)
+    v = loco.critical_speed(loco.Locomotive.default(), high, high=fsd_search.SEARCH_HIGH)
     assert evaluated.loc[0, "v_crit_kmh"] == pytest.approx(float(v) * 3.6)
 
 
 def test_a_design_below_the_critical_speed_margin_is_infeasible(evaluated: pd.DataFrame) -> None:
-    limit = fsd_design.SPEED_MARGIN * SETUP.speed_kmh
-    g = fsd_design.constraint(evaluated, SETUP)
+    limit = fsd_search.SPEED_MARGIN * SETUP.speed_kmh
+    g = fsd_search.constraint(evaluated, SETUP)
     # The spec's FSD (closed valve: 285 km/h on S_high) holds; the soft design (YD1's 123 km/h)
     # violates it by the margin it misses, and the flag the front is filtered by says so.
     assert evaluated.loc[0, "v_crit_kmh"] > limit and g[0] < 0 and evaluated.loc[0, "feasible"]
@@ -51,15 +51,15 @@ def test_a_design_below_the_critical_speed_margin_is_infeasible(evaluated: pd.Da
     # A failed run or an underivable valve (NaN) counts as infeasible too.
     broken = evaluated.copy()
     broken.loc[0, "A_yb"] = np.nan
-    assert fsd_design.constraint(broken, SETUP)[0] > 0
+    assert fsd_search.constraint(broken, SETUP)[0] > 0
 
 
 def test_non_dominated_and_picks() -> None:
     frame = pd.DataFrame({"W_y": [1.0, 2.0, 1.5, 1.2, 3.0], "A_yb": [3.0, 1.0, 1.5, 3.5, 0.9]})
-    front = fsd_design.non_dominated(frame)
+    front = fsd_search.non_dominated(frame)
     assert front[["W_y", "A_yb"]].values.tolist() == [[1.0, 3.0], [1.5, 1.5], [2.0, 1.0],
                                                       [3.0, 0.9]]  # fmt: skip
-    picks = fsd_design.pick_designs(front)
+    picks = fsd_search.pick_designs(front)
     assert picks["opt. FSD (low W_y)"] == 0 and picks["opt. FSD (low A_yb)"] == 3
     assert picks["opt. FSD (knee)"] == 1
 
@@ -69,8 +69,8 @@ def test_underivable_valve_is_an_infeasible_design() -> None:
     # clear of it, a hand-given design is not).
     bad = [900e3, 600e3, 2.0, 0.05, 1e-3]
     with pytest.raises(loco.ParameterError, match="damping"):
-        fsd_design.design_damper(bad)
-    frame = fsd_design.evaluate_designs(np.array([bad]), SETUP)
+        fsd_search.design_damper(bad)
+    frame = fsd_search.evaluate_designs(np.array([bad]), SETUP)
     assert frame.loc[0, "error"] and not frame.loc[0, "feasible"]
     assert np.isnan(frame.loc[0, "W_y"])
 
@@ -79,14 +79,14 @@ def test_underivable_valve_is_an_infeasible_design() -> None:
 def test_nsga2_plumbing_on_a_tiny_case(monkeypatch: pytest.MonkeyPatch) -> None:
     """The whole loop with pymoo (2 generations of 4): every evaluated design is logged with its
     generation, and the front holds only feasible, non-dominated designs."""
-    result = fsd_design.run_design_study(SETUP, pop_size=4, n_gen=2, seed=3)
+    result = fsd_search.run_design_study(SETUP, pop_size=4, n_gen=2, seed=3)
     pop = result.population
     assert len(pop) == 8 and sorted(set(pop["generation"])) == [0, 1]
-    bounds = np.array(list(fsd_design.VARIABLES.values()))
-    x = pop[list(fsd_design.VARIABLES)].to_numpy()
+    bounds = np.array(list(fsd_search.VARIABLES.values()))
+    x = pop[list(fsd_search.VARIABLES)].to_numpy()
     assert np.all((x >= bounds[:, 0]) & (x <= bounds[:, 1]))
     assert result.front["feasible"].all()
-    assert len(result.front) == len(fsd_design.non_dominated(pop[pop["feasible"]]))
+    assert len(result.front) == len(fsd_search.non_dominated(pop[pop["feasible"]]))
     assert set(result.picks.values()) <= set(range(len(result.front)))
 
 

@@ -9,9 +9,9 @@ import pytest
 import loco
 from loco.studies.parameter_study import StudySetup, fit_surrogates, surrogate_objectives
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names
+from loco.studies.rbf_network import r2_score
 from loco.studies.sampling import latin_hypercube
 from loco.studies.stages import Runtime
-from loco.studies.surrogate import r2_score
 
 
 def test_setup_evaluator_at_the_stiff_corner() -> None:

@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 import loco
-from loco.studies import premise_map as pm
+from loco.studies import premise_modes as pm
 
 PRESETS = (200e3, 800e3)
 
@@ -74,7 +74,7 @@ def test_bad_families_and_pairs_are_refused() -> None:
 
 
 def test_the_committed_map_is_what_the_model_gives_now() -> None:
-    # A few cells of the committed map recomputed (docs/screening, scripts/docs/premise_map.py).
+    # A few cells of the committed map recomputed (docs/screening, scripts/docs/premise_modes.py).
     from pathlib import Path
 
     committed = pd.read_csv(Path(__file__).parents[2] / "docs/screening/premise_map.csv")

@@ -94,8 +94,8 @@ def test_the_advantage_sensitivity_finds_the_input_that_sets_it() -> None:
     # the forest must score well on held-out locomotives and rank `a` first.
     import numpy as np
 
+    from loco.studies.plausible import advantage_sensitivity
     from loco.studies.premise_probability import DAMPERS, JUDGE, Plausible
-    from loco.studies.premise_sensitivity import advantage_sensitivity
 
     rng = np.random.default_rng(3)
     n = 60

@@ -22,7 +22,7 @@ from loco import dampers
 from loco.cli import build_parser, main
 from loco.commands import reproduce as reproduce_command
 from loco.store import find_campaigns
-from loco.studies import fsd_comparison, fsd_design_stage
+from loco.studies import fsd_comparison, fsd_design
 from loco.studies.parameters import names
 from loco.studies.reproduce import reproduce, stages
 from loco.studies.sizes import FULL, QUICK, TINY
@@ -184,7 +184,7 @@ def test_stage_contents(run: tuple[Path, str]) -> None:
     tests = pd.read_csv(out / "fsd_comparison" / "fsd_rankings.csv")
     pairs = len(fsd_comparison.DAMPERS) * (len(fsd_comparison.DAMPERS) - 1) // 2
     assert len(tests) == 4 * pairs  # (scenario, metric) x damper pairs
-    design = fsd_design_stage.SIZES["tiny"]
+    design = fsd_design.SIZES["tiny"]
     population = pd.read_csv(out / "fsd_design" / "fsd_design_population.csv")
     assert len(population) == design.pop_size * design.n_gen
     front = pd.read_csv(out / "fsd_design" / "fsd_design_front.csv")

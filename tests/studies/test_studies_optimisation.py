@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from loco.studies.optimisation import nsga2, pick_spread, plot_pareto, verify_points
 from loco.studies.parameters import StudyParameter
+from loco.studies.pareto import nsga2, pick_spread, plot_pareto, verify_points
 
 F64 = npt.NDArray[np.float64]
 BOX = [StudyParameter(f"x{i}", 0.0, 100.0, "kN/mm", "N/m", 1e6) for i in range(3)]

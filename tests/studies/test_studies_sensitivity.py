@@ -10,7 +10,7 @@ import numpy.typing as npt
 
 from loco.studies.parameters import StudyParameter
 from loco.studies.sampling import latin_hypercube
-from loco.studies.sensitivity import (
+from loco.studies.sobol import (
     plot_convergence,
     plot_indices,
     sobol_convergence,

@@ -9,8 +9,7 @@ import numpy.typing as npt
 import pytest
 
 from loco.studies.parameters import StudyParameter, bounds_si
-from loco.studies.sampling import latin_hypercube
-from loco.studies.surrogate import (
+from loco.studies.rbf_network import (
     RBFNetwork,
     cross_validate,
     fit_per_output,
@@ -18,6 +17,7 @@ from loco.studies.surrogate import (
     r2_score,
     surrogate_evaluator,
 )
+from loco.studies.sampling import latin_hypercube
 
 BOX = [StudyParameter(f"x{i}", 0.0, 1.0, "-", "-", 1.0) for i in range(6)]
 

@@ -10,7 +10,7 @@ from scipy.stats import qmc
 from sklearn.model_selection import KFold
 from threadpoolctl import threadpool_limits
 
-from loco.studies.surrogate import r2_score
+from loco.studies.rbf_network import r2_score
 from loco.studies.surrogate_fits import Objective, fit_tasks, select_objectives
 from loco.studies.surrogate_selection import best_candidate, make_model, nested_selection_r2
 

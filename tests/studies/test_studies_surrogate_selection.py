@@ -9,7 +9,7 @@ from scipy.stats import qmc
 from sklearn.linear_model import LinearRegression
 from sklearn.model_selection import KFold
 
-from loco.studies.surrogate import RBFNetwork
+from loco.studies.rbf_network import RBFNetwork
 from loco.studies.surrogate_reference import GaussianProcessSurrogate
 from loco.studies.surrogate_selection import (
     CANDIDATES,
@@ -122,7 +122,7 @@ def test_gp_kernels() -> None:
 @pytest.mark.slow
 def test_objectives_in_parallel_processes_give_the_serial_result() -> None:
     from loco.studies.parameters import bounds_si
-    from loco.studies.surrogate_validation import select_surrogates
+    from loco.studies.surrogate import select_surrogates
 
     bounds = np.asarray(bounds_si())
     u = qmc.LatinHypercube(d=6, seed=3).random(60)

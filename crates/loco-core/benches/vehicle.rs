@@ -2,7 +2,7 @@
 //! creep model) and RK4 at 1 ms (the reference settings; the series the performance history
 //! follows), the same with the default exponential scheme at 2 ms (`integrator = "etdrk4"`), with
 //! FaStrip, with the FASTSIM table and with the table at 2 ms, the same FASTSIM run on a curved track
-//! (the design of `examples/run_fingerprint.rs … curve`: 10 m straight, 60 m clothoid, R = 1200 m
+//! (the design of `loco-dev`'s `run_fingerprint … curve`: 10 m straight, 60 m clothoid, R = 1200 m
 //! left with 100 mm cant; against `run_500m_200kmh` it gives what the curve terms cost), the same
 //! on a curve of the curving study (R = 3000 m, 60 mm cant) with both schemes, and one evaluation
 //! of its right-hand side.

@@ -1,10 +1,11 @@
 //! Bindings of `loco_core::contact::{hertz, creepage, kalker, fastsim, fastrip}` (public API:
-//! `loco.creep`). Scalars in, tuples of floats out; every call goes through `run_detached`.
+//! `loco.creep`). Scalars in, tuples of floats out; the creep models are solver objects built
+//! once from their parameters; every call goes through `run_detached`.
 
-use crate::errors::run_detached;
+use crate::errors::{run_detached, to_py_err};
 use loco_core::contact::creepage::{Side, WheelContact, WheelsetMotion};
-use loco_core::contact::fastrip::{fastrip as core_fastrip, FastripParams};
-use loco_core::contact::fastsim::{fastsim as core_fastsim, FastsimParams, TractionBound};
+use loco_core::contact::fastrip::{Fastrip, FastripParams};
+use loco_core::contact::fastsim::{check_contact_inputs, Fastsim, FastsimParams, TractionBound};
 use loco_core::contact::hertz::HertzCoefficients;
 use loco_core::contact::hertz::{hertz_contact as core_hertz, ContactRadii, ElasticMaterial};
 use loco_core::contact::kalker::{
@@ -127,80 +128,98 @@ fn linear_creep_forces(
     })
 }
 
-/// FASTSIM (Fx, Fy, Mz) in N, N, N·m.
-#[pyfunction]
-#[pyo3(signature = (a, b, normal_force, creepage_long, creepage_lat, spin, mu, nu, shear_modulus, nx, ny, bound, kalker_factor))]
-#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
-fn fastsim(
-    py: Python<'_>,
-    a: f64,
-    b: f64,
-    normal_force: f64,
-    creepage_long: f64,
-    creepage_lat: f64,
-    spin: f64,
-    mu: f64,
-    nu: f64,
-    shear_modulus: f64,
-    nx: i64,
-    ny: i64,
-    bound: String,
-    kalker_factor: f64,
-) -> PyResult<(f64, f64, f64)> {
-    run_detached(py, move || {
-        let params = FastsimParams {
-            nx: grid_size("grid[0]", nx)?,
-            ny: grid_size("grid[1]", ny)?,
-            kalker_factor,
-            bound: traction_bound(&bound)?,
-            poisson_ratio: nu,
-            shear_modulus,
-        };
-        let creep = Creepages {
-            longitudinal: creepage_long,
-            lateral: creepage_lat,
-            spin,
-        };
-        let f = core_fastsim(a, b, normal_force, mu, &creep, params)?;
-        Ok((f.fx, f.fy, f.mz))
-    })
+/// Creepages from Python's `(ξ, η, φ)`: longitudinal and lateral (–), spin (1/m).
+fn to_creepages((longitudinal, lateral, spin): (f64, f64, f64)) -> Creepages {
+    Creepages {
+        longitudinal,
+        lateral,
+        spin,
+    }
 }
 
-/// FaStrip (Fx, Fy, Mz) in N, N, N·m.
-#[pyfunction]
-#[pyo3(signature = (a, b, normal_force, creepage_long, creepage_lat, spin, mu, nu, shear_modulus, nx, ny, kalker_factor))]
-#[allow(clippy::too_many_arguments)] // mirrors the Python signature one to one
-fn fastrip(
-    py: Python<'_>,
-    a: f64,
-    b: f64,
-    normal_force: f64,
-    creepage_long: f64,
-    creepage_lat: f64,
-    spin: f64,
-    mu: f64,
-    nu: f64,
-    shear_modulus: f64,
-    nx: i64,
-    ny: i64,
-    kalker_factor: f64,
-) -> PyResult<(f64, f64, f64)> {
-    run_detached(py, move || {
-        let params = FastripParams {
-            nx: grid_size("grid[0]", nx)?,
-            ny: grid_size("grid[1]", ny)?,
-            kalker_factor,
-            poisson_ratio: nu,
-            shear_modulus,
+/// The creep model of a [`PyCreepSolver`].
+enum Solver {
+    Fastsim(Fastsim),
+    Fastrip(Fastrip),
+}
+
+/// A creep-force solver built once from its parameters (FASTSIM or FaStrip, with its material,
+/// grid and coefficient factor), evaluated per contact by `creep_forces`.
+#[pyclass(name = "CreepSolver", module = "loco._loco", frozen)]
+pub struct PyCreepSolver {
+    solver: Solver,
+}
+
+#[pymethods]
+impl PyCreepSolver {
+    /// FASTSIM for Poisson's ratio `nu` (–), shear modulus (Pa), grid `(nx, ny)`, traction
+    /// bound and Kalker coefficient factor (–).
+    #[staticmethod]
+    fn fastsim(
+        nu: f64,
+        shear_modulus: f64,
+        grid: (i64, i64),
+        bound: &str,
+        kalker_factor: f64,
+    ) -> PyResult<Self> {
+        let build = || -> Result<Fastsim, LocoError> {
+            Fastsim::new(FastsimParams {
+                nx: grid_size("grid[0]", grid.0)?,
+                ny: grid_size("grid[1]", grid.1)?,
+                kalker_factor,
+                bound: traction_bound(bound)?,
+                poisson_ratio: nu,
+                shear_modulus,
+            })
         };
-        let creep = Creepages {
-            longitudinal: creepage_long,
-            lateral: creepage_lat,
-            spin,
+        let solver = Solver::Fastsim(build().map_err(to_py_err)?);
+        Ok(Self { solver })
+    }
+
+    /// FaStrip for Poisson's ratio `nu` (–), shear modulus (Pa), grid `(nx, ny)` and Kalker
+    /// coefficient factor (–).
+    #[staticmethod]
+    fn fastrip(
+        nu: f64,
+        shear_modulus: f64,
+        grid: (i64, i64),
+        kalker_factor: f64,
+    ) -> PyResult<Self> {
+        let build = || -> Result<Fastrip, LocoError> {
+            Fastrip::new(FastripParams {
+                nx: grid_size("grid[0]", grid.0)?,
+                ny: grid_size("grid[1]", grid.1)?,
+                kalker_factor,
+                poisson_ratio: nu,
+                shear_modulus,
+            })
         };
-        let f = core_fastrip(a, b, normal_force, mu, &creep, params)?;
-        Ok((f.fx, f.fy, f.mz))
-    })
+        let solver = Solver::Fastrip(build().map_err(to_py_err)?);
+        Ok(Self { solver })
+    }
+
+    /// (Fx, Fy, Mz) in N, N, N·m for semi-axes `a`, `b` (m), `normal_force` (N), creepages
+    /// `(ξ, η, φ)` and friction coefficient `mu`, the inputs checked first.
+    fn creep_forces(
+        &self,
+        py: Python<'_>,
+        a: f64,
+        b: f64,
+        normal_force: f64,
+        creepages: (f64, f64, f64),
+        mu: f64,
+    ) -> PyResult<(f64, f64, f64)> {
+        let solver = &self.solver;
+        run_detached(py, move || {
+            let creep = to_creepages(creepages);
+            check_contact_inputs(a, b, normal_force, mu, &creep)?;
+            let f = match solver {
+                Solver::Fastsim(s) => s.creep_forces(a, b, normal_force, mu, &creep),
+                Solver::Fastrip(s) => s.creep_forces(a, b, normal_force, mu, &creep),
+            };
+            Ok((f.fx, f.fy, f.mz))
+        })
+    }
 }
 
 /// Creepages (ξ, η, φ) of a wheelset contact on a fixed rail.
@@ -257,8 +276,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(hertz_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(kalker_coefficients, m)?)?;
     m.add_function(wrap_pyfunction!(linear_creep_forces, m)?)?;
-    m.add_function(wrap_pyfunction!(fastsim, m)?)?;
-    m.add_function(wrap_pyfunction!(fastrip, m)?)?;
+    m.add_class::<PyCreepSolver>()?;
     m.add_function(wrap_pyfunction!(wheelset_creepages, m)?)?;
     Ok(())
 }

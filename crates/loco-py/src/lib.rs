@@ -23,6 +23,7 @@ mod text_file;
 mod track;
 mod vehicle;
 mod vehicle_handle;
+mod wheelset_contact;
 
 use pyo3::prelude::*;
 
@@ -32,6 +33,7 @@ fn _loco(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     errors::register(m)?;
     contact::register(m)?;
+    wheelset_contact::register(m)?;
     conicity::register(m)?;
     creep::register(m)?;
     track::register(m)?;

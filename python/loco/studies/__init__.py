@@ -11,25 +11,28 @@ lives in, with the modules only it uses:
   surrogate stages share).
 - ``surrogate_samples``, ``surrogate_holdout``: :mod:`~loco.studies.surrogate_samples`,
   :mod:`~loco.studies.surrogate_holdout` (the samples the surrogates learn from and are scored on).
-- ``surrogate``: :mod:`~loco.studies.surrogate_validation` (R² and the surrogate used, §6.3),
-  with :mod:`~loco.studies.surrogate` (the RBF network), :mod:`~loco.studies.surrogate_reference`
+- ``surrogate``: :mod:`~loco.studies.surrogate` (R² and the surrogate used, §6.3),
+  with :mod:`~loco.studies.rbf_network` (the RBF network), :mod:`~loco.studies.surrogate_reference`
   and :mod:`~loco.studies.gp_kernel` (the Gaussian processes), :mod:`~loco.studies.
   surrogate_selection` and :mod:`~loco.studies.surrogate_fits` (the choice by cross-validation).
-- ``sensitivity``, ``optimisation``: :mod:`~loco.studies.parameter_stages` (Sobol' indices,
-  NSGA-II, §6.2, §6.4), with :mod:`~loco.studies.sensitivity` and
-  :mod:`~loco.studies.optimisation`.
+- ``sensitivity``: :mod:`~loco.studies.sensitivity` (Sobol' indices, §6.2), with
+  :mod:`~loco.studies.sobol` (the indices, their intervals and figures).
+- ``optimisation``: :mod:`~loco.studies.optimisation` (NSGA-II on the surrogates, §6.4), with
+  :mod:`~loco.studies.pareto` (the search and the front).
 - ``damper_bench``: :mod:`~loco.studies.damper_bench` (§6.5), with
   :mod:`~loco.studies.valve_bench` (the FSD's frequency valve).
 - ``fsd_comparison``: :mod:`~loco.studies.fsd_comparison` (YD1, YD2, FSD and FSD-H on S_low and
   S_high, §6.6), its runs and tables in :mod:`~loco.studies.fsd_tables`, figures in
   :mod:`~loco.studies.fsd_figures`.
-- ``fsd_design``: :mod:`~loco.studies.fsd_design_stage`, with :mod:`~loco.studies.fsd_design`
+- ``fsd_design``: :mod:`~loco.studies.fsd_design`, with :mod:`~loco.studies.fsd_search`
   (NSGA-II on the simulator) and :mod:`~loco.studies.fsd_conicity` (the conicity sweep).
 - ``premise_case``: :mod:`~loco.studies.premise_case` (the comparison where the premise holds).
-- ``premise_map``, ``screening``, ``plausible``: :mod:`~loco.studies.premise_stages`, with
-  :mod:`~loco.studies.premise_map`, :mod:`~loco.studies.premise_probability` and
-  :mod:`~loco.studies.premise_sensitivity`; :mod:`~loco.studies.premise_study` runs them on any
-  vehicle file.
+- ``premise_map``: :mod:`~loco.studies.premise_map`, with :mod:`~loco.studies.premise_modes`
+  (the linearised modes over conicity, yaw damping and speed).
+- ``screening``: :mod:`~loco.studies.screening` (Morris screening of the ranged inputs).
+- ``plausible``: :mod:`~loco.studies.plausible`, with :mod:`~loco.studies.premise_probability`
+  (plausible locomotives and the premise rule). :mod:`~loco.studies.premise_study` runs these
+  three stages on any vehicle file.
 - ``curving`` (``--full``): :mod:`~loco.studies.curving`, its curves and sizes in
   :mod:`~loco.studies.curving_cases`, figures in :mod:`~loco.studies.curving_figures`, EN 14363
   processing in :mod:`~loco.studies.en14363`.
@@ -54,7 +57,7 @@ Shared by the stages:
 - :mod:`~loco.studies.verdict`: which yaw damper holds which scenario;
   :mod:`~loco.studies.premise_report`: "Does the premise hold?".
 
-The submodules are imported on demand (``from loco.studies import sensitivity``): SALib, pymoo and
+The submodules are imported on demand (``from loco.studies import sobol``): SALib, pymoo and
 scikit-learn load only when a study needs them.
 """
 
@@ -69,31 +72,34 @@ __all__ = [
     "fsd_comparison",
     "fsd_conicity",
     "fsd_design",
-    "fsd_design_stage",
     "fsd_figures",
+    "fsd_search",
     "fsd_tables",
     "gp_kernel",
     "monte_carlo",
     "optimisation",
-    "parameter_stages",
     "parameter_study",
     "parameters",
+    "pareto",
+    "plausible",
     "plotting",
     "premise_case",
     "premise_map",
+    "premise_modes",
     "premise_probability",
     "premise_report",
-    "premise_sensitivity",
-    "premise_stages",
     "premise_study",
     "quantities",
+    "rbf_network",
     "report",
     "report_html",
     "reproduce",
     "sampling",
+    "screening",
     "seeds",
     "sensitivity",
     "sizes",
+    "sobol",
     "speed_sweep",
     "speed_sweep_figures",
     "stages",
@@ -104,7 +110,6 @@ __all__ = [
     "surrogate_reference",
     "surrogate_samples",
     "surrogate_selection",
-    "surrogate_validation",
     "valve_bench",
     "verdict",
 ]

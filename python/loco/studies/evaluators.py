@@ -5,7 +5,7 @@ Every study of :mod:`loco.studies` takes an :class:`Evaluator`:
 are the parameters ``names`` and ``metrics`` is an (n, m) array, one column per metric the study
 asked for, NaN where a sample failed. The simulator is one evaluator
 (:func:`simulator_evaluator`); a fitted surrogate is another
-(:func:`loco.studies.surrogate.surrogate_evaluator`); an analytic test function is a third.
+(:func:`loco.studies.rbf_network.surrogate_evaluator`); an analytic test function is a third.
 """
 
 from __future__ import annotations

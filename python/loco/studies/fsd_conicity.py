@@ -37,7 +37,7 @@ import loco
 from loco import dampers, profiles
 from loco.conicity import equivalent_conicity
 from loco.studies.fsd_comparison import JUDGED_BY, LEAD_IN
-from loco.studies.fsd_design import parallel_map
+from loco.studies.fsd_search import parallel_map
 from loco.studies.seeds import TrackRuns, run_over_tracks
 
 __all__ = [

@@ -1,295 +1,317 @@
-"""FSD design study: NSGA-II on the simulator over the FSD's own design.
+"""The ``fsd_design`` stage of ``loco reproduce``: the FSD design study
+(:mod:`loco.studies.fsd_search`), its picked designs and the reference yaw dampers over the
+conicity sweep (:mod:`loco.studies.fsd_conicity`), their linear critical speeds on the three
+scenarios, one figure.
 
-Design variables (:data:`VARIABLES`, SI units): low damping c1 and high damping c2 (N·s/m),
-cut-off frequency f_p (Hz), switching delay (s) and the valve's amplitude threshold, the
-reference stroke amplitude (m) at which the hydraulic valve (trigger ``"hydraulic"``,
-``loco_core::dampers::frequency_valve``) is derived to cut off at f_p. The hydraulic valve is
-the mechanism SPEC §4 describes; its threshold is a real design quantity (the orifice and spring
-follow from it), where the rms-frequency estimator of the spec's FSD stays closed on both
-scenarios whatever c1 (docs/guide/dampers.md, "The FSD's frequency valve"), so only its c2
-would matter.
-
-Objectives (minimised): W_y on S_low (metric ``wy_max``) and A_yb on S_high (``ayb_peak_lp``),
-at the study's speed, after :data:`loco.studies.fsd_comparison.LEAD_IN` of lead-in (the valve
-leaves its start state), on track 0 of the seed. Constraint: the linear critical speed on S_high
-above :data:`SPEED_MARGIN` × the running speed. The linearised model holds the valve in its start
-state (closed: c2 with the equivalent stiffness), so the constraint bounds c2's stability. A
-design whose valve cannot be derived (the core refuses it with a typed error naming the field)
-or whose run fails is infeasible, not dropped.
-
-The picked designs (:func:`pick_designs`: the front's two ends and its knee) are re-simulated over
-the conicity sweep of :mod:`loco.studies.fsd_conicity`.
+Sizes per preset (:data:`SIZES`): ``full`` is population 16 × 6 generations (96 designs, each
+two 1 000 m runs and one linear critical speed) and 7 conicities × 3 tracks for up to 6 dampers
+(docs/study_results.md, "FSD design study", for its measured time); ``quick`` a small
+version, ``tiny`` the test's (300 m, no lead-in). The stage's JSON records the time of each part
+and its run counts.
 """
 
 from __future__ import annotations
 
-import contextvars
 import time
-from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
-from typing import Any, TypeVar
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any, ClassVar
 
 import numpy as np
-import numpy.typing as npt
 import pandas as pd
 
 import loco
 from loco import dampers
-from loco.studies.fsd_comparison import JUDGED_BY, LEAD_IN
-from loco.studies.seeds import run_over_tracks
+from loco.channels import Metric
+from loco.studies import captions as figure_captions
+from loco.studies import fsd_conicity, fsd_search
+from loco.studies.fsd_comparison import LEAD_IN
+from loco.studies.plotting import pyplot, save_figure
+from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.stages import Demand, Runtime, Stage
 
-__all__ = [
-    "SPEED_MARGIN",
-    "TRIGGER",
-    "VARIABLES",
-    "DesignSetup",
-    "FsdDesignResult",
-    "design_damper",
-    "evaluate_designs",
-    "pick_designs",
-    "run_design_study",
-]
-
-FloatArray = npt.NDArray[np.float64]
-T = TypeVar("T")
-
-#: Design variables: name → (lower, upper) bound, SI units. c1 and c2 span the ranges of the
-#: study's Maxwell yaw dampers (SPEC §6: 200–1200 kN·s/m) and lighter ones; f_p and the delay
-#: bracket the spec's 2 Hz and 0.05 s; the reference stroke brackets the 0.26 mm S_low sway
-#: stroke of the preset (the lower end) up to the millimetre strokes of hunting on S_high.
-VARIABLES: dict[str, tuple[float, float]] = {
-    "low_damping": (100e3, 400e3),
-    "high_damping": (500e3, 1200e3),
-    "cutoff_frequency": (1.0, 4.0),
-    "switching_delay": (0.02, 0.2),
-    "reference_stroke_amplitude": (0.2e-3, 3.0e-3),
-}
-#: The valve the study designs (``dampers.TRIGGERS``).
-TRIGGER = "hydraulic"
-#: The constraint: linear critical speed on S_high ≥ this × the running speed.
-SPEED_MARGIN = 1.1
-#: Top of the linear critical speed search, m/s (540 km/h): ``inf`` above.
-SEARCH_HIGH = 150.0
-#: Objective value of a design whose run failed: worse than any design that ran.
-FAILED = 1e3
-#: Population table columns after the design variables.
-RESULT_COLUMNS = ("W_y", "A_yb", "v_crit_kmh", "error", "feasible")
+__all__ = ["SIZES", "DesignSizes", "FsdDesignStage", "design_settings", "run_fsd_design"]
 
 
 @dataclass(frozen=True)
-class DesignSetup:
-    """How each design is judged: ``speed_kmh`` (km/h), recorded ``distance`` and ``lead_in`` (m),
-    track ``seed`` (track 0 of it), the runs' ``integrator`` (at its own step), simulation
-    ``threads`` (None: all cores)."""
+class DesignSizes:
+    """NSGA-II ``pop_size`` × ``n_gen``; each run records ``distance`` m after ``lead_in`` m; the
+    sweep's ``conicities`` (–) on ``n_tracks`` tracks; the linear critical speeds of every damper
+    on ``critical_scenarios``."""
 
+    pop_size: int
+    n_gen: int
+    distance: float
+    lead_in: float
+    conicities: tuple[float, ...]
+    n_tracks: int
+    critical_scenarios: tuple[str, ...] = ("S_low", "S_norm", "S_high")
+
+
+SIZES: dict[str, DesignSizes] = {
+    "full": DesignSizes(16, 6, 500.0, LEAD_IN, (0.02, 0.05, 0.1, 0.2, 0.3, 0.45, 0.661), 3),
+    "quick": DesignSizes(8, 3, 500.0, LEAD_IN, (0.02, 0.1, 0.3, 0.661), 1),
+    "tiny": DesignSizes(4, 1, 300.0, 0.0, (0.05, 0.661), 1, ("S_high",)),
+}
+#: The reference yaw dampers of the sweep: the study's (the paper's FSD is ``FSD``).
+REFERENCES: dict[str, dampers.Damper] = dict(dampers.PRESETS)
+
+
+def design_settings(
+    sizes: DesignSizes, *, speed_kmh: float, seed: int, integrator: str = loco.Scenario.integrator
+) -> dict[str, Any]:
+    """The stage's settings as its JSON file and report show them."""
+    setup = fsd_search.DesignSetup(
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        integrator=integrator,
+    )
+    return {
+        **setup.settings(),
+        **asdict(sizes),
+        "nsga2_seed": seed,
+        "references": {n: dampers.describe(d) for n, d in REFERENCES.items()},
+    }
+
+
+@dataclass(frozen=True)
+class FsdDesignStage(Stage):
+    """The stage ``fsd_design`` of ``loco reproduce``: its ``sizes``, the running speed (km/h),
+    the seed of the tracks and of NSGA-II and the runs' integration scheme."""
+
+    name: ClassVar[str] = "fsd_design"
+    sizes: DesignSizes
     speed_kmh: float = 200.0
-    distance: float = 500.0
-    lead_in: float = LEAD_IN
     seed: int = 0
-    threads: int | None = None
     integrator: str = loco.Scenario.integrator
 
-    def settings(self) -> dict[str, Any]:
-        """What the numbers depend on (not the thread count), JSON-ready."""
-        return {
-            "speed_kmh": self.speed_kmh,
-            "distance_m": self.distance,
-            "lead_in_m": self.lead_in,
-            "track_seed": self.seed,
-            "integrator": self.integrator,
-            "trigger": TRIGGER,
-            "variables": {k: list(v) for k, v in VARIABLES.items()},
-            "objectives": dict(JUDGED_BY),
-            "constraint": f"linear critical speed S_high (valve closed) >= {SPEED_MARGIN} x speed",
-        }
+    def demand(self) -> Demand:
+        """At most: two runs (S_low, S_high) per design NSGA-II evaluates (``pop_size`` per
+        generation), and every reference and picked design (up to three) on every conicity and
+        track (a valve the core refuses, or picks that coincide, run none)."""
+        s = self.sizes
+        n = 2 * s.pop_size * s.n_gen + (len(REFERENCES) + 3) * len(s.conicities) * s.n_tracks
+        return Demand.runs(n, s.lead_in + s.distance, self.speed_kmh / 3.6)
+
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_fsd_design` into ``out_dir``."""
+        return run_fsd_design(
+            self.sizes,
+            out_dir,
+            speed_kmh=self.speed_kmh,
+            seed=self.seed,
+            threads=runtime.threads,
+            integrator=self.integrator,
+        )
 
 
-def design_damper(x: Sequence[float] | FloatArray) -> dampers.Damper:
-    """The hydraulic FSD of design vector ``x`` (:data:`VARIABLES` order); the core refuses a
-    valve it cannot derive with :class:`loco.ParameterError` naming the field."""
-    c1, c2, f_p, delay, stroke = (float(v) for v in x)
-    return dampers.fsd(
-        low_damping=c1,
-        high_damping=c2,
-        cutoff_frequency=f_p,
-        switching_delay=delay,
-        reference_stroke_amplitude=stroke,
-        trigger=TRIGGER,
-    )
-
-
-def parallel_map(fn: Callable[[Any], T], items: Sequence[Any], threads: int | None) -> list[T]:
-    """``fn`` over ``items`` on ``threads`` threads (the core releases the GIL), each call in a
-    copy of the caller's context (so a ``loco.campaign.using`` block applies inside)."""
-    context = contextvars.copy_context()
-    with ThreadPoolExecutor(max(1, threads or 2)) as pool:
-        return list(pool.map(lambda item: context.copy().run(fn, item), items))
-
-
-def _run(setup: DesignSetup, law: dampers.Damper, scenario: str, metric: str) -> float:
-    s = loco.Scenario(
-        name=scenario,
-        speed=setup.speed_kmh / 3.6,
-        distance=setup.distance,
-        lead_in=setup.lead_in,
-        seed=setup.seed,
-        yaw_damper=law,
-        integrator=setup.integrator,
-    )
-    runs = run_over_tracks(s, 1, threads=1, progress=False)
-    return float(runs.values(metric)[0])
-
-
-def _critical_kmh(setup: DesignSetup, law: dampers.Damper) -> float:
-    s = loco.Scenario(name="S_high", speed=setup.speed_kmh / 3.6, distance=100.0)
+def linear_critical_speeds(
+    laws: dict[str, dampers.Damper],
+    scenarios: tuple[str, ...],
+    speed_kmh: float,
+    threads: int | None,
+) -> pd.DataFrame:
+    """Linear critical speed (km/h; ``inf`` above 540 km/h) of every law on ``scenarios``, with
+    the valve as the linearisation holds it (its start state, closed)."""
+    jobs = [(s, n) for s in scenarios for n in laws]
     vehicle = loco.Locomotive.default()
-    return float(loco.critical_speed(vehicle, s.replace(yaw_damper=law), high=SEARCH_HIGH)) * 3.6
 
+    def one(job: tuple[str, str]) -> float:
+        s = loco.Scenario(name=job[0], speed=speed_kmh / 3.6, distance=100.0)
+        v = loco.critical_speed(
+            vehicle, s.replace(yaw_damper=laws[job[1]]), high=fsd_search.SEARCH_HIGH
+        )
+        return float(v) * 3.6
 
-def evaluate_designs(x: npt.ArrayLike, setup: DesignSetup) -> pd.DataFrame:
-    """Every design of ``x`` (n, 5): its variables and :data:`RESULT_COLUMNS` (W_y on S_low, A_yb
-    on S_high, the linear critical speed on S_high with the valve closed, km/h, whether
-    the constraint holds, and why a design is infeasible)."""
-    designs = np.atleast_2d(np.asarray(x, dtype=np.float64))
-    laws: list[dampers.Damper | None] = []
-    errors: list[str] = []
-    for row in designs:
-        try:
-            laws.append(design_damper(row))
-            errors.append("")
-        except loco.ParameterError as e:
-            laws.append(None)
-            errors.append(str(e))
-    ok = [i for i, law in enumerate(laws) if law is not None]
-    jobs: list[tuple[str, int, str]] = [(kind, i, "") for i in ok for kind in ("low", "high")]
-    jobs += [("vcrit", i, "") for i in ok]
-
-    def job(j: tuple[str, int, str]) -> float:
-        kind, i, _ = j
-        law = laws[i]
-        assert law is not None
-        try:
-            if kind == "vcrit":
-                return _critical_kmh(setup, law)
-            scenario = "S_low" if kind == "low" else "S_high"
-            return _run(setup, law, scenario, JUDGED_BY[scenario])
-        except loco.SimulationError:
-            return np.nan
-
-    values = parallel_map(job, jobs, setup.threads)
-    out = {k: np.full(len(designs), np.nan) for k in ("W_y", "A_yb", "v_crit_kmh")}
-    column = {"low": "W_y", "high": "A_yb", "vcrit": "v_crit_kmh"}
-    for (kind, i, _), value in zip(jobs, values, strict=True):
-        out[column[kind]][i] = value
-    frame = pd.DataFrame(designs, columns=list(VARIABLES))
-    for name, col in out.items():
-        frame[name] = col
-    frame["error"] = errors
-    frame["feasible"] = constraint(frame, setup) <= 0.0
-    return frame
-
-
-def constraint(frame: pd.DataFrame, setup: DesignSetup) -> FloatArray:
-    """NSGA-II's inequality constraint per design (feasible where ≤ 0), km/h:
-    :data:`SPEED_MARGIN` × speed minus the linear critical speed (``inf`` clipped, NaN — a valve
-    that cannot be derived — counted as 0 km/h), plus the margin again for a failed run."""
-    v = frame["v_crit_kmh"].fillna(0.0).clip(upper=10 * setup.speed_kmh).to_numpy()
-    failed = frame[["W_y", "A_yb"]].isna().any(axis=1).to_numpy()
-    limit = SPEED_MARGIN * setup.speed_kmh
-    return np.asarray(limit - v + np.where(failed, limit, 0.0), dtype=np.float64)
-
-
-@dataclass(frozen=True)
-class FsdDesignResult:
-    """The study: every evaluated design (``population``, with its generation), the final
-    non-dominated feasible designs (``front``, sorted by W_y), the ``picks`` (label → front row)
-    and the run time (s), in total and per generation."""
-
-    population: pd.DataFrame
-    front: pd.DataFrame
-    picks: dict[str, int]
-    seconds: float
-    generation_seconds: tuple[float, ...] = ()
-
-    def picked_dampers(self) -> dict[str, dampers.Damper]:
-        """The picked designs as yaw damper laws, by label."""
-        return {
-            label: design_damper(self.front.loc[i, list(VARIABLES)].to_numpy(dtype=np.float64))
-            for label, i in self.picks.items()
-        }
-
-
-def pick_designs(front: pd.DataFrame) -> dict[str, int]:
-    """Labels of the front rows re-simulated: the lowest-W_y end, the knee (nearest the utopia
-    point in objectives normalised over the front) and the lowest-A_yb end; one label per row."""
-    if front.empty:
-        return {}
-    f = front[["W_y", "A_yb"]].to_numpy()
-    span = np.ptp(f, axis=0)
-    norm = (f - f.min(axis=0)) / np.where(span > 0, span, 1.0)
-    rows = {
-        "opt. FSD (knee)": int(np.argmin(np.hypot(norm[:, 0], norm[:, 1]))),
-        "opt. FSD (low W_y)": int(np.argmin(f[:, 0])),
-        "opt. FSD (low A_yb)": int(np.argmin(f[:, 1])),
-    }
-    picks: dict[str, int] = {}
-    for label, i in rows.items():
-        if i not in picks.values():
-            picks[label] = i
-    return picks
-
-
-def run_design_study(
-    setup: DesignSetup, *, pop_size: int, n_gen: int, seed: int = 0
-) -> FsdDesignResult:
-    """NSGA-II (pymoo, ``seed``) over :data:`VARIABLES` with ``pop_size`` designs for ``n_gen``
-    generations, every design simulated (:func:`evaluate_designs`)."""
-    from pymoo.algorithms.moo.nsga2 import NSGA2
-    from pymoo.core.problem import Problem
-    from pymoo.optimize import minimize
-
-    start = time.perf_counter()
-    evaluated: list[pd.DataFrame] = []
-    timings: list[float] = []
-
-    class Design(Problem):
-        def __init__(self) -> None:
-            bounds = np.array(list(VARIABLES.values()))
-            super().__init__(
-                n_var=len(VARIABLES), n_obj=2, n_ieq_constr=1, xl=bounds[:, 0], xu=bounds[:, 1]
-            )
-
-        def _evaluate(self, x: FloatArray, out: dict[str, Any], *a: Any, **k: Any) -> None:
-            began = time.perf_counter()
-            frame = evaluate_designs(x, setup)
-            timings.append(time.perf_counter() - began)
-            frame.insert(0, "generation", len(evaluated))
-            evaluated.append(frame)
-            # A failed run or an underivable valve is a bad design, not a missing one.
-            out["F"] = frame[["W_y", "A_yb"]].fillna(FAILED).to_numpy()
-            out["G"] = constraint(frame, setup)[:, None]
-
-    minimize(Design(), NSGA2(pop_size=pop_size), ("n_gen", n_gen), seed=seed)
-    population = pd.concat(evaluated, ignore_index=True)
-    front = non_dominated(population[population["feasible"]])
-    return FsdDesignResult(
-        population=population,
-        front=front,
-        picks=pick_designs(front),
-        seconds=time.perf_counter() - start,
-        generation_seconds=tuple(timings),
+    values = fsd_search.parallel_map(one, jobs, threads)
+    return pd.DataFrame(
+        [
+            {"scenario": s, "damper": n, "linear_kmh": v}
+            for (s, n), v in zip(jobs, values, strict=True)
+        ]
     )
 
 
-def non_dominated(frame: pd.DataFrame) -> pd.DataFrame:
-    """Rows of ``frame`` no other row beats in both W_y and A_yb (duplicates kept once), sorted
-    by W_y."""
-    f = frame[["W_y", "A_yb"]].to_numpy()
-    keep = []
-    for i in range(len(f)):
-        dominated = np.any(np.all(f <= f[i], axis=1) & np.any(f < f[i], axis=1))
-        if not dominated:
-            keep.append(i)
-    out = frame.iloc[keep].drop_duplicates(subset=["W_y", "A_yb"])
-    return out.sort_values(["W_y", "A_yb"], kind="stable").reset_index(drop=True)
+def run_fsd_design(
+    sizes: DesignSizes,
+    out_dir: str | Path,
+    *,
+    speed_kmh: float = 200.0,
+    seed: int = 0,
+    threads: int | None = None,
+    integrator: str = loco.Scenario.integrator,
+) -> StudyRecord:
+    """Run the study into ``out_dir``; files: ``fsd_design_population.csv`` (every design and
+    generation), ``fsd_design_front.csv``, ``fsd_design_conicity.csv`` (every run of the sweep)
+    and ``..._summary.csv``, ``fsd_design_critical_speeds.csv``, ``fsd_design.png``,
+    ``fsd_design.json``."""
+    marks = [_clock()]
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    setup = fsd_search.DesignSetup(
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        threads=threads,
+        integrator=integrator,
+    )
+    study = fsd_search.run_design_study(
+        setup, pop_size=sizes.pop_size, n_gen=sizes.n_gen, seed=seed
+    )
+    marks.append(_clock())
+    laws = {**REFERENCES, **study.picked_dampers()}
+    sweep = fsd_conicity.run_conicity_sweep(
+        laws,
+        sizes.conicities,
+        speed_kmh=speed_kmh,
+        distance=sizes.distance,
+        lead_in=sizes.lead_in,
+        seed=seed,
+        n_tracks=sizes.n_tracks,
+        threads=threads,
+        integrator=integrator,
+    )
+    summary = fsd_conicity.sweep_summary(sweep)
+    marks.append(_clock())
+    critical = linear_critical_speeds(laws, sizes.critical_scenarios, speed_kmh, threads)
+    marks.append(_clock())
+    picks = {
+        label: {k: float(study.front[k].iloc[i]) for k in [*fsd_search.VARIABLES, "W_y", "A_yb"]}
+        for label, i in study.picks.items()
+    }
+    parts = ("optimisation", "sweep", "critical_speeds")
+    wall, cpu = (
+        {part: marks[i + 1][k] - marks[i][k] for i, part in enumerate(parts)} for k in (0, 1)
+    )
+    seconds = marks[-1][0] - marks[0][0]
+    settings = {
+        **design_settings(sizes, speed_kmh=speed_kmh, seed=seed, integrator=integrator),
+        "loco_version": loco.__version__,
+        "picked_designs": picks,
+        "designs_evaluated": len(study.population),
+        "feasible_designs": int(study.population["feasible"].sum()),
+        "optimisation_seconds": wall["optimisation"],
+        "seconds": seconds,
+        "part_seconds": wall,
+        "generation_seconds": list(study.generation_seconds),
+        # CPU time of all the process's threads, s: what the parts cost whatever the machine's
+        # load (the wall time on a shared machine is not).
+        "part_cpu_seconds": cpu,
+        "runs": run_counts(study, sweep, critical),
+    }
+    figure = plot_design(study, summary, out / "fsd_design.png", sizes, speed_kmh)
+    tables = [
+        save_table(study.population, out / "fsd_design_population.csv"),
+        save_table(study.front, out / "fsd_design_front.csv"),
+        save_table(sweep, out / "fsd_design_conicity.csv"),
+        save_table(summary, out / "fsd_design_conicity_summary.csv"),
+        save_table(critical, out / "fsd_design_critical_speeds.csv"),
+        save_json(settings, out / "fsd_design.json"),
+    ]
+    return StudyRecord(
+        name=out.name,
+        title="FSD design study: NSGA-II on the simulator, conicity sweep",
+        figures=[figure],
+        tables=tables,
+        parameters={k: v for k, v in settings.items() if k != "references"},
+        seconds=seconds,
+        notes=_notes(study, summary, critical, wall["optimisation"], speed_kmh),
+        captions=figure_captions.FSD_DESIGN,
+    )
+
+
+def _clock() -> tuple[float, float]:
+    """(wall, CPU of every thread of the process) time, s."""
+    return time.perf_counter(), time.process_time()
+
+
+def run_counts(
+    study: fsd_search.FsdDesignResult, sweep: pd.DataFrame, critical: pd.DataFrame
+) -> dict[str, int]:
+    """How many simulations and linear critical speeds each part of the stage computed: two runs
+    and one critical speed per design whose valve could be derived, one run per sweep row, one
+    critical speed per damper and scenario."""
+    derived = int((study.population["error"] == "").sum())
+    return {
+        "design_runs": 2 * derived,
+        "design_critical_speeds": derived,
+        "sweep_runs": len(sweep),
+        "critical_speeds": len(critical),
+    }
+
+
+def _notes(
+    study: fsd_search.FsdDesignResult,
+    summary: pd.DataFrame,
+    critical: pd.DataFrame,
+    optimisation_seconds: float,
+    speed_kmh: float,
+) -> str:
+    pop = study.population
+    lines = [
+        f"{len(pop)} designs simulated ({int(pop['feasible'].sum())} feasible: linear critical "
+        f"speed on S_high with the valve closed ≥ {fsd_search.SPEED_MARGIN} × {speed_kmh:g} "
+        f"km/h and both runs finished) in {optimisation_seconds:.0f} s; front of "
+        f"{len(study.front)}: W_y {study.front['W_y'].min():.3f}–{study.front['W_y'].max():.3f},"
+        f" A_yb {study.front['A_yb'].min():.3f}–{study.front['A_yb'].max():.3f} m/s²."
+        if len(study.front)
+        else f"{len(pop)} designs simulated, none feasible."
+    ]
+    for label, i in study.picks.items():
+        row = study.front.loc[i]
+        lines.append(
+            f"{label}: c1 {row['low_damping'] / 1e3:.0f}, c2 {row['high_damping'] / 1e3:.0f} "
+            f"kN·s/m, f_p {row['cutoff_frequency']:.2f} Hz, delay {row['switching_delay']:.3f} s,"
+            f" reference stroke {row['reference_stroke_amplitude'] * 1e3:.2f} mm."
+        )
+    table = critical.pivot(index="damper", columns="scenario", values="linear_kmh")
+    scenarios = list(dict.fromkeys(critical["scenario"]))
+    lines.append(
+        f"Linear critical speed (km/h, valve closed) {' / '.join(scenarios)}: "
+        + "; ".join(
+            f"{d} " + " / ".join(f"{table.loc[d, s]:.0f}" for s in scenarios) for d in table.index
+        )
+        + "."
+    )
+    return " ".join(lines)
+
+
+def plot_design(
+    study: fsd_search.FsdDesignResult,
+    summary: pd.DataFrame,
+    path: Path,
+    sizes: DesignSizes,
+    speed_kmh: float,
+) -> Path:
+    """Designs in the objective plane (grey: infeasible), and W_y and A_yb against conicity for
+    every damper (mean and range over the tracks)."""
+    plt = pyplot()
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5), layout="constrained")
+    pop = study.population
+    ok = pop["feasible"].to_numpy()
+    axes[0].scatter(pop["W_y"][~ok], pop["A_yb"][~ok], s=10, color="0.7", label="infeasible")
+    axes[0].scatter(pop["W_y"][ok], pop["A_yb"][ok], s=12, color="C0", label="feasible")
+    if len(study.front):
+        axes[0].plot(study.front["W_y"], study.front["A_yb"], "o-", color="C3", label="front")
+    axes[0].set(xlabel="W_y, S_low", ylabel="A_yb peak, S_high (m/s²)", title="designs")
+    axes[0].legend(fontsize=7)
+    panels = ((axes[1], Metric.WY_MAX, "W_y"), (axes[2], Metric.AYB_PEAK_LP, "A_yb (m/s²)"))
+    for ax, metric, label in panels:
+        for k, name in enumerate(dict.fromkeys(summary["damper"])):
+            c, mean, lo, hi = fsd_conicity.summary_array(summary, name, metric).T
+            err = np.vstack([mean - lo, hi - mean])
+            ax.errorbar(c, mean, yerr=err, fmt="o-", ms=4, capsize=3, color=f"C{k}", label=name)
+        ax.set(xscale="log", xlabel="equivalent conicity at 3 mm (–)", ylabel=label)
+        ticks = list(sizes.conicities)
+        ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
+        ax.minorticks_off()
+        ax.grid(True, alpha=0.3)
+    axes[1].legend(fontsize=7)
+    fig.suptitle(
+        f"FSD design (hydraulic valve): NSGA-II pop {sizes.pop_size} × {sizes.n_gen} gen, "
+        f"{speed_kmh:g} km/h; conicity sweep on {sizes.n_tracks} track(s); loco {loco.__version__}"
+    )
+    return save_figure(fig, path)

@@ -1,212 +1,188 @@
-"""Multi-objective optimisation of the study parameters with NSGA-II (pymoo), on surrogates.
-
-SPEC §6.4: minimise W_y (S_low) and A_yb (S_high) over the six parameters with NSGA-II (Deb et
-al. 2002), population 500, 100 generations, on the RBF surrogates; then re-simulate a spread of
-Pareto points with the real model and report the surrogate's error there.
-
-The objective is any :class:`~loco.studies.evaluators.Evaluator` returning one column per
-objective (all minimised), so the same code runs on surrogates, on the simulator and on test
-problems with a known front.
+"""The stage ``optimisation`` of ``loco reproduce`` (SPEC §6.4): NSGA-II on the surrogates
+(Pareto front, distribution of each parameter along it), then a spread of Pareto points
+re-simulated with the real model and the surrogate's error there. The search and the front's
+figures are :mod:`loco.studies.pareto`'s.
 """
 
 from __future__ import annotations
 
-import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import ClassVar
 
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
-from tqdm.auto import tqdm
 
-from loco.studies.evaluators import Evaluator, evaluate_checked
-from loco.studies.parameters import STUDY_PARAMETERS, StudyParameter, bounds_si, names
-from loco.studies.parameters import to_study_units as _to_units
+import loco
+from loco.studies import captions as figure_captions
+from loco.studies.parameter_study import (
+    LOG_TARGET,
+    OBJECTIVES,
+    StudySetup,
+    axis_label,
+    fit_surrogates,
+    labels,
+    surrogate_objectives,
+)
+from loco.studies.pareto import ParetoResult, nsga2, pick_spread, plot_pareto, verify_points
 from loco.studies.plotting import pyplot, save_figure
+from loco.studies.rbf_network import Predictor
+from loco.studies.report import StudyRecord, save_json, save_table
+from loco.studies.stages import Demand, Runtime
+from loco.studies.surrogate import OnSurrogates
 
-__all__ = [
-    "ParetoResult",
-    "nsga2",
-    "pick_spread",
-    "plot_pareto",
-    "verify_points",
-]
+__all__ = ["OptimisationStage", "run_optimisation"]
 
 FloatArray = npt.NDArray[np.float64]
 
 
-@dataclass(frozen=True)
-class ParetoResult:
-    """The non-dominated set NSGA-II ended with, sorted by the first objective.
+def _plot_verification(result: ParetoResult, check: pd.DataFrame, path: Path) -> Path:
+    a, b = result.objectives
+    fig, ax = pyplot().subplots(figsize=(6, 4.5), layout="constrained")
+    ax.scatter(result.f[:, 0], result.f[:, 1], s=6, color="0.7", label="Pareto front (surrogate)")
+    ax.scatter(
+        check[f"{a}_surrogate"],
+        check[f"{b}_surrogate"],
+        s=30,
+        facecolors="none",
+        edgecolors="C0",
+        label="picked points, surrogate",
+    )
+    ax.scatter(
+        check[f"{a}_simulated"],
+        check[f"{b}_simulated"],
+        s=30,
+        marker="x",
+        color="C3",
+        label="picked points, re-simulated",
+    )
+    for i in range(len(check)):
+        ax.plot(
+            [check[f"{a}_surrogate"].iloc[i], check[f"{a}_simulated"].iloc[i]],
+            [check[f"{b}_surrogate"].iloc[i], check[f"{b}_simulated"].iloc[i]],
+            color="0.4",
+            lw=0.7,
+        )
+    ax.set(
+        xlabel=axis_label(OBJECTIVES[0]),
+        ylabel=axis_label(OBJECTIVES[1]),
+        title="Surrogate Pareto points re-simulated with the model",
+    )
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    return save_figure(fig, path)
 
-    ``x`` (p, k): Pareto set in SI; ``f`` (p, m): the objectives there. ``seconds``: run time.
-    """
 
-    parameters: tuple[StudyParameter, ...]
-    objectives: tuple[str, ...]
-    x: FloatArray
-    f: FloatArray
-    pop_size: int
-    n_gen: int
-    seed: int
-    seconds: float
-
-    @property
-    def x_units(self) -> FloatArray:
-        """Pareto set in the study's units (kN/mm, kN·s/m)."""
-        return _to_units(self.x, self.parameters)
-
-    def to_frame(self) -> pd.DataFrame:
-        """One row per Pareto point: objectives, parameters in SI (``name``) and in the study's
-        units (``name [unit]``)."""
-        frame = pd.DataFrame(self.f, columns=list(self.objectives))
-        for j, p in enumerate(self.parameters):
-            frame[p.name] = self.x[:, j]
-        for j, p in enumerate(self.parameters):
-            frame[f"{p.name} [{p.unit}]"] = self.x_units[:, j]
-        return frame
-
-
-def nsga2(
-    evaluate: Evaluator,
-    objectives: Sequence[str],
-    parameters: Sequence[StudyParameter] = STUDY_PARAMETERS,
+def run_optimisation(
+    setup: StudySetup,
+    x_lhs: FloatArray,
+    y_lhs: FloatArray,
+    out_dir: Path,
     *,
     pop_size: int = 500,
     n_gen: int = 100,
+    n_verify: int = 10,
     seed: int = 0,
-    progress: bool = True,
-) -> ParetoResult:
-    """Minimise every column of ``evaluate`` over the parameters' box with NSGA-II.
+    log_target: bool = LOG_TARGET,
+    models: Sequence[Predictor] | None = None,
+    surrogate_name: str = "SPEC RBF network",
+    runtime: Runtime | None = None,
+) -> StudyRecord:
+    """NSGA-II on the surrogates of W_y and A_yb, then ``n_verify`` Pareto points spread along
+    the front re-simulated (``setup``, on ``runtime``) to measure the surrogate's error.
+    ``models`` and ``surrogate_name`` are as in :func:`run_sensitivity` (default: the SPEC
+    networks, fitted here).
 
-    pymoo's defaults: binary tournament, SBX crossover, polynomial mutation, duplicates
-    eliminated. The run is deterministic for a given ``seed`` (pymoo seeds its own generator
-    from it). A point with a NaN objective (failed sample) is made infeasible through one
-    inequality constraint (g = 1 failed, −1 ok): Deb's constraint domination ranks it behind every
-    feasible point, and it never enters the returned set. A progress bar counts generations.
+    Writes ``pareto.png`` (front and parameter distributions), ``pareto_verification.png``,
+    ``pareto_front.csv``, ``pareto_verification.csv`` and ``optimisation.json``.
     """
-    from pymoo.algorithms.moo.nsga2 import NSGA2
-    from pymoo.core.callback import Callback
-    from pymoo.core.problem import Problem
-    from pymoo.optimize import minimize
-
-    column_names = names(parameters)
-    n_obj = len(objectives)
-    bounds = bounds_si(parameters)
-
-    class _Problem(Problem):
-        def __init__(self) -> None:
-            super().__init__(
-                n_var=len(parameters),
-                n_obj=n_obj,
-                n_ieq_constr=1,
-                xl=bounds[:, 0],
-                xu=bounds[:, 1],
-            )
-
-        def _evaluate(self, x: FloatArray, out: dict[str, Any], *args: Any, **kw: Any) -> None:
-            f = evaluate_checked(evaluate, x, column_names, n_obj)
-            failed = np.asarray(~np.isfinite(f).all(axis=1), dtype=bool)
-            out["F"] = np.where(failed[:, None], 0.0, f)
-            out["G"] = np.where(failed, 1.0, -1.0)[:, None]
-
-    bar = tqdm(total=n_gen, desc="NSGA-II generations", disable=not progress)
-
-    class _Progress(Callback):
-        def notify(self, algorithm: Any) -> None:
-            bar.update(1)
-
-    start = time.perf_counter()
-    try:
-        res = minimize(
-            _Problem(),
-            NSGA2(pop_size=pop_size),
-            ("n_gen", n_gen),
-            seed=seed,
-            callback=_Progress(),
-            verbose=False,
-        )
-    finally:
-        bar.close()
-    if res.X is None:
-        raise RuntimeError("nsga2: every evaluated point failed (NaN objectives)")
-    x = np.atleast_2d(np.asarray(res.X, dtype=np.float64))
-    f = np.atleast_2d(np.asarray(res.F, dtype=np.float64))
-    order = np.argsort(f[:, 0], kind="stable")
-    return ParetoResult(
-        parameters=tuple(parameters),
-        objectives=tuple(objectives),
-        x=x[order],
-        f=f[order],
+    runtime = runtime or Runtime()
+    if models is None:
+        models = fit_surrogates(x_lhs, y_lhs, log_target=log_target, seed=seed)
+    result = nsga2(
+        surrogate_objectives(models, log_target=log_target),
+        labels(),
         pop_size=pop_size,
         n_gen=n_gen,
         seed=seed,
-        seconds=time.perf_counter() - start,
+        progress=runtime.progress,
+    )
+    plot_pareto(
+        result,
+        out_dir / "pareto.png",
+        title=f"NSGA-II on the surrogates ({surrogate_name}): population {pop_size}, "
+        f"{n_gen} generations",
+    )
+    picked = pick_spread(result, n_verify)
+    check = verify_points(result, picked, setup.evaluator(runtime))
+    errors = {
+        o: {
+            "mean_abs_rel_error": float(np.nanmean(np.abs(check[f"{o}_rel_error"]))),
+            "max_abs_rel_error": float(np.nanmax(np.abs(check[f"{o}_rel_error"]))),
+            "n_failed": int(check[f"{o}_simulated"].isna().sum()),
+        }
+        for o in labels()
+    }
+    settings = {
+        "loco_version": loco.__version__,
+        "pop_size": pop_size,
+        "n_gen": n_gen,
+        "n_verify": n_verify,
+        "seed": seed,
+        "log_target": log_target,
+        "lhs_samples": len(x_lhs),
+        "surrogate": surrogate_name,
+        "nsga2_seconds": result.seconds,
+        **setup.settings(),
+    }
+    notes = (
+        f"{len(result.f)} Pareto points; W_y from {result.f[:, 0].min():.3g} to "
+        f"{result.f[:, 0].max():.3g}, A_yb from {result.f[:, 1].min():.3g} to "
+        f"{result.f[:, 1].max():.3g} m/s² (surrogate: {surrogate_name}). Surrogate error at "
+        f"{len(picked)} "
+        "re-simulated points, mean |relative error|: "
+        + ", ".join(
+            f"{o} {e['mean_abs_rel_error']:.1%} (max {e['max_abs_rel_error']:.1%})"
+            for o, e in errors.items()
+        )
+        + "."
+    )
+    return StudyRecord(
+        name=out_dir.name,
+        title="Multi-objective optimisation: NSGA-II on the surrogate (SPEC §6.4)",
+        figures=[
+            out_dir / "pareto.png",
+            _plot_verification(result, check, out_dir / "pareto_verification.png"),
+        ],
+        tables=[
+            save_table(check, out_dir / "pareto_verification.csv"),
+            save_table(result.to_frame(), out_dir / "pareto_front.csv"),
+            save_json({**settings, "surrogate_error": errors}, out_dir / "optimisation.json"),
+        ],
+        parameters=settings,
+        notes=notes,
+        captions=figure_captions.OPTIMISATION,
     )
 
 
-def pick_spread(result: ParetoResult, k: int) -> npt.NDArray[np.intp]:
-    """Indices of ``k`` Pareto points evenly spaced along the front.
+@dataclass(frozen=True)
+class OptimisationStage(OnSurrogates):
+    """The stage ``optimisation`` of ``loco reproduce``: :func:`run_optimisation` on the
+    surrogates of ``training``, ``n_verify`` Pareto points re-simulated on ``setup``."""
 
-    The front (sorted by the first objective) is parametrised by its cumulative arc length in
-    objectives scaled to [0, 1]; the point nearest each of ``k`` equally spaced arc lengths
-    (ends included) is taken. Fewer than ``k`` indices come back when the front is shorter.
-    """
-    f = result.f
-    span = np.ptp(f, axis=0)
-    z = (f - f.min(axis=0)) / np.where(span > 0, span, 1.0)
-    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(z, axis=0), axis=1))])
-    targets = np.linspace(0.0, arc[-1], k)
-    picked = np.abs(arc[None, :] - targets[:, None]).argmin(axis=1)
-    return np.unique(picked)
+    name: ClassVar[str] = "optimisation"
+    pop_size: int
+    n_gen: int
+    n_verify: int
 
+    def demand(self) -> Demand:
+        """At most: both objectives on ``n_verify`` Pareto points (fewer when the front has
+        fewer)."""
+        return self.setup.demand(self.n_verify)
 
-def verify_points(
-    result: ParetoResult, indices: npt.ArrayLike, evaluate: Evaluator
-) -> pd.DataFrame:
-    """Re-evaluate chosen Pareto points (e.g. with the simulator) and compare with the
-    optimiser's (surrogate) objectives.
-
-    Returns one row per point: the parameters in the study's units, and per objective ``o``:
-    ``o_surrogate``, ``o_simulated``, ``o_error`` (surrogate − simulated) and ``o_rel_error``
-    (error / |simulated|). A failed simulation gives NaN.
-    """
-    idx = np.asarray(indices, dtype=np.intp)
-    x = result.x[idx]
-    simulated = evaluate_checked(evaluate, x, names(result.parameters), len(result.objectives))
-    frame = pd.DataFrame({"pareto_index": idx})
-    for j, p in enumerate(result.parameters):
-        frame[f"{p.name} [{p.unit}]"] = result.x_units[idx, j]
-    for j, o in enumerate(result.objectives):
-        frame[f"{o}_surrogate"] = result.f[idx, j]
-        frame[f"{o}_simulated"] = simulated[:, j]
-        frame[f"{o}_error"] = result.f[idx, j] - simulated[:, j]
-        frame[f"{o}_rel_error"] = frame[f"{o}_error"] / np.abs(simulated[:, j])
-    return frame
-
-
-def plot_pareto(result: ParetoResult, path: str | Path, *, title: str = "", bins: int = 20) -> None:
-    """Save the front (first two objectives) and one histogram per parameter along it, over the
-    parameter's full range in the study's units, as PNG."""
-    k = len(result.parameters)
-    ncols = 3
-    nrows = int(np.ceil(k / ncols))
-    fig = pyplot().figure(figsize=(4.2 + 2.6 * ncols, max(3.2, 2.2 * nrows)), layout="constrained")
-    grid = fig.add_gridspec(nrows, ncols + 2)
-    front = fig.add_subplot(grid[:, :2])
-    front.scatter(result.f[:, 0], result.f[:, 1], s=8, c=result.f[:, 0], cmap="viridis")
-    front.set(xlabel=f"{result.objectives[0]} (minimise)", ylabel=f"{result.objectives[1]} "
-              "(minimise)", title=f"Pareto front, {len(result.f)} points")  # fmt: skip
-    xu = result.x_units
-    for j, p in enumerate(result.parameters):
-        ax = fig.add_subplot(grid[j // ncols, 2 + j % ncols])
-        ax.hist(xu[:, j], bins=np.linspace(p.low, p.high, bins + 1).tolist(), color="tab:blue")
-        ax.set_xlim(p.low, p.high)
-        ax.set_xlabel(f"{p.name} ({p.unit})", fontsize=8)
-        ax.tick_params(labelsize=7)
-    if title:
-        fig.suptitle(title)
-    save_figure(fig, path)
+    def run(self, out_dir: Path, runtime: Runtime) -> StudyRecord:
+        """:func:`run_optimisation` into ``out_dir``."""
+        sizes = {"pop_size": self.pop_size, "n_gen": self.n_gen, "n_verify": self.n_verify}
+        return self._study(run_optimisation, out_dir, runtime, **sizes)

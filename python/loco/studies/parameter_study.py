@@ -1,6 +1,6 @@
 """The parameter study of SPEC §6.2–6.3 on the simulator: its objectives, the Latin hypercube
 Monte Carlo, and the SPEC RBF surrogates (their validation and the choice of the surrogate the
-Sobol' and NSGA-II stages use are in :mod:`loco.studies.surrogate_validation`).
+Sobol' and NSGA-II stages use are in :mod:`loco.studies.surrogate`).
 
 Objectives (:data:`OBJECTIVES`): the Sperling lateral index W_y on S_low (metric ``wy_max``: the
 low-conicity ride, carbody sway) and the bogie frame lateral acceleration A_yb on S_high (metric
@@ -10,10 +10,10 @@ damping and series stiffness are the study parameters C_sx and K_ncsx (no ``yaw_
 the scenario, which would override them).
 
 The surrogates (:func:`fit_surrogates`, :func:`surrogate_objectives`,
-:func:`loco.studies.surrogate_validation.select_surrogates`) learn the logarithm of the
+:func:`loco.studies.surrogate.select_surrogates`) learn the logarithm of the
 objectives (:data:`LOG_TARGET`). Sobol' indices and NSGA-II on top of these are in
-:mod:`loco.studies.parameter_stages`; every function here writes its figures (PNG) and numbers
-(CSV/JSON) into a directory and returns the
+:mod:`loco.studies.sensitivity` and :mod:`loco.studies.optimisation`; every function here
+writes its figures (PNG) and numbers (CSV/JSON) into a directory and returns the
 :class:`~loco.studies.report.StudyRecord` of the report.
 """
 
@@ -32,13 +32,13 @@ import loco
 from loco.channels import Metric
 from loco.studies.evaluators import Evaluator, simulator_evaluator, stack_evaluators
 from loco.studies.parameters import STUDY_PARAMETERS, bounds_si, names, to_study_units
-from loco.studies.stages import Demand, Runtime
-from loco.studies.surrogate import (
+from loco.studies.rbf_network import (
     Predictor,
     RBFNetwork,
     fit_per_output,
     surrogate_evaluator,
 )
+from loco.studies.stages import Demand, Runtime
 
 __all__ = [
     "LOG_TARGET",
@@ -194,7 +194,7 @@ def surrogate_objectives(
     models: Sequence[Predictor], *, log_target: bool = LOG_TARGET
 ) -> Evaluator:
     """The fitted surrogates (SPEC networks or the ones
-    :func:`loco.studies.surrogate_validation.select_surrogates` chose) as an
+    :func:`loco.studies.surrogate.select_surrogates` chose) as an
     evaluator of the objectives in their own units (the exponential
     of the networks' outputs with ``log_target``), for Sobol' indices and NSGA-II."""
     inner = surrogate_evaluator(models, names())

@@ -1,7 +1,7 @@
 """The premise case: the study's damper comparison where its premise holds.
 
 On the default vehicle the study's S_low pair does not have the premise (high yaw damping keeps
-the carbody mode stable there, :mod:`loco.studies.premise_map`), so the comparison of YD1, YD2
+the carbody mode stable there, :mod:`loco.studies.premise_modes`), so the comparison of YD1, YD2
 and the FSD on it cannot show what the FSD is for. The premise case reruns the same comparison
 (:class:`loco.studies.fsd_comparison.FsdComparisonStage`: the same dampers, tracks, lead-in,
 intervals and paired tests) with S_low replaced by a pair on which the premise holds.
@@ -27,7 +27,7 @@ import pandas as pd
 
 import loco
 from loco.contact_pairs import ContactPair
-from loco.studies import premise_map
+from loco.studies import premise_modes
 from loco.studies.fsd_comparison import FsdComparisonStage, run_fsd_comparison, save_fsd_comparison
 from loco.studies.premise_probability import S_LOW_PAIRS
 from loco.studies.report import StudyRecord, save_table
@@ -40,16 +40,16 @@ _PRESET_DAMPINGS = (200e3, 800e3)
 
 
 def candidates(
-    vehicle: loco.Locomotive | None = None, speed: float = premise_map.SPEED
+    vehicle: loco.Locomotive | None = None, speed: float = premise_modes.SPEED
 ) -> pd.DataFrame:
     """Per pair of :data:`S_LOW_PAIRS`: the carbody mode's damping ratio with YD1 and YD2 on
     ``vehicle`` (default: the default vehicle) at ``speed`` (m/s), whether the premise's S_low
     half holds, and the margin min(ζ_YD1, −ζ_YD2)."""
     labels = {p.label for p in S_LOW_PAIRS}
-    result = premise_map.premise_map(
+    result = premise_modes.premise_map(
         vehicle, dampings=_PRESET_DAMPINGS, families=("pair",), speed=speed, progress=False
     )
-    cells = premise_map.premise_cells(result, *_PRESET_DAMPINGS)
+    cells = premise_modes.premise_cells(result, *_PRESET_DAMPINGS)
     cells = cells[cells["pair"].isin(labels)].reset_index(drop=True)
     cells["margin"] = np.minimum(cells["carbody_zeta_low"], -cells["carbody_zeta_high"])
     return cells[["pair", "conicity", "carbody_zeta_low", "carbody_zeta_high", "premise", "margin"]]

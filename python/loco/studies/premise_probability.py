@@ -22,7 +22,7 @@ an executor and a store make it a resumable Dask campaign); :func:`summarise` gi
 with the premise and its 95 % interval, per pair and pooled; the FSD's and FSD-H's A_yc and A_yb
 against the better fixed damper inside that set, and how much of the S_low record their valves
 were open (track 0). Which inputs decide the premise and the FSDs' advantage is
-:mod:`loco.studies.premise_sensitivity`'s (random forests validated on held-out locomotives).
+:mod:`loco.studies.plausible`'s (random forests validated on held-out locomotives).
 """
 
 from __future__ import annotations

@@ -15,8 +15,10 @@ from pathlib import Path
 
 import pandas as pd
 
+from loco.studies.plausible import probability_note
+from loco.studies.premise_map import premise_cells_note
 from loco.studies.premise_probability import FACTOR, PREMISE_RULE, rule_halves
-from loco.studies.premise_stages import premise_cells_note, probability_note, top_inputs
+from loco.studies.screening import top_inputs
 from loco.studies.verdict import verdict
 
 __all__ = ["premise_section", "psd_ratios"]

@@ -2,7 +2,8 @@
 decide it, how probable the premise is over plausible versions of it, and the FSD where it holds.
 
 :func:`premise_stages` gives the premise map, the Morris screening and the plausible locomotives
-(:mod:`loco.studies.premise_stages`) of a vehicle at the sizes of a preset (:data:`SIZES`);
+(:mod:`loco.studies.premise_map`, :mod:`loco.studies.screening`,
+:mod:`loco.studies.plausible`) of a vehicle at the sizes of a preset (:data:`SIZES`);
 ``loco reproduce`` runs them on the default vehicle. :func:`premise_study` runs them on any
 vehicle file, with the damper comparison on the study's pairs and on the vehicle's premise case
 (:mod:`loco.studies.premise_case`), resumable in its output directory like ``loco reproduce``
@@ -19,16 +20,13 @@ from pathlib import Path
 import loco
 from loco import uncertainty
 from loco.executors import Executor
-from loco.studies import premise_map
+from loco.studies import premise_modes
 from loco.studies.fsd_comparison import FsdComparisonStage
+from loco.studies.plausible import PlausibleStage
 from loco.studies.premise_case import PremiseCaseStage, candidates, choose_pair
+from loco.studies.premise_map import SWEEP_SPEEDS_KMH, PremiseMapStage
 from loco.studies.premise_report import premise_section
-from loco.studies.premise_stages import (
-    SWEEP_SPEEDS_KMH,
-    PlausibleStage,
-    PremiseMapStage,
-    ScreeningStage,
-)
+from loco.studies.screening import ScreeningStage
 from loco.studies.stages import DataFile, Runtime, Stage, StageRunner, campaign_stores
 
 __all__ = ["SIZES", "PremiseSizes", "premise_stages", "premise_study"]
@@ -61,8 +59,8 @@ class PremiseSizes:
 #: (16 per S_low pair), a few minutes on 2 cores; ``tiny``: the tests'.
 SIZES: dict[str, PremiseSizes] = {
     "full": PremiseSizes(
-        premise_map.CONICITIES,
-        premise_map.DAMPINGS,
+        premise_modes.CONICITIES,
+        premise_modes.DAMPINGS,
         SWEEP_SPEEDS_KMH,
         20,
         tuple(uncertainty.OUTPUTS),
@@ -72,8 +70,8 @@ SIZES: dict[str, PremiseSizes] = {
         8,
     ),
     "quick": PremiseSizes(
-        premise_map.CONICITIES,
-        premise_map.DAMPINGS,
+        premise_modes.CONICITIES,
+        premise_modes.DAMPINGS,
         SWEEP_SPEEDS_KMH,
         10,
         ZETA_OUTPUTS,

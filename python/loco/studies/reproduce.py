@@ -24,10 +24,10 @@ rerun, ``--force`` runs it again):
 9. ``fsd_comparison``: YD1, YD2, FSD on S_low and S_high at 200 km/h, on ``n_tracks`` tracks
    (the same for every damper), with paired tests of whether each ranking is significant.
 10. ``fsd_design``: NSGA-II on the simulator over the hydraulic FSD's design, the picked designs
-    and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design_stage`; sizes per
+    and YD1, YD2, FSD over a conicity sweep (:mod:`loco.studies.fsd_design`; sizes per
     preset in its ``SIZES``).
 11. ``premise_map``: the linearised carbody and bogie modes over conicity, contact family and
-    yaw damping at 200 km/h, and over speed (:mod:`loco.studies.premise_stages`).
+    yaw damping at 200 km/h, and over speed (:mod:`loco.studies.premise_map`).
 12. ``screening``: Morris screening of every ranged input on the modes' damping (and in
     ``--full`` the linear critical speeds): which estimates the answer hangs on.
 13. ``plausible``: plausible locomotives (a Latin hypercube over the ranged inputs and the
@@ -79,17 +79,20 @@ from loco.studies import (
     curving,
     damper_bench,
     fsd_comparison,
-    fsd_design_stage,
+    fsd_design,
     monte_carlo,
-    parameter_stages,
+    optimisation,
     parameter_study,
+    plausible,
     premise_case,
-    premise_stages,
+    premise_map,
     premise_study,
+    screening,
+    sensitivity,
     speed_sweep,
+    surrogate,
     surrogate_holdout,
     surrogate_samples,
-    surrogate_validation,
 )
 from loco.studies.premise_report import premise_section
 from loco.studies.report import StudyRecord, save_json, write_report
@@ -133,9 +136,9 @@ def stages(
         DataFile(out / "monte_carlo" / "monte_carlo.csv"),
         DataFile(out / "surrogate_samples" / "surrogate_samples.csv"),
     )
-    training = surrogate_validation.Training(tables, kfold=sizes.kfold, seed=seed)
+    training = surrogate.Training(tables, kfold=sizes.kfold, seed=seed)
     # A preset of its own name, else (a hand-made Sizes) the quick study.
-    design_sizes = fsd_design_stage.SIZES.get(sizes.name, fsd_design_stage.SIZES["quick"])
+    design_sizes = fsd_design.SIZES.get(sizes.name, fsd_design.SIZES["quick"])
     premise_sizes = premise_study.SIZES.get(sizes.name, premise_study.SIZES["quick"])
     comparison: dict[str, Any] = {
         "speed_kmh": sizes.speed_kmh,
@@ -160,20 +163,20 @@ def stages(
             setup, sizes.surrogate_samples, sizes.lhs_samples, seed
         ),
         surrogate_holdout.HoldoutSamplesStage(setup, sizes.holdout_samples, seed),
-        surrogate_validation.SurrogateStage(
+        surrogate.SurrogateStage(
             training,
             spec_samples=sizes.lhs_samples,
             holdout=DataFile(out / "surrogate_holdout" / "holdout_samples.csv"),
         ),
-        parameter_stages.SensitivityStage(
+        sensitivity.SensitivityStage(
             setup, training, seed, sizes.convergence_bases, sizes.surrogate_base
         ),
-        parameter_stages.OptimisationStage(
+        optimisation.OptimisationStage(
             setup, training, seed, sizes.pop_size, sizes.n_gen, sizes.n_verify
         ),
         damper_bench.DamperBenchStage(),
         fsd_comparison.FsdComparisonStage(**comparison),
-        fsd_design_stage.FsdDesignStage(
+        fsd_design.FsdDesignStage(
             design_sizes, speed_kmh=sizes.speed_kmh, seed=seed, integrator=integrator
         ),
         # Where the premise holds, on which estimates it hangs, how probable it is.
@@ -291,9 +294,9 @@ def _verdict(records: list[StudyRecord]) -> list[str]:
     premise = premise_section(
         study,
         None if case is None else Path(case.tables[0]).parent,
-        map_dir=stage_dirs.get(premise_stages.PremiseMapStage.name),
-        screening_dir=stage_dirs.get(premise_stages.ScreeningStage.name),
-        plausible_dir=stage_dirs.get(premise_stages.PlausibleStage.name),
+        map_dir=stage_dirs.get(premise_map.PremiseMapStage.name),
+        screening_dir=stage_dirs.get(screening.ScreeningStage.name),
+        plausible_dir=stage_dirs.get(plausible.PlausibleStage.name),
     )
     if study is None:
         return [

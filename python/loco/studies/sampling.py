@@ -92,7 +92,7 @@ def saltelli(
     matrices A with column i from B, (with second order: the D matrices B with column i from A),
     and B, where A and B are the two halves of a scrambled Sobol' sequence of dimension 2D.
     Because the base points are a prefix of one Sobol' sequence, the first m blocks of a design
-    of ``n_base`` are the design of ``m`` (same seed): :func:`loco.studies.sensitivity.
+    of ``n_base`` are the design of ``m`` (same seed): :func:`loco.studies.sobol.
     sobol_convergence` relies on this.
 
     Parameters

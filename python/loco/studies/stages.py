@@ -49,6 +49,7 @@ __all__ = [
     "Runtime",
     "Stage",
     "StageRunner",
+    "campaign_executor",
     "campaign_stores",
     "encode",
 ]
@@ -265,6 +266,15 @@ class StageRunner:
         self.log(f"[{name}] done in {elapsed:.1f} s")
         self.ran.append(name)
         return record
+
+
+def campaign_executor() -> Any:
+    """The executor of the enclosing campaign block (:func:`loco.campaign.using`), None outside
+    one: what a stage's own tasks (eigen analyses) run on, beside its batches."""
+    from loco import campaign
+
+    context = campaign.current()
+    return None if context is None else context.executor
 
 
 def campaign_stores(

@@ -28,7 +28,7 @@ from joblib import Parallel, delayed
 from sklearn.model_selection import KFold
 from threadpoolctl import threadpool_limits
 
-from loco.studies.surrogate import RBFNetwork, r2_score
+from loco.studies.rbf_network import RBFNetwork, r2_score
 from loco.studies.surrogate_selection import (
     SPEC_MODEL,
     CandidateScore,

@@ -21,9 +21,9 @@ import numpy.typing as npt
 
 import loco
 from loco.studies.parameter_study import StudySetup, samples_frame
+from loco.studies.rbf_network import r2_score
 from loco.studies.report import StudyRecord, save_json, save_table
 from loco.studies.stages import Demand, Runtime, Stage
-from loco.studies.surrogate import r2_score
 from loco.studies.surrogate_samples import HOLDOUT_SEED_OFFSET, holdout_design, simulate_design
 from loco.studies.surrogate_selection import Selection
 

@@ -20,7 +20,7 @@ from sklearn.gaussian_process.kernels import RBF, Matern
 from sklearn.model_selection import KFold
 
 from loco.studies.gp_kernel import scaled_kernel_with_noise
-from loco.studies.surrogate import r2_score
+from loco.studies.rbf_network import r2_score
 
 __all__ = ["GaussianProcessSurrogate", "gaussian_process_r2"]
 

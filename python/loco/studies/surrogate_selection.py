@@ -9,7 +9,7 @@ the RBF networks, marginal likelihood for the Gaussian processes), so its outer 
 cross-validation estimate. The candidates learn log(objective) with ``log_target`` (or, the
 ``_sqrt`` ones, its square root) and are scored by R² on the objective itself:
 
-- ``rbf10``: the SPEC network (:class:`~loco.studies.surrogate.RBFNetwork`, 10 units; its width
+- ``rbf10``: the SPEC network (:class:`~loco.studies.rbf_network.RBFNetwork`, 10 units; its width
   factor chosen by leave-one-out error), always reported;
 - ``rbf_cv``: a larger network of the same kind (:class:`LargerRBF`): K-means centres and a
   least-squares output layer, with the number of units (:data:`RBF_UNITS`) and the width factor
@@ -38,7 +38,7 @@ from typing import Any, Protocol
 import numpy as np
 import numpy.typing as npt
 
-from loco.studies.surrogate import WIDTH_FACTORS, RBFNetwork
+from loco.studies.rbf_network import WIDTH_FACTORS, RBFNetwork
 from loco.studies.surrogate_reference import GaussianProcessSurrogate
 
 __all__ = [

@@ -183,8 +183,8 @@ impl Fastrip {
 
     /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
     /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
-    /// (hot path; use [`fastrip`] for checked input); a non-positive a, b, N or μ gives zero
-    /// forces.
+    /// (hot path; [`fastrip`] and [`check_contact_inputs`](super::fastsim::check_contact_inputs)
+    /// check them); a non-positive a, b, N or μ gives zero forces.
     pub fn creep_forces(
         &self,
         a: f64,
@@ -221,9 +221,7 @@ impl Fastrip {
         let nu = self.table.poisson_ratio();
         let g = self.params.shear_modulus * self.params.kalker_factor;
         // FASTSIM's inverse flexibilities 1/L (Pa/m), for the slip direction.
-        let inv_l1 = 3.0 * coef.c11 * g / (8.0 * a);
-        let inv_l2 = 3.0 * coef.c22 * g / (8.0 * a);
-        let inv_l3 = 4.0 * coef.c23 * g / (PI * a * (a / b).sqrt());
+        let [inv_l1, inv_l2, inv_l3] = coef.inverse_flexibilities(g, a, b);
         let Creepages {
             longitudinal: xi,
             lateral: eta,

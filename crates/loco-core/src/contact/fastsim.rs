@@ -33,7 +33,6 @@
 use super::fastsim_lanes::{integrate_strips, Element, StripInputs, PAIRS};
 use super::kalker::{CreepForces, Creepages, KalkerTable};
 use crate::error::{check_finite, check_non_negative, check_positive, LocoError, Result};
-use std::f64::consts::PI;
 
 /// Strips integrated together in the hot loop (`fastsim_lanes`).
 const LANES: usize = 2 * PAIRS;
@@ -187,7 +186,8 @@ impl Fastsim {
 
     /// Creep forces for semi-axes `a` (rolling direction) and `b` (m), normal force
     /// `normal_force` (N), friction coefficient `mu` and `creepages`. Inputs are not checked
-    /// (hot path; use [`fastsim`] for checked input); a non-positive a, b or N gives zero forces.
+    /// (hot path; [`fastsim`] and [`check_contact_inputs`](super::fastsim::check_contact_inputs)
+    /// check them); a non-positive a, b or N gives zero forces.
     pub fn creep_forces(
         &self,
         a: f64,
@@ -202,9 +202,7 @@ impl Fastsim {
         let coef = self.table.coefficients(a / b);
         let g = self.params.shear_modulus * self.params.kalker_factor;
         // Inverse flexibilities 1/L (Pa/m).
-        let inv_l1 = 3.0 * coef.c11 * g / (8.0 * a);
-        let inv_l2 = 3.0 * coef.c22 * g / (8.0 * a);
-        let inv_l3 = 4.0 * coef.c23 * g / (PI * a * (a / b).sqrt());
+        let [inv_l1, inv_l2, inv_l3] = coef.inverse_flexibilities(g, a, b);
         let Creepages {
             longitudinal: xi,
             lateral: eta,
@@ -278,7 +276,7 @@ pub fn fastsim(
 
 /// Checks the inputs of a one-shot creep evaluation: semi-axes a, b (m) > 0, normal force (N)
 /// and μ ≥ 0 (zero is a lost contact, zero forces), finite creepages.
-pub(super) fn check_contact_inputs(
+pub fn check_contact_inputs(
     a: f64,
     b: f64,
     normal_force: f64,

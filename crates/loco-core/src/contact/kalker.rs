@@ -41,6 +41,21 @@ pub struct KalkerCoefficients {
     pub c33: f64,
 }
 
+impl KalkerCoefficients {
+    /// The inverse flexibilities 1/L₁, 1/L₂, 1/L₃ (Pa/m) of the simplified theory on an ellipse
+    /// of semi-axes `a` (rolling direction) and `b` (m), for the shear modulus `g` (Pa, already
+    /// multiplied by any coefficient factor): L₁ = 8a/(3C₁₁G), L₂ = 8a/(3C₂₂G) and
+    /// L₃ = πa√(a/b)/(4C₂₃G), chosen so that the simplified theory reproduces Kalker's linear
+    /// creep coefficients (Kalker 1982). FASTSIM and FaStrip's slip direction both use them.
+    pub fn inverse_flexibilities(&self, g: f64, a: f64, b: f64) -> [f64; 3] {
+        [
+            3.0 * self.c11 * g / (8.0 * a),
+            3.0 * self.c22 * g / (8.0 * a),
+            4.0 * self.c23 * g / (PI * a * (a / b).sqrt()),
+        ]
+    }
+}
+
 /// Creepages at a contact: longitudinal ξ (–), lateral η (–), spin φ (1/m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Creepages {

@@ -57,14 +57,15 @@
 //! k/c2 = 3 Hz) slows that growth at high frequency, and the spring threshold raises the lower
 //! limit f_l at small amplitudes. [`HydraulicValve::opening_band_hz`] gives both.
 //!
-//! # The derived valve at X_r = 2.3 mm (spec FSD modules)
-//! Orifice 0.244 mm² (Ø0.56 mm), spring 173 kN/m (opening pressure 0.74 MPa). Opening band (sine
-//! strokes, closed orbit): 0.13–2.0 Hz at 2.3 mm, 0.29–0.94 Hz at 1 mm, 0.064–3.2 Hz at 4.5 mm,
-//! none up to 0.7 mm. Below its cut-off the valve opens late in each stroke and closes near the
-//! reversal (the piston must swing back past the other opening stroke with the valve closed):
-//! the force shows c2 "teeth" at every reversal and the valve is open about 35 % of the time at
-//! 1.2 Hz, 2.3 mm. A valve that times each half-cycle cannot stay open across reversals as the
-//! rms-frequency estimate does; in exchange a dither barely moves it (bench, `valve_bench.py`).
+//! # The derived valve at X_r = 0.26 mm (spec FSD modules)
+//! Orifice 0.73 mm² (Ø0.96 mm), spring 19.6 kN/m (opening pressure 0.083 MPa). Opening band
+//! (sine strokes, closed orbit, [`HydraulicValve::opening_band_hz`]): 0.13–2.0 Hz at 0.26 mm,
+//! 0.35–0.80 Hz at 0.1 mm, 0.065–3.2 Hz at 0.5 mm, none up to 0.08 mm. Below its cut-off the
+//! valve opens late in each stroke and closes near the reversal (the piston must swing back past
+//! the other opening stroke with the valve closed): the force shows c2 "teeth" at every reversal
+//! and the valve is open about 35 % of the time at 1.2 Hz, 0.26 mm (the damper bench stage). A
+//! valve that times each half-cycle cannot stay open across reversals as the rms-frequency
+//! estimate does; in exchange a dither barely moves it (bench, `valve_bench.py`).
 //!
 //! # Geometry (not in the spec; no published dimensions of such a valve were found)
 //! Main piston Ø50 mm (the yaw damper bore of [`super::hydraulic`]). The auxiliary piston and
@@ -75,8 +76,8 @@
 //! stroke (V_o = 2.1 cm³). Oil ISO VG 32 (ρ = 870 kg/m³, ν = 32 mm²/s) and C_d = 0.61 as in
 //! [`super::hydraulic`].
 
+use super::damping_module::ClosedModule;
 use crate::error::{check_positive, Result};
-use crate::LocoError;
 use rayon::prelude::*;
 use std::f64::consts::{PI, TAU};
 
@@ -90,8 +91,7 @@ const LAMINAR_FLOW_COEFFICIENT: f64 = 0.2;
 /// The yaw damper stroke amplitude of the S_low carbody sway (m), measured by
 /// `experiments/fsd_reference_stroke.py` (S_low, 200 km/h, YD1, cn-hsr seed 0, 0.5–2 Hz band,
 /// median of the four yaw dampers) with the rails rolled with the track: 0.261 mm (the dampers
-/// gave 0.316, 0.355, 0.195 and 0.207 mm), here to 0.01 mm. Before the fix the cross-level error
-/// inflated it to 2.3 mm; the derived valve's numbers below were first worked out there.
+/// gave 0.316, 0.355, 0.195 and 0.207 mm), here to 0.01 mm.
 pub const REFERENCE_STROKE_AMPLITUDE_M: f64 = 0.26e-3;
 
 /// Physical parameters of the valve (SI).
@@ -115,40 +115,6 @@ pub struct HydraulicValveParams {
     pub spring_stiffness_npm: f64,
 }
 
-/// What the parameters are derived for, with the geometry that is chosen, not derived.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ValveDesign {
-    /// Reference stroke amplitude X_r (m), > 0.
-    pub reference_stroke_amplitude_m: f64,
-    /// Cut-off frequency at X_r, f_p (Hz), > 0.
-    pub cutoff_frequency_hz: f64,
-    /// Lowest frequency at which X_r holds the open valve open (c1 pressure against the
-    /// spring), f_l (Hz), 0 < f_l < f_p.
-    pub lowest_holding_frequency_hz: f64,
-    /// Geometry and oil; its orifice area and spring stiffness are replaced by the derived ones.
-    pub geometry: HydraulicValveParams,
-}
-
-/// A damping module whose force makes the pressure: c (N·s/m; c2 closed, c1 open) in series
-/// with k (N/m), mass m (kg) at the node.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ClosedModule {
-    pub damping_nspm: f64,
-    pub stiffness_npm: f64,
-    pub mass_kg: f64,
-}
-
-impl ClosedModule {
-    /// Force amplitude (N) for a sine stroke of amplitude `x` (m) at `omega` (rad/s).
-    pub fn force_amplitude(&self, omega: f64, x: f64) -> f64 {
-        let (c, k, m) = (self.damping_nspm, self.stiffness_npm, self.mass_kg);
-        // |k·(iωc - mω²)/(k - mω² + iωc)|
-        let num = k * (c * c * omega * omega + (m * omega * omega).powi(2)).sqrt();
-        let den = ((k - m * omega * omega).powi(2) + (omega * c).powi(2)).sqrt();
-        x * num / den
-    }
-}
-
 fn circle_area(diameter_m: f64) -> f64 {
     PI / 4.0 * diameter_m * diameter_m
 }
@@ -167,90 +133,6 @@ impl HydraulicValveParams {
             opening_stroke_m: 3e-3,
             spring_stiffness_npm: 1e4,
         }
-    }
-}
-
-impl ValveDesign {
-    /// The spec's f_p = 2 Hz at the stroke amplitude `x_r` (m), f_l = f_p/4, default geometry.
-    pub fn spec(reference_stroke_amplitude_m: f64) -> Self {
-        Self {
-            reference_stroke_amplitude_m,
-            cutoff_frequency_hz: 2.0,
-            lowest_holding_frequency_hz: 0.5,
-            geometry: HydraulicValveParams::default_geometry(),
-        }
-    }
-
-    /// Derives the spring and the orifice (module documentation) for the closed (c2) and open
-    /// (c1) modules.
-    pub fn derive(&self, closed: &ClosedModule, open: &ClosedModule) -> Result<HydraulicValve> {
-        let x_r = check_positive(
-            "reference_stroke_amplitude_m",
-            self.reference_stroke_amplitude_m,
-        )?;
-        let f_p = check_positive("cutoff_frequency_hz", self.cutoff_frequency_hz)?;
-        let f_l = check_positive(
-            "lowest_holding_frequency_hz",
-            self.lowest_holding_frequency_hz,
-        )?;
-        if f_l >= f_p {
-            return Err(LocoError::param(
-                "lowest_holding_frequency_hz",
-                format!(
-                    "{f_l} Hz must be below the cut-off {f_p} Hz: the spring would hold the \
-                     valve closed at the cut-off"
-                ),
-            ));
-        }
-        let g = self.geometry;
-        HydraulicValve::new(g)?; // geometry and oil checked, naming the field
-        let pressure =
-            |m: &ClosedModule, f: f64| m.force_amplitude(TAU * f, x_r) / g.piston_area_m2;
-        let p_hold = pressure(open, f_l);
-        let (p_ref, w) = (pressure(closed, f_p), TAU * f_p);
-        if p_hold >= p_ref {
-            return Err(LocoError::param(
-                "lowest_holding_frequency_hz",
-                format!(
-                    "the holding pressure at {f_l} Hz ({p_hold:.3e} Pa) is not below the closed \
-                     valve's pressure at the cut-off ({p_ref:.3e} Pa)"
-                ),
-            ));
-        }
-        let spring = g.aux_piston_area_m2 * p_hold / g.opening_stroke_m;
-        let v_open = g.aux_piston_area_m2 * g.opening_stroke_m;
-        let estimate = 2.0 * v_open * w
-            / (g.flow_coefficient
-                * SQRT_SINE_INTEGRAL
-                * (2.0 * p_ref / g.oil_density_kgpm3).sqrt());
-        let with = |area: f64| HydraulicValveParams {
-            orifice_area_m2: area,
-            spring_stiffness_npm: spring,
-            ..g
-        };
-        // Reach of the orbit at f_p over the opening volume, increasing with the orifice.
-        let reach = |area: f64| {
-            HydraulicValve::new(with(area)).map(|v| v.orbit_peak_volume(p_ref, w) / v_open - 1.0)
-        };
-        let (mut lo, mut hi) = (estimate / 64.0, estimate * 64.0);
-        if reach(lo)? > 0.0 || reach(hi)? < 0.0 {
-            return Err(LocoError::param(
-                "cutoff_frequency_hz",
-                format!(
-                    "no orifice between {lo:.3e} and {hi:.3e} m² gives a cut-off of {f_p} Hz at \
-                     {x_r} m"
-                ),
-            ));
-        }
-        for _ in 0..60 {
-            let mid = (lo * hi).sqrt();
-            if reach(mid)? < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        HydraulicValve::new(with((lo * hi).sqrt()))
     }
 }
 

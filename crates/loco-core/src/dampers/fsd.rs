@@ -45,68 +45,14 @@
 //! (5.3e4 1/s for the spec values): explicit integrators need `dt < 2.78·m/c2 ≈ 5e-5 s`
 //! ([`FsdDamper::fastest_rate_per_s`]).
 
-use super::frequency_valve::{ClosedModule, HydraulicValve, ValveDesign};
+use super::frequency_valve::HydraulicValve;
 use super::fsd_trigger::{FsdTrigger, FsdTriggerParams, TriggerMemory};
+use super::valve_design::ValveDesign;
 use crate::error::{check_non_negative, check_positive, Result};
 use crate::LocoError;
 use std::sync::OnceLock;
 
-/// Parameters of an [`FsdDamper`] (SI units). The default is the spec's FSD (§4).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FsdParams {
-    /// Equivalent damping at low frequency, valve open, c1 (N·s/m), > 0.
-    pub low_damping_nspm: f64,
-    /// Equivalent damping at high frequency, valve closed, c2 (N·s/m), > c1.
-    pub high_damping_nspm: f64,
-    /// Equivalent mass at the spring-damper node m (kg), >= 0 (0: massless Maxwell element).
-    pub equivalent_mass_kg: f64,
-    /// Equivalent (series) stiffness k (N/m), > 0.
-    pub equivalent_stiffness_npm: f64,
-    /// Cut-off frequency of the frequency valve f_p (Hz), > 0: the rms-frequency trigger's
-    /// threshold; the hydraulic valve is derived for it ([`FsdDamper::with_hydraulic_valve`]).
-    pub cutoff_frequency_hz: f64,
-    /// Time for a complete switch of the valve (s), > 0.
-    pub switching_delay_s: f64,
-    /// Valve state at start: true = closed (high damping).
-    pub start_closed: bool,
-    /// The trigger and its parameters.
-    pub trigger: FsdTrigger,
-}
-
-impl Default for FsdParams {
-    /// Spec §4: c1 = 200 kN·s/m, c2 = 800 kN·s/m, m = 15 kg, k = 15 kN/mm, f_p = 2 Hz, 0.05 s.
-    fn default() -> Self {
-        Self {
-            low_damping_nspm: 200e3,
-            high_damping_nspm: 800e3,
-            equivalent_mass_kg: 15.0,
-            equivalent_stiffness_npm: 15e6,
-            cutoff_frequency_hz: 2.0,
-            switching_delay_s: 0.05,
-            start_closed: true,
-            trigger: FsdTrigger::default(),
-        }
-    }
-}
-
-impl FsdParams {
-    /// The closed (high-damping, c2) module that makes the valve's pressure.
-    pub fn closed_module(&self) -> ClosedModule {
-        ClosedModule {
-            damping_nspm: self.high_damping_nspm,
-            stiffness_npm: self.equivalent_stiffness_npm,
-            mass_kg: self.equivalent_mass_kg,
-        }
-    }
-
-    /// The open (low-damping, c1) module.
-    pub fn open_module(&self) -> ClosedModule {
-        ClosedModule {
-            damping_nspm: self.low_damping_nspm,
-            ..self.closed_module()
-        }
-    }
-}
+pub use super::fsd_params::FsdParams;
 
 /// Position of the frequency valve, derived from the scale factor and the trigger's decision.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -421,71 +367,4 @@ pub(crate) fn ramp_scale_factor(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn validation_names_the_field() {
-        let bad = FsdParams {
-            low_damping_nspm: 900e3,
-            ..FsdParams::default()
-        };
-        let err = FsdDamper::new(bad).unwrap_err().to_string();
-        assert!(
-            err.contains("low_damping_nspm") && err.contains("c1 must be < c2"),
-            "{err}"
-        );
-        let bad = FsdParams {
-            cutoff_frequency_hz: 0.0,
-            ..FsdParams::default()
-        };
-        assert!(FsdDamper::new(bad)
-            .unwrap_err()
-            .to_string()
-            .contains("cutoff_frequency_hz"));
-        let bad = FsdParams {
-            equivalent_mass_kg: -1.0,
-            ..FsdParams::default()
-        };
-        assert!(FsdDamper::new(bad)
-            .unwrap_err()
-            .to_string()
-            .contains("equivalent_mass_kg"));
-        assert!(FsdDamper::new(FsdParams::default()).is_ok());
-    }
-
-    #[test]
-    fn valve_states_follow_scale_factor_and_decision() {
-        assert_eq!(FsdDamper::valve_state(0.0, false), ValveState::Open);
-        assert_eq!(FsdDamper::valve_state(1.0, true), ValveState::Closed);
-        assert_eq!(FsdDamper::valve_state(0.4, true), ValveState::Closing);
-        assert_eq!(FsdDamper::valve_state(0.4, false), ValveState::Opening);
-    }
-
-    #[test]
-    fn reversal_half_way_starts_from_the_current_position() {
-        let params = FsdTriggerParams::default();
-        let mut trigger = TriggerMemory::new(true);
-        let mut scale = 0.0;
-        let dt = 1e-3;
-        // Closing toward a "high" decision for half the delay: s = 0.5, no jump.
-        for _ in 0..25 {
-            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
-        }
-        assert!((scale - 0.5).abs() < 1e-12, "{scale}");
-        assert_eq!(FsdDamper::valve_state(scale, true), ValveState::Closing);
-        // The trigger turns to "low": the valve goes back from 0.5 at the same rate.
-        trigger.high_frequency = false;
-        let mut previous = scale;
-        for step in 0..30 {
-            advance_scale_factor(&mut trigger, &mut scale, &params, 2.0, 0.05, dt, 0.0, 0.0);
-            assert!(
-                (previous - scale - dt / 0.05).abs() < 1e-12 || scale == 0.0,
-                "{step}"
-            );
-            previous = scale;
-        }
-        assert_eq!(scale, 0.0);
-        assert_eq!(FsdDamper::valve_state(scale, false), ValveState::Open);
-    }
-}
+mod tests;

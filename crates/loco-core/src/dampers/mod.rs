@@ -84,19 +84,22 @@
 //! frequency valve), [`bench`](mod@bench) (sine, sweep or recorded excitation, equivalent values).
 
 pub mod bench;
+pub mod damping_module;
 pub mod frequency_valve;
 pub mod fsd;
+pub mod fsd_params;
 pub mod fsd_trigger;
 pub mod hydraulic;
 pub mod maxwell;
+pub mod valve_design;
 
-pub use frequency_valve::{
-    ClosedModule, HydraulicValve, HydraulicValveParams, ValveDesign, REFERENCE_STROKE_AMPLITUDE_M,
-};
+pub use damping_module::ClosedModule;
+pub use frequency_valve::{HydraulicValve, HydraulicValveParams, REFERENCE_STROKE_AMPLITUDE_M};
 pub use fsd::{FsdDamper, FsdParams, ValveState};
 pub use fsd_trigger::{FsdTrigger, FsdTriggerParams, TriggerMemory};
 pub use hydraulic::{HydraulicDamper, HydraulicFrequencyValve, HydraulicParams};
 pub use maxwell::{BlowOff, MaxwellDamper, MaxwellParams};
+pub use valve_design::ValveDesign;
 
 use crate::error::{LocoError, Result};
 

@@ -3,6 +3,7 @@
 
 use super::super::kalker::{kalker_coefficients, linear_creep_forces};
 use super::*;
+use std::f64::consts::PI;
 
 const A: f64 = 8e-3;
 const B: f64 = 4e-3;

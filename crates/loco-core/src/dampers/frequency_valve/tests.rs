@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::dampers::bench::{run, BenchMotion, BenchOptions};
+use crate::dampers::ValveDesign;
 use crate::dampers::{Damper, FsdDamper, FsdParams};
 
 fn spec_closed() -> ClosedModule {

@@ -3,6 +3,7 @@
 //! of a run's output.
 
 pub mod accelerometer;
+pub mod channel;
 pub mod channel_set;
 pub mod long_step_range;
 pub mod run;

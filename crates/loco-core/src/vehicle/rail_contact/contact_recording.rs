@@ -1,6 +1,6 @@
 //! The inputs of every creep-force call a run makes, kept on the calling thread (feature
 //! `record-contacts`, off by default): the contacts a vehicle really meets, so that creep models
-//! can be timed on them (`examples/creep_replay.rs`) rather than on a few chosen cases, for
+//! can be timed on them (`loco-dev`'s `creep_replay`) rather than on a few chosen cases, for
 //! FaStrip's cost per contact against FASTSIM's; which part of each model runs (the
 //! projection, the slip-zone sums, the fallback beyond |φ'| = 1) depends on the creepages, so a
 //! ratio from one case says little about a run.

@@ -1,6 +1,6 @@
 //! One 500 m run at 200 km/h (`DISTANCE` m if set) with each integration scheme and step, the
 //! run metrics against RK4 at 0.25 ms and the wall time (release build, one core):
-//! `cargo run --release -p loco-core --example integrator_compare -- [S_high|S_low]
+//! `cargo run --release -p loco-dev --bin integrator_compare -- [S_high|S_low]
 //! [parameter=value ...]`; `CURVE=study` or `CURVE=reference` runs it on that curve.
 
 use loco_core::track::{CurveDirection, DesignSection};
@@ -8,8 +8,7 @@ use loco_core::vehicle::output::run::{Recorded, RunSettings};
 use loco_core::vehicle::scenarios::scenario::Scenario;
 use loco_core::vehicle::time::integrator::Integrator;
 
-#[path = "support/study_case.rs"]
-mod study_case;
+use loco_dev::study_case;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

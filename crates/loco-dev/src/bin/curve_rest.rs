@@ -7,7 +7,7 @@
 //! than 10 % damping, each with the bodies that share its kinetic energy; `table` prints the
 //! contact table around the leading wheelsets' −7.8 mm instead.
 //!
-//! `cargo run --release -p loco-core --example curve_rest -- [start] [window] [curve|straight|table] [modes]`
+//! `cargo run --release -p loco-dev --bin curve_rest -- [start] [window] [curve|straight|table] [modes]`
 //!
 //! Found with it: the traction rods' 49 Hz modes had 0.13 % damping before their nodes had any
 //! (`traction_rod.bushing_damping_time`); the ringing did not depend on the table's step.

@@ -1,10 +1,11 @@
 //! CPU time of one simulation without its set-up: the contact table and the track are built
 //! once, then the same 500 m run at 200 km/h is simulated `repeats` times in this process and
-//! each run's thread CPU time is printed with the minimum and the median. What a batch sample
+//! each run's thread CPU time is printed with the minimum and the median, and the number of
+//! evaluations of the equations of motion one run takes. What a batch sample
 //! costs (its metrics' channels only, `Recorded::Metrics`), without the table build that a
 //! whole `run_fingerprint` or `loco-batch` process also times.
 //!
-//! `cargo run --release -p loco-core --example sim_time -- [fastsim|fastrip|table]
+//! `cargo run --release -p loco-dev --bin sim_time -- [fastsim|fastrip|table]
 //! [S_high|S_low] [straight|curve|study_curve] [repeats] [metrics|every]`
 //!
 //! `metrics` (the default) records the metrics' channels only, as a batch sample does; `every`
@@ -17,8 +18,7 @@
 use loco_core::vehicle::output::run::Recorded;
 use loco_core::vehicle::params::parameters::ParameterSet;
 
-#[path = "support/study_case.rs"]
-mod study_case;
+use loco_dev::study_case;
 
 /// This thread's CPU time, s (the run is single-threaded, so wall time would add other
 /// processes' share of the core).
@@ -51,16 +51,18 @@ fn main() {
     };
     let prepared = study_case::prepared(ParameterSet::default_vehicle(), &scenario);
     let mut times = Vec::with_capacity(repeats);
+    let mut evaluations = 0;
     for _ in 0..repeats {
         let start = thread_cpu_seconds();
         let result = prepared.run(&scenario, recorded).unwrap();
         times.push(thread_cpu_seconds() - start);
+        evaluations = result.statistics.rhs_evaluations;
         std::hint::black_box(result);
     }
     let ms: Vec<String> = times.iter().map(|t| format!("{:.1}", t * 1e3)).collect();
     times.sort_by(f64::total_cmp);
     println!(
-        "runs (ms) {}; min {:.1} ms, median {:.1} ms",
+        "runs (ms) {}; min {:.1} ms, median {:.1} ms; {evaluations} right-hand side evaluations",
         ms.join(" "),
         times[0] * 1e3,
         times[times.len() / 2] * 1e3

@@ -2,7 +2,7 @@
 //! the same machine load (criterion times one after the other, and on a shared machine the load
 //! changes between them). The target: FaStrip at most 1.5× FASTSIM on the default grid.
 //!
-//! `cargo run --release -p loco-core --example creep_cost [-- rounds]` prints, per case and grid,
+//! `cargo run --release -p loco-dev --bin creep_cost [-- rounds]` prints, per case and grid,
 //! the median time per call of each model over the rounds and the median of the per-round
 //! ratios. Cases: CONTACT's `fastsim` example (a = 8 mm, b = 4 mm, N = 82 kN, μ = 0.3, η =
 //! −6.25e-4, φ = 0.625 1/m, plus ξ = 1e-4 as in the `fastsim` bench; |φ'| ≈ 1.007, so FaStrip

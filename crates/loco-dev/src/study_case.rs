@@ -1,9 +1,7 @@
-//! The case the examples share (`run_fingerprint`, `sim_time`, `integrator_compare`,
-//! `full_linear_etd`): the `vehicle` bench's 500 m run at 200 km/h on a study scenario, with a
+//! The case the tools share (`run_fingerprint`, `sim_time`, `integrator_compare`,
+//! `full_linear_etd`, `creep_replay`): the `vehicle` bench's 500 m run at 200 km/h on a study scenario, with a
 //! creep model and a track chosen by name and parameters from `key=value` arguments, built up to
 //! what `simulate_prepared` takes, and run.
-// Each example uses part of it.
-#![allow(dead_code)]
 
 use loco_core::error::Result;
 use loco_core::track::{CurveDirection, DesignSection, TrackIrregularity};

@@ -6,7 +6,7 @@
 //! (Al-Mohy and Higham's construction, nalgebra's `exp`). A research tool, not a scheme of the
 //! product: its dense 200 × 200 products cost more than the right-hand side they spare.
 //!
-//! `cargo run --release -p loco-core --example full_linear_etd -- [S_high|S_low]
+//! `cargo run --release -p loco-dev --bin full_linear_etd -- [S_high|S_low]
 //! [parameter=value ...]` prints the run metrics of this scheme at 1, 2, 4 and 5 ms, and of the
 //! product's etdrk4 at 2 ms, against RK4 at 0.25 ms, all recorded at 250 Hz (`RATE` to change;
 //! a step must divide the output period).
@@ -45,8 +45,7 @@ use loco_core::vehicle::time::integrator::REFERENCE_STEP;
 use loco_core::vehicle::time::integrator::{Integrator, OdeSystem};
 use nalgebra::{DMatrix, DVector};
 
-#[path = "support/study_case.rs"]
-mod study_case;
+use loco_dev::study_case;
 
 /// `e^{hA}`, `h φ1(hA)`, `h φ2(hA)`, `h φ3(hA)` of the n×n matrix `a`.
 fn phi(a: &DMatrix<f64>, h: f64) -> [DMatrix<f64>; 4] {

@@ -2,7 +2,7 @@
 //! fingerprint of every output sample's bits: the same fingerprint before and after a change means
 //! the change kept the results bit for bit. Also the program callgrind counts instructions of.
 //!
-//! `cargo run --release -p loco-core --example run_fingerprint -- [fastsim|fastrip|table]
+//! `cargo run --release -p loco-dev --bin run_fingerprint -- [fastsim|fastrip|table]
 //! [S_high|S_low] [prepare|curve|study_curve]` (`prepare`: build contact and track only, to
 //! subtract set-up cost; `curve`: the same run on the design of `experiments/curve_cost.py`, a 60 m
 //! transition into R = 1200 m with 100 mm cant, about 290 mm of cant deficiency at 200 km/h, to
@@ -23,8 +23,7 @@ use loco_core::vehicle::output::wheel_channels::{
 use loco_core::vehicle::params::parameters::ParameterSet;
 use std::collections::HashSet;
 
-#[path = "support/study_case.rs"]
-mod study_case;
+use loco_dev::study_case;
 
 /// FNV-1a over the bits of every sample of `channels`.
 fn fnv<'a>(channels: impl Iterator<Item = &'a Vec<f64>>) -> u64 {

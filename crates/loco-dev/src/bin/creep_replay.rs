@@ -1,11 +1,11 @@
 //! FaStrip's cost per contact against FASTSIM's on the contacts of a vehicle run: the study case
-//! (`examples/support/study_case.rs`, 500 m at 200 km/h) is simulated once with FASTSIM, every
+//! (`loco_dev::study_case`, 500 m at 200 km/h) is simulated once with FASTSIM, every
 //! creep-force call's inputs are recorded (feature `record-contacts`), and the recorded calls are
 //! replayed through both models on the run's grid (the default 10 × 10) and material in alternating rounds, so that both
 //! see the same machine load. Prints the median time per call of each over the rounds and the
 //! median of the per-round ratios (the target: FaStrip at most 1.5× FASTSIM).
 //!
-//! `cargo run --release -p loco-core --features record-contacts --example creep_replay --
+//! `cargo run --release -p loco-dev --features record-contacts --bin creep_replay --
 //! [S_high|S_low] [rounds]`
 
 use loco_core::contact::fastrip::{Fastrip, FastripParams};
@@ -17,8 +17,7 @@ use loco_core::vehicle::rail_contact::contact_recording::{self, ContactCall};
 use std::hint::black_box;
 use std::time::Instant;
 
-#[path = "support/study_case.rs"]
-mod study_case;
+use loco_dev::study_case;
 
 /// Nanoseconds per call of `model` over `calls`.
 fn time_calls(calls: &[ContactCall], model: impl Fn(&ContactCall) -> CreepForces) -> f64 {
