@@ -1,4 +1,4 @@
-//! Developer tools for the core: timing, fingerprints and investigations of one run, each a
+//! Developer tools for the core: timing, output hashes and investigations of one run, each a
 //! binary of this crate (`cargo run --release -p loco-dev --bin <name> -- ...`). They are not
 //! part of the library; the criterion benches of `loco-core` and the scripts of `scripts/bench`
 //! call some of them.
